@@ -1,0 +1,294 @@
+#include "LevelSetEvolution.h"
+
+#include "MovingLeastSquares.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace lsi
+{
+
+namespace
+{
+bool Positive(double phi)
+{
+  return phi > 0.0;
+}
+
+// Runs body(i) for every index in `where`, in parallel.
+template <typename Body>
+void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      body(static_cast<std::size_t>(k), where[static_cast<std::size_t>(k)]);
+    }
+  });
+}
+} // namespace
+
+LevelSetEvolution::LevelSetEvolution(
+  const Neighborhoods& geometry, const std::vector<double>& dataSign, std::vector<double>& phi)
+  : Geometry(geometry)
+  , DataSign(dataSign)
+  , Phi(phi)
+  , Gradient(3 * geometry.NumberOfSamples, 0.0)
+  , Stamp(geometry.NumberOfSamples, 0)
+{
+}
+
+void LevelSetEvolution::CollectWhere(double halfWidth, std::vector<std::size_t>& out) const
+{
+  // A sequential scan: O(N) cheap memory traffic, and a deterministic order.
+  out.clear();
+  const std::size_t n = this->Geometry.NumberOfSamples;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (std::abs(this->Phi[i]) < halfWidth)
+    {
+      out.push_back(i);
+    }
+  }
+}
+
+void LevelSetEvolution::CollectWithNeighbors(
+  const std::vector<std::size_t>& core, std::vector<std::size_t>& out)
+{
+  ++this->CurrentStamp;
+  out.clear();
+  const int stride = this->Geometry.Stride;
+  for (std::size_t i : core)
+  {
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    for (int k = 0; k < stride; ++k)
+    {
+      if (this->Stamp[ids[k]] != this->CurrentStamp)
+      {
+        this->Stamp[ids[k]] = this->CurrentStamp;
+        out.push_back(ids[k]);
+      }
+    }
+  }
+}
+
+void LevelSetEvolution::ComputeGradients(
+  const std::vector<std::size_t>& where, const std::vector<double>& values)
+{
+  const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  ForEachIn(where, [&](std::size_t, std::size_t i) {
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    const Eigen::Vector3d g = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
+      [&](std::size_t k) { return values[ids[k]]; });
+    double* out = &this->Gradient[3 * i];
+    out[0] = g[0];
+    out[1] = g[1];
+    out[2] = g[2];
+  });
+}
+
+std::size_t LevelSetEvolution::Evolve(const EvolutionSettings& settings)
+{
+  const EvolutionCoefficients& c = settings.Coefficients;
+  const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  const bool regularize = settings.Method == Scheme::WithoutReinitialization &&
+    c.DistanceRegularization != 0.0;
+  // The band: where delta_eps or delta_eps' is non-zero. With the distance regularisation
+  // (which acts everywhere) a margin of one neighbourhood radius is added.
+  double halfWidth = BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon));
+  if (regularize)
+  {
+    halfWidth += 2.0 * this->Geometry.MeanRadius;
+  }
+  this->CollectWhere(halfWidth, this->Band);
+  // Curvature needs unit normals on the band and on its neighbours.
+  this->CollectWithNeighbors(this->Band, this->Region);
+  this->ComputeGradients(this->Region, this->Phi);
+
+  auto unitNormal = [&](std::uint32_t j) {
+    Eigen::Vector3d g(&this->Gradient[3 * j]);
+    const double norm = g.norm();
+    return norm > 0.0 ? Eigen::Vector3d(g / norm) : Eigen::Vector3d::Zero();
+  };
+  auto distanceFlux = [&](std::uint32_t j) {
+    Eigen::Vector3d g(&this->Gradient[3 * j]);
+    const double norm = g.norm();
+    return norm > 0.0 ? Eigen::Vector3d(g * ((norm - 1.0) / norm)) : Eigen::Vector3d::Zero();
+  };
+
+  this->NewValues.resize(this->Band.size());
+  ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    const float* stencil = this->Geometry.StencilOf(i);
+    const double curvature = c.CurvatureWeight != 0.0
+      ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return unitNormal(ids[m]); })
+      : 0.0;
+    const double regularization = regularize
+      ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return distanceFlux(ids[m]); })
+      : 0.0;
+    this->NewValues[k] =
+      EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);
+  });
+
+  std::size_t signChanges = 0;
+  for (std::size_t k = 0; k < this->Band.size(); ++k)
+  {
+    double& phi = this->Phi[this->Band[k]];
+    signChanges += Positive(phi) != Positive(this->NewValues[k]);
+    phi = this->NewValues[k];
+  }
+  return signChanges;
+}
+
+std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
+{
+  const EvolutionCoefficients& c = settings.Coefficients;
+  // Only where it matters: the band plus a margin of two neighbourhood radii, so that samples
+  // about to enter the band already hold a distance.
+  const double halfWidth =
+    BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * this->Geometry.MeanRadius;
+  this->CollectWhere(halfWidth, this->Region);
+  const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  std::vector<double> initial(this->Region.size());
+  for (std::size_t k = 0; k < this->Region.size(); ++k)
+  {
+    initial[k] = this->Phi[this->Region[k]];
+  }
+  this->NewValues.resize(this->Region.size());
+  for (int step = 0; step < settings.ReinitializationSteps; ++step)
+  {
+    ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
+      const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+      const double gradientNorm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
+        [&](std::size_t m) { return this->Phi[ids[m]]; })
+                                    .norm();
+      this->NewValues[k] = ReinitializedValue(this->Phi[i], initial[k], gradientNorm,
+        settings.Spacing, settings.ReinitializationTimeStep);
+    });
+    for (std::size_t k = 0; k < this->Region.size(); ++k)
+    {
+      this->Phi[this->Region[k]] = this->NewValues[k];
+    }
+  }
+  std::size_t signChanges = 0;
+  for (std::size_t k = 0; k < this->Region.size(); ++k)
+  {
+    signChanges += Positive(initial[k]) != Positive(this->Phi[this->Region[k]]);
+  }
+  return signChanges;
+}
+
+void LevelSetEvolution::Measure(IterationRecord& record)
+{
+  const std::size_t n = this->Geometry.NumberOfSamples;
+  // P = (1/2N) sum |sgn(phi_i) - sgn(f_i - f_iso)|, with sgn(phi) taken as +1 / -1.
+  vtkSMPThreadLocal<double> mismatch(0.0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    double& local = mismatch.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const double s = Positive(this->Phi[i]) ? 1.0 : -1.0;
+      local += std::abs(s - this->DataSign[i]);
+    }
+  });
+  double total = 0.0;
+  for (double v : mismatch)
+  {
+    total += v;
+  }
+  record.SignMismatch = n ? total / (2.0 * n) : 0.0;
+
+  // MG and AG over the zero crossings between neighbours (the rough isopoints), with the
+  // gradient interpolated linearly along each crossing segment.
+  const double h = this->Geometry.MeanRadius;
+  this->CollectWhere(2.0 * h, this->Scratch);
+  this->ComputeGradients(this->Scratch, this->Phi);
+  this->CollectWhere(1.0 * h, this->Front);
+  struct Stats
+  {
+    double Max = 0.0, Sum = 0.0;
+    std::size_t Count = 0;
+  };
+  vtkSMPThreadLocal<Stats> stats;
+  const int stride = this->Geometry.Stride;
+  ForEachIn(this->Front, [&](std::size_t, std::size_t i) {
+    const double phii = this->Phi[i];
+    if (!Positive(phii))
+    {
+      return;
+    }
+    Stats& local = stats.Local();
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    for (int m = 1; m < stride; ++m)
+    {
+      const std::uint32_t j = ids[m];
+      const double phij = this->Phi[j];
+      if (Positive(phij) || std::abs(phij) >= 2.0 * h)
+      {
+        continue;
+      }
+      const double t = phii / (phii - phij);
+      const Eigen::Vector3d gi(&this->Gradient[3 * i]), gj(&this->Gradient[3 * j]);
+      const double deviation = GradientDeviation(((1.0 - t) * gi + t * gj).norm());
+      if (std::isfinite(deviation))
+      {
+        local.Max = std::max(local.Max, deviation);
+        local.Sum += deviation;
+        ++local.Count;
+      }
+    }
+  });
+  Stats all;
+  for (const Stats& s : stats)
+  {
+    all.Max = std::max(all.Max, s.Max);
+    all.Sum += s.Sum;
+    all.Count += s.Count;
+  }
+  record.MaxGradientDeviation = all.Max;
+  record.MeanGradientDeviation = all.Count ? all.Sum / all.Count : 0.0;
+}
+
+bool LevelSetEvolution::Run(const EvolutionSettings& settings,
+  const std::function<bool(const IterationRecord&)>& onIteration, const AbortCheck& aborted)
+{
+  this->HasConverged = false;
+  int stableIterations = 0;
+  for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
+  {
+    if (aborted && aborted())
+    {
+      return false;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    IterationRecord record;
+    record.Iteration = iteration;
+    record.SignChanges = this->Evolve(settings);
+    record.BandSize = this->Band.size();
+    if (settings.Method == Scheme::WithReinitialization && settings.ReinitializationSteps > 0)
+    {
+      record.SignChanges += this->Reinitialize(settings);
+    }
+    record.Seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->Measure(record); // statistics are reported, not timed as part of the iteration
+    if (onIteration && !onIteration(record))
+    {
+      return false;
+    }
+    const double allowed = settings.ConvergenceTolerance * static_cast<double>(record.BandSize);
+    stableIterations = static_cast<double>(record.SignChanges) <= allowed ? stableIterations + 1 : 0;
+    if (stableIterations >= settings.StableIterationsToStop)
+    {
+      this->HasConverged = true;
+      break;
+    }
+  }
+  return true;
+}
+
+} // namespace lsi

@@ -1,0 +1,303 @@
+#include "LevelSetIsopoints.h"
+
+#include "MovingLeastSquares.h"
+#include "NearestNeighbors.h"
+#include "TangentPlaneCompletion.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <numeric>
+
+namespace lsi
+{
+
+MLSEvaluator::MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values)
+  : Geometry(geometry)
+  , Values(values)
+  , Ids(geometry.Stride)
+  , D2(geometry.Stride)
+  , GradientCoefficients(3 * geometry.Stride)
+  , ValueCoefficients(geometry.Stride)
+{
+}
+
+bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
+{
+  const std::size_t k = this->Geometry.Index->Nearest(
+    p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
+  const double h = std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + k));
+  if (!BuildLinearStencil(p.data(), k,
+        [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
+        LinearStencilView{ this->GradientCoefficients.data(), this->ValueCoefficients.data() }))
+  {
+    return false;
+  }
+  value = 0.0;
+  gradient.setZero();
+  for (std::size_t j = 0; j < k; ++j)
+  {
+    const double v = this->Values[this->Ids[j]];
+    value += this->ValueCoefficients[j] * v;
+    gradient += v * Eigen::Vector3d(&this->GradientCoefficients[3 * j]);
+  }
+  return true;
+}
+
+namespace
+{
+// Keeps the first point (in input order) of each cubic voxel of side `cell`: removes
+// near-duplicates, deterministically, and bounds the density of the output.
+std::vector<std::size_t> ThinByVoxels(const std::vector<double>& points, double cell)
+{
+  const std::size_t count = points.size() / 3;
+  std::vector<std::uint64_t> keys(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    std::uint64_t key = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+      const auto v = static_cast<std::int64_t>(std::floor(points[3 * i + d] / cell)) + (1 << 20);
+      key = (key << 21) | (static_cast<std::uint64_t>(v) & ((1u << 21) - 1));
+    }
+    keys[i] = key;
+  }
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  std::vector<std::size_t> kept;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (k == 0 || keys[order[k]] != keys[order[k - 1]])
+    {
+      kept.push_back(order[k]);
+    }
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+void AppendSelected(const std::vector<double>& points, const std::vector<double>& normals,
+  const std::vector<std::size_t>& selected, IsopointSet& out)
+{
+  for (std::size_t i : selected)
+  {
+    out.Points.insert(out.Points.end(), &points[3 * i], &points[3 * i + 3]);
+    out.Normals.insert(out.Normals.end(), &normals[3 * i], &normals[3 * i + 3]);
+  }
+}
+
+// Refines candidate points in place; `valid` says which converged. Normals point along
+// -grad phi: out of the region phi > 0, which is the region f > f_iso.
+void RefineCandidates(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const NewtonSettings& newton, std::vector<double>& points, std::vector<double>& normals,
+  std::vector<char>& valid)
+{
+  vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
+  const std::size_t count = points.size() / 3;
+  normals.assign(3 * count, 0.0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
+    if (!evaluator)
+    {
+      evaluator.reset(new MLSEvaluator(geometry, phi));
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (!valid[i])
+      {
+        continue;
+      }
+      Eigen::Vector3d p(&points[3 * i]);
+      Eigen::Vector3d gradient;
+      valid[i] = ProjectOntoZeroLevel(p, gradient, *evaluator, newton);
+      if (valid[i])
+      {
+        const Eigen::Vector3d n = -gradient.normalized();
+        for (int d = 0; d < 3; ++d)
+        {
+          points[3 * i + d] = p[d];
+          normals[3 * i + d] = n[d];
+        }
+      }
+    }
+  });
+}
+
+std::vector<std::size_t> ValidIndices(const std::vector<char>& valid)
+{
+  std::vector<std::size_t> indices;
+  for (std::size_t i = 0; i < valid.size(); ++i)
+  {
+    if (valid[i])
+    {
+      indices.push_back(i);
+    }
+  }
+  return indices;
+}
+
+// Rough isopoints: one per neighbour pair (i, j) with phi_i > 0 >= phi_j whose segment passes
+// the angle criterion, placed where the linear interpolation of phi vanishes.
+void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
+  double minimumCosine, std::vector<double>& points)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
+  std::vector<std::size_t> front;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (phi[i] > 0.0 && phi[i] < 3.0 * geometry.Radius[i])
+    {
+      front.push_back(i);
+    }
+  }
+  auto gradientAt = [&](std::size_t i) {
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    return ApplyGradientStencil(
+      geometry.StencilOf(i), stride, [&](std::size_t m) { return phi[ids[m]]; });
+  };
+  // Two passes (count, then fill) keep the output order independent of the threads.
+  auto forEachAcceptedPair = [&](std::size_t i, auto&& emit) {
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    const Eigen::Vector3d xi(geometry.Position(i));
+    const Eigen::Vector3d gi = gradientAt(i);
+    for (std::size_t m = 1; m < stride; ++m)
+    {
+      const std::uint32_t j = ids[m];
+      if (phi[j] > 0.0)
+      {
+        continue;
+      }
+      const Eigen::Vector3d xj(geometry.Position(j));
+      if (AlignedWithGradient(xj - xi, gi + gradientAt(j), minimumCosine))
+      {
+        emit(ZeroCrossing(xi, phi[i], xj, phi[j]));
+      }
+    }
+  };
+  std::vector<std::size_t> offsets(front.size() + 1, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      std::size_t count = 0;
+      forEachAcceptedPair(front[k], [&](const Eigen::Vector3d&) { ++count; });
+      offsets[k + 1] = count;
+    }
+  });
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  points.assign(3 * offsets.back(), 0.0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      std::size_t slot = offsets[k];
+      forEachAcceptedPair(front[k], [&](const Eigen::Vector3d& p) {
+        for (int d = 0; d < 3; ++d)
+        {
+          points[3 * slot + d] = p[d];
+        }
+        ++slot;
+      });
+    }
+  });
+}
+
+// Completion candidates: centres of the empty tangent-plane cells around each isopoint.
+void CompletionCandidates(const IsopointSet& current, const IsopointSettings& settings,
+  std::vector<double>& candidates, std::vector<char>& valid)
+{
+  const std::size_t count = current.Points.size() / 3;
+  const int side = 2 * settings.CompletionHalfCells + 1;
+  const std::size_t perPoint = static_cast<std::size_t>(side * side - 1);
+  const std::size_t neighbors = std::min<std::size_t>(count, 2 * perPoint);
+  PointCloudIndex index(current.Points.data(), count);
+  candidates.assign(3 * perPoint * count, 0.0);
+  valid.assign(perPoint * count, 0);
+  struct Scratch
+  {
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> D2;
+    std::vector<Eigen::Vector3d> Cells;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = scratch.Local();
+    s.Ids.resize(neighbors);
+    s.D2.resize(neighbors);
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const Eigen::Vector3d p(&current.Points[3 * i]);
+      const Eigen::Vector3d n(&current.Normals[3 * i]);
+      const std::size_t found = index.Nearest(p.data(), neighbors, s.Ids.data(), s.D2.data());
+      s.Cells.clear();
+      EmptyTangentCells(p, n, settings.CellSize, settings.CompletionHalfCells,
+        settings.CellSize, found,
+        [&](std::size_t j) { return Eigen::Vector3d(&current.Points[3 * s.Ids[j]]); }, s.Cells);
+      for (std::size_t c = 0; c < s.Cells.size() && c < perPoint; ++c)
+      {
+        const std::size_t slot = perPoint * i + c;
+        for (int d = 0; d < 3; ++d)
+        {
+          candidates[3 * slot + d] = s.Cells[c][d];
+        }
+        valid[slot] = 1;
+      }
+    }
+  });
+}
+} // namespace
+
+bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
+{
+  out = IsopointSet();
+  std::vector<double> points, normals;
+  RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
+  out.RoughCount = points.size() / 3;
+  std::vector<char> valid(out.RoughCount, 1);
+  if (aborted && aborted())
+  {
+    return false;
+  }
+  RefineCandidates(geometry, phi, settings.Newton, points, normals, valid);
+  {
+    // Thin the refined points: many crossings land on nearly the same spot.
+    IsopointSet tmp;
+    AppendSelected(points, normals, ValidIndices(valid), tmp);
+    const std::vector<std::size_t> kept = ThinByVoxels(tmp.Points, settings.CellSize);
+    AppendSelected(tmp.Points, tmp.Normals, kept, out);
+  }
+  if (!settings.Completion || out.Points.empty())
+  {
+    return true;
+  }
+  if (aborted && aborted())
+  {
+    return false;
+  }
+  std::vector<double> candidates, candidateNormals;
+  std::vector<char> candidateValid;
+  CompletionCandidates(out, settings, candidates, candidateValid);
+  NewtonSettings newton = settings.Newton;
+  newton.MaximumDistance = 2.0 * settings.CellSize; // stay near the cell it was proposed for
+  RefineCandidates(geometry, phi, newton, candidates, candidateNormals, candidateValid);
+
+  // The union, thinned again; existing isopoints come first and so win their voxels.
+  IsopointSet all = out;
+  AppendSelected(candidates, candidateNormals, ValidIndices(candidateValid), all);
+  const std::vector<std::size_t> kept = ThinByVoxels(all.Points, settings.CellSize);
+  const std::size_t before = out.Points.size() / 3;
+  IsopointSet result;
+  result.RoughCount = out.RoughCount;
+  AppendSelected(all.Points, all.Normals, kept, result);
+  result.CompletedCount = result.Points.size() / 3 - std::min(before, result.Points.size() / 3);
+  out = std::move(result);
+  return true;
+}
+
+} // namespace lsi

@@ -1,0 +1,55 @@
+// Isopoints (paper §6): rough points at the zero crossings of phi between neighbouring samples
+// (filtered by an angle criterion), Newton refinement onto the zero level of the MLS
+// approximation of phi (eq. 14), and completion on tangent planes (Fig. 3) so that the set is
+// dense enough for point or splat rendering.
+#ifndef LevelSetIsopoints_h
+#define LevelSetIsopoints_h
+
+#include "IsopointRefinement.h"
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetParallel.h"
+
+#include <vector>
+
+namespace lsi
+{
+
+struct IsopointSettings
+{
+  double MinimumCosine = 0.5; // angle criterion: segment within 60 degrees of the gradient
+  bool Completion = true;
+  double CellSize = 0.5;      // completion cells and the minimum spacing of output points
+  int CompletionHalfCells = 2; // a 5 x 5 grid of cells around each isopoint
+  NewtonSettings Newton;
+};
+
+struct IsopointSet
+{
+  std::vector<double> Points;  // 3 per isopoint
+  std::vector<double> Normals; // 3 per isopoint: unit, pointing out of {phi > 0}
+  std::size_t RoughCount = 0;     // zero crossings accepted by the angle criterion
+  std::size_t CompletedCount = 0; // points added by completion (after thinning)
+};
+
+/// Returns false only when aborted.
+bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+
+/// Value and gradient at p of the MLS linear fit of per-sample values over the samples nearest
+/// to p. Holds scratch space: use one per thread.
+class MLSEvaluator
+{
+public:
+  MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values);
+  bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+
+private:
+  const Neighborhoods& Geometry;
+  const std::vector<double>& Values;
+  std::vector<std::uint32_t> Ids;
+  std::vector<double> D2, GradientCoefficients, ValueCoefficients;
+};
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,54 @@
+// The geometry of the sample cloud that the evolution reuses at every iteration and across
+// re-executions: each sample's n nearest neighbours, its neighbourhood radius h_i, and the MLS
+// gradient stencil (which depends only on positions). Built once per input geometry.
+#ifndef LevelSetNeighborhoods_h
+#define LevelSetNeighborhoods_h
+
+#include "LevelSetParallel.h"
+#include "NearestNeighbors.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class vtkPoints;
+
+namespace lsi
+{
+
+struct Neighborhoods
+{
+  std::size_t NumberOfSamples = 0;
+  int Stride = 0; // entries per sample: the sample itself (slot 0) and its n neighbours
+
+  std::vector<double> Positions;        // 3 per sample
+  std::vector<std::uint32_t> Ids;       // Stride per sample
+  std::vector<double> Radius;           // h_i: distance to the farthest neighbour
+  std::vector<float> GradientStencil;   // 3 * Stride per sample (float: halves the memory)
+  std::unique_ptr<PointCloudIndex> Index;
+
+  double MeanSpacing = 0.0;     // mean of the local spacings (AutomaticParameters.h)
+  double MeanRadius = 0.0;      // mean h_i
+
+  // Problems found while building; the filter turns them into error messages.
+  std::size_t DuplicateSamples = 0;
+  long long FirstDuplicate = -1;
+  std::size_t SingularSamples = 0;
+  long long FirstSingular = -1;
+
+  const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }
+  const float* StencilOf(std::size_t i) const
+  {
+    return &this->GradientStencil[3 * i * this->Stride];
+  }
+  const double* Position(std::size_t i) const { return &this->Positions[3 * i]; }
+};
+
+/// Builds everything from the points. Returns false only when aborted.
+bool BuildNeighborhoods(
+  vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted);
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,51 @@
+// Automatic numerical parameters from the local sample spacing (paper §4.4 and appendix).
+// Plain C++: unit-tested in Testing/Cxx/TestLevelSetUpdate.cxx.
+#ifndef AutomaticParameters_h
+#define AutomaticParameters_h
+
+#include <cmath>
+
+namespace lsi
+{
+
+/// Local sample spacing from the radius h of a sample's n-neighbourhood: the edge of the cube
+/// that holds one sample when n + 1 samples fill the ball of radius h. On a uniform cloud of
+/// density rho it tends to rho^(-1/3), "the average distance between samples".
+inline double SpacingFromNeighborhoodRadius(double h, int numberOfNeighbors)
+{
+  const double pi = 3.14159265358979323846;
+  return h * std::cbrt(4.0 * pi / (3.0 * (numberOfNeighbors + 1)));
+}
+
+struct AutomaticChoice
+{
+  double Epsilon;
+  double CurvatureEpsilon;
+  double TimeStep;
+  double ReinitializationTimeStep;
+};
+
+/// eps = eps' = EpsilonPerSpacing * spacing; dt = TimeStepPerEpsilonSquared * eps^2 (inside the
+/// paper's [0.3, 0.6] eps^2 and well below the appendix bound 4 eps^2 / 3), further limited so
+/// that lambda dt <= 0.4 (< 0.5, §4.4). The reinitialisation's pseudo-time step is half a
+/// spacing (a CFL-like limit for the eikonal equation on the neighbour stencil).
+constexpr double EpsilonPerSpacing = 1.5;
+constexpr double TimeStepPerEpsilonSquared = 0.45;
+
+inline AutomaticChoice ChooseParameters(double spacing, double curvatureWeight)
+{
+  AutomaticChoice c;
+  c.Epsilon = EpsilonPerSpacing * spacing;
+  c.CurvatureEpsilon = c.Epsilon;
+  c.TimeStep = TimeStepPerEpsilonSquared * c.Epsilon * c.Epsilon;
+  if (curvatureWeight > 0.0 && curvatureWeight * c.TimeStep > 0.4)
+  {
+    c.TimeStep = 0.4 / curvatureWeight;
+  }
+  c.ReinitializationTimeStep = 0.5 * spacing;
+  return c;
+}
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,81 @@
+// Isopoints (paper §6): zero crossings of phi between neighbouring samples, the angle
+// criterion that keeps only pairs roughly along the gradient, and Newton's projection onto
+// the zero level of a local approximation (eq. 14).
+// Plain C++/Eigen: unit-tested in Testing/Cxx/TestIsopointRefinement.cxx.
+#ifndef IsopointRefinement_h
+#define IsopointRefinement_h
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace lsi
+{
+
+/// Point where the linear interpolation of phi between (xi, phii) and (xj, phij) is zero.
+/// Requires phii and phij of opposite signs (or one of them zero).
+inline Eigen::Vector3d ZeroCrossing(
+  const Eigen::Vector3d& xi, double phii, const Eigen::Vector3d& xj, double phij)
+{
+  const double t = phii / (phii - phij);
+  return xi + t * (xj - xi);
+}
+
+/// Angle criterion: accept a pair when the segment direction makes an angle with the
+/// gradient whose cosine (in absolute value) is at least `minimumCosine`.
+inline bool AlignedWithGradient(
+  const Eigen::Vector3d& direction, const Eigen::Vector3d& gradient, double minimumCosine)
+{
+  const double denominator = direction.norm() * gradient.norm();
+  if (!(denominator > 0.0))
+  {
+    return false;
+  }
+  return std::abs(direction.dot(gradient)) >= minimumCosine * denominator;
+}
+
+struct NewtonSettings
+{
+  int MaximumIterations = 8;
+  double Tolerance = 1e-6;       // stop when the step is shorter than this
+  double MaximumDistance = 1.0;  // fail when the point wanders further than this from its start
+};
+
+/// Newton's method p <- p - phi(p) grad phi(p) / |grad phi(p)|^2 on an approximation given by
+/// `evaluate(p, value, gradient) -> bool`. On success p lies on the zero level and `gradient` is
+/// the approximation's gradient there. Returns false if the evaluation fails, the gradient
+/// vanishes, the point leaves the trust region, or it does not converge.
+template <typename EvaluateFn>
+bool ProjectOntoZeroLevel(
+  Eigen::Vector3d& p, Eigen::Vector3d& gradient, EvaluateFn evaluate, const NewtonSettings& s)
+{
+  const Eigen::Vector3d start = p;
+  double value = 0.0;
+  for (int iteration = 0; iteration < s.MaximumIterations; ++iteration)
+  {
+    if (!evaluate(p, value, gradient))
+    {
+      return false;
+    }
+    const double g2 = gradient.squaredNorm();
+    if (!(g2 > 0.0) || !std::isfinite(value))
+    {
+      return false;
+    }
+    const Eigen::Vector3d step = (value / g2) * gradient;
+    p -= step;
+    if ((p - start).norm() > s.MaximumDistance)
+    {
+      return false;
+    }
+    if (step.norm() < s.Tolerance)
+    {
+      return evaluate(p, value, gradient) && gradient.squaredNorm() > 0.0;
+    }
+  }
+  return false;
+}
+
+} // namespace lsi
+
+#endif

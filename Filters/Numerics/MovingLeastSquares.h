@@ -1,0 +1,126 @@
+// Moving-least-squares linear fits (paper §4.2): g(x) ~ a . (x - c) + b around a centre c,
+// weighted by w(d) = 1 - |d|^2 / h^2 (squared in the least-squares sum). The fit matrix depends
+// only on positions, so it is turned once into a "stencil": per-neighbour coefficients that give
+// the gradient a (and value b) as weighted sums of the neighbours' values.
+// Plain C++/Eigen: unit-tested in Testing/Cxx/TestMovingLeastSquares.cxx.
+#ifndef MovingLeastSquares_h
+#define MovingLeastSquares_h
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <cstddef>
+
+namespace lsi
+{
+
+/// The paper's MLS weight (before squaring) for a squared distance d2 and support radius h.
+inline double MLSWeight(double d2, double h2)
+{
+  const double w = 1.0 - d2 / h2;
+  return w > 0.0 ? w : 0.0;
+}
+
+/// Result of a linear fit around a centre: for each neighbour j, gradient coefficients
+/// (3 values) and a value coefficient, so that grad g(c) = sum_j grad[j] g_j and
+/// g(c) = sum_j value[j] g_j.
+struct LinearStencilView
+{
+  double* Gradient; // 3 * count values, neighbour-major
+  double* Value;    // count values, may be null
+};
+
+/// Builds the stencil of a weighted linear fit around `centre` from `count` neighbour positions
+/// (each a pointer to 3 doubles, given by `position(j)`) with support radius h. Coordinates are
+/// centred and scaled by 1/h before fitting, for conditioning. Returns false when the fit is
+/// singular (fewer than four weighted points in general position: duplicate, collinear or
+/// coplanar neighbourhoods); the stencil is then left zero.
+template <typename PositionFn>
+bool BuildLinearStencil(const double centre[3], std::size_t count, PositionFn position, double h,
+  LinearStencilView out)
+{
+  using Matrix4 = Eigen::Matrix4d;
+  using Vector4 = Eigen::Vector4d;
+  for (std::size_t j = 0; j < 3 * count; ++j)
+  {
+    out.Gradient[j] = 0.0;
+  }
+  if (out.Value)
+  {
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      out.Value[j] = 0.0;
+    }
+  }
+  if (!(h > 0.0) || !std::isfinite(h))
+  {
+    return false;
+  }
+  const double invH = 1.0 / h;
+  Matrix4 normal = Matrix4::Zero();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double* x = position(j);
+    const Vector4 q((x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH,
+      (x[2] - centre[2]) * invH, 1.0);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    normal.noalias() += (w * w) * q * q.transpose();
+  }
+  // Singular when the weighted points do not span 3D. The determinant relative to the trace
+  // scale is a cheap, scale-free test (q is O(1) after scaling by 1/h).
+  const double scale = normal.trace() / 4.0;
+  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  {
+    return false;
+  }
+  const Matrix4 inverse = normal.inverse();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double* x = position(j);
+    const Vector4 q((x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH,
+      (x[2] - centre[2]) * invH, 1.0);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    const Vector4 c = inverse * ((w * w) * q);
+    // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
+    out.Gradient[3 * j + 0] = c[0] * invH;
+    out.Gradient[3 * j + 1] = c[1] * invH;
+    out.Gradient[3 * j + 2] = c[2] * invH;
+    if (out.Value)
+    {
+      out.Value[j] = c[3];
+    }
+  }
+  return true;
+}
+
+/// Applies a gradient stencil (3 coefficients per neighbour, stored as T) to neighbour values.
+template <typename T, typename ValueFn>
+Eigen::Vector3d ApplyGradientStencil(const T* stencil, std::size_t count, ValueFn value)
+{
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double v = value(j);
+    g[0] += stencil[3 * j + 0] * v;
+    g[1] += stencil[3 * j + 1] * v;
+    g[2] += stencil[3 * j + 2] * v;
+  }
+  return g;
+}
+
+/// Divergence of a vector field from a gradient stencil: sum_j stencil_j . V_j (DEM variant).
+template <typename T, typename VectorFn>
+double ApplyDivergenceStencil(const T* stencil, std::size_t count, VectorFn vector)
+{
+  double div = 0.0;
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const Eigen::Vector3d v = vector(j);
+    div += stencil[3 * j + 0] * v[0] + stencil[3 * j + 1] * v[1] + stencil[3 * j + 2] * v[2];
+  }
+  return div;
+}
+
+} // namespace lsi
+
+#endif

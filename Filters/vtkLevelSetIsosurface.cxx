@@ -1,0 +1,475 @@
+#include "vtkLevelSetIsosurface.h"
+
+#include "AutomaticParameters.h"
+#include "LevelSetEvolution.h"
+#include "LevelSetIsopoints.h"
+#include "LevelSetNeighborhoods.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkLevelSetIsosurface);
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Vertex cells 0..count-1, one per point.
+vtkNew<vtkCellArray> VertexCells(vtkIdType count)
+{
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+  }
+  offsets->SetValue(count, count);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+vtkNew<vtkTable> EmptyConvergenceTable()
+{
+  vtkNew<vtkTable> table;
+  for (const char* name : { "Iteration", "SignMismatch", "MaxGradientDeviation",
+         "MeanGradientDeviation", "BandSize", "Seconds" })
+  {
+    vtkNew<vtkDoubleArray> column;
+    column->SetName(name);
+    table->AddColumn(column);
+  }
+  return table;
+}
+
+void AppendRow(vtkTable* table, const lsi::IterationRecord& r)
+{
+  const double values[6] = { static_cast<double>(r.Iteration), r.SignMismatch,
+    r.MaxGradientDeviation, r.MeanGradientDeviation, static_cast<double>(r.BandSize), r.Seconds };
+  for (int c = 0; c < 6; ++c)
+  {
+    vtkDoubleArray::SafeDownCast(table->GetColumn(c))->InsertNextValue(values[c]);
+  }
+}
+
+// Signed distance to the inside of the axis-aligned box `bounds` (positive inside).
+double DistanceInsideBox(const double x[3], const double bounds[6])
+{
+  double d = VTK_DOUBLE_MAX;
+  for (int k = 0; k < 3; ++k)
+  {
+    d = std::min(d, std::min(x[k] - bounds[2 * k], bounds[2 * k + 1] - x[k]));
+  }
+  return d;
+}
+} // namespace
+
+struct vtkLevelSetIsosurface::Internals
+{
+  lsi::Neighborhoods Geometry;
+  // What the cached neighbourhoods were built from.
+  vtkPoints* Points = nullptr;
+  vtkMTimeType PointsTime = 0;
+  vtkIdType NumberOfPoints = -1;
+  int NumberOfNeighbors = -1;
+
+  bool CacheMatches(vtkPoints* points, int neighbors) const
+  {
+    return points == this->Points && points->GetMTime() == this->PointsTime &&
+      points->GetNumberOfPoints() == this->NumberOfPoints &&
+      neighbors == this->NumberOfNeighbors;
+  }
+};
+
+vtkLevelSetIsosurface::vtkLevelSetIsosurface()
+  : Internal(new Internals)
+{
+  this->SetNumberOfOutputPorts(3);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+vtkLevelSetIsosurface::~vtkLevelSetIsosurface() = default;
+
+void vtkLevelSetIsosurface::AddAdditionalSeed(double cx, double cy, double cz, double radius)
+{
+  this->AdditionalSeeds.insert(this->AdditionalSeeds.end(), { cx, cy, cz, radius });
+  this->Modified();
+}
+
+void vtkLevelSetIsosurface::RemoveAllAdditionalSeeds()
+{
+  if (!this->AdditionalSeeds.empty())
+  {
+    this->AdditionalSeeds.clear();
+    this->Modified();
+  }
+}
+
+int vtkLevelSetIsosurface::GetNumberOfAdditionalSeeds() const
+{
+  return static_cast<int>(this->AdditionalSeeds.size() / 4);
+}
+
+int vtkLevelSetIsosurface::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkLevelSetIsosurface::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 2 ? "vtkTable" : "vtkPolyData");
+  return 1;
+}
+
+int vtkLevelSetIsosurface::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* isopoints = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* particles = vtkPolyData::GetData(outputVector, 1);
+  vtkTable* convergence = vtkTable::GetData(outputVector, 2);
+  isopoints->Initialize();
+  particles->Initialize();
+  convergence->Initialize();
+  if (!input)
+  {
+    vtkErrorMacro("Input is not a vtkPointSet.");
+    return 0;
+  }
+  bool ok = false;
+  // VTK's global SMP backend may be Sequential (as in ParaView 5.11): run our loops on
+  // std::threads regardless, without touching the global state.
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, "STDThread", false },
+    [&]() { ok = this->Execute(input, isopoints, particles, convergence); });
+  if (!ok)
+  {
+    isopoints->Initialize();
+    particles->Initialize();
+    convergence->Initialize();
+    return this->GetAbortExecute() ? 1 : 0;
+  }
+  return 1;
+}
+
+bool vtkLevelSetIsosurface::Execute(
+  vtkPointSet* input, vtkPolyData* isopointOutput, vtkPolyData* particleOutput, vtkTable* table)
+{
+  const lsi::AbortCheck aborted = [this]() { return this->CheckAbort(); };
+  this->NumberOfIterationsPerformed = 0;
+  this->Converged = false;
+
+  // --- Validate the input -------------------------------------------------------------
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (n == 0 || !input->GetPoints())
+  {
+    vtkErrorMacro("The input has no points.");
+    return false;
+  }
+  if (n < this->NumberOfNeighbors + 1)
+  {
+    vtkErrorMacro("The input has " << n << " points, fewer than NumberOfNeighbors + 1 = "
+                                   << this->NumberOfNeighbors + 1 << ".");
+    return false;
+  }
+  if (n >= static_cast<vtkIdType>(UINT32_MAX))
+  {
+    vtkErrorMacro("The input has " << n << " points; at most 2^32 - 1 are supported.");
+    return false;
+  }
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  if (!scalars)
+  {
+    vtkErrorMacro("No input scalars: select a point array with Scalars "
+                  "(SetInputArrayToProcess).");
+    return false;
+  }
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorMacro("The array '" << (scalars->GetName() ? scalars->GetName() : "")
+                                << "' is not a point array.");
+    return false;
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The array '" << (scalars->GetName() ? scalars->GetName() : "") << "' has "
+                                << scalars->GetNumberOfComponents()
+                                << " components; a scalar (1 component) is required.");
+    return false;
+  }
+  std::vector<double> values(n);
+  double range[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    values[i] = scalars->GetComponent(i, 0);
+    if (!std::isfinite(values[i]))
+    {
+      vtkErrorMacro("The array '" << scalars->GetName() << "' has a NaN or infinite value at point "
+                                  << i << ".");
+      return false;
+    }
+    range[0] = std::min(range[0], values[i]);
+    range[1] = std::max(range[1], values[i]);
+    double x[3];
+    input->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      vtkErrorMacro("Point " << i << " has a NaN or infinite coordinate.");
+      return false;
+    }
+  }
+  if (!(this->IsoValue > range[0] && this->IsoValue < range[1]))
+  {
+    vtkErrorMacro("IsoValue " << this->IsoValue << " is outside the open range of the data ("
+                              << range[0] << ", " << range[1] << "): no isosurface.");
+    return false;
+  }
+  for (std::size_t s = 0; s < this->AdditionalSeeds.size(); s += 4)
+  {
+    if (!(this->AdditionalSeeds[s + 3] > 0.0))
+    {
+      vtkErrorMacro("Additional seed " << s / 4 << " has radius " << this->AdditionalSeeds[s + 3]
+                                       << "; radii must be positive.");
+      return false;
+    }
+  }
+
+  // --- Neighbourhoods: built once per geometry, kept while only parameters change ------
+  this->UpdateProgress(0.0);
+  auto start = Clock::now();
+  Internals& cache = *this->Internal;
+  vtkPoints* points = input->GetPoints();
+  if (!cache.CacheMatches(points, this->NumberOfNeighbors))
+  {
+    cache.Points = nullptr;
+    if (!lsi::BuildNeighborhoods(points, this->NumberOfNeighbors, cache.Geometry, aborted))
+    {
+      return false;
+    }
+    ++this->NeighborSearchCount;
+    cache.Points = points;
+    cache.PointsTime = points->GetMTime();
+    cache.NumberOfPoints = n;
+    cache.NumberOfNeighbors = this->NumberOfNeighbors;
+    this->NeighborSearchSeconds = SecondsSince(start);
+  }
+  const lsi::Neighborhoods& geometry = cache.Geometry;
+  if (geometry.DuplicateSamples > 0)
+  {
+    vtkErrorMacro("The input has " << geometry.DuplicateSamples
+                                   << " points that coincide with another point (first: point "
+                                   << geometry.FirstDuplicate
+                                   << "). Merge duplicate points first, e.g. with Clean.");
+    return false;
+  }
+  if (geometry.SingularSamples > 0)
+  {
+    vtkErrorMacro("The MLS fit is singular at "
+      << geometry.SingularSamples << " points (first: point " << geometry.FirstSingular
+      << "): their neighbourhoods are collinear or coplanar. The method needs volume (3D) "
+         "samples; try more NumberOfNeighbors.");
+    return false;
+  }
+  this->UpdateProgress(0.2);
+
+  // --- Parameters -------------------------------------------------------------------------
+  const double spacing = geometry.MeanSpacing;
+  this->MeanSampleSpacing = spacing;
+  const lsi::AutomaticChoice automatic = lsi::ChooseParameters(spacing, this->CurvatureWeight);
+  lsi::EvolutionSettings settings;
+  settings.Coefficients.Epsilon = this->Epsilon > 0.0 ? this->Epsilon : automatic.Epsilon;
+  settings.Coefficients.CurvatureEpsilon =
+    this->CurvatureEpsilon > 0.0 ? this->CurvatureEpsilon : settings.Coefficients.Epsilon;
+  settings.Coefficients.TimeStep = this->TimeStep > 0.0
+    ? this->TimeStep
+    : lsi::ChooseParameters(settings.Coefficients.Epsilon / lsi::EpsilonPerSpacing,
+        this->CurvatureWeight)
+        .TimeStep;
+  settings.Coefficients.CurvatureWeight = this->CurvatureWeight;
+  settings.Method = this->EvolutionScheme == VARIATIONAL_WITHOUT_REINITIALIZATION
+    ? lsi::Scheme::WithoutReinitialization
+    : lsi::Scheme::WithReinitialization;
+  settings.Coefficients.DistanceRegularization =
+    settings.Method == lsi::Scheme::WithoutReinitialization ? this->DistanceRegularization : 0.0;
+  settings.ReinitializationSteps = this->ReinitializationSteps;
+  settings.ReinitializationTimeStep = automatic.ReinitializationTimeStep;
+  settings.Spacing = spacing;
+  settings.MaximumIterations = this->MaximumNumberOfIterations;
+  settings.ConvergenceTolerance = this->ConvergenceTolerance;
+  this->EffectiveEpsilon = settings.Coefficients.Epsilon;
+  this->EffectiveCurvatureEpsilon = settings.Coefficients.CurvatureEpsilon;
+  this->EffectiveTimeStep = settings.Coefficients.TimeStep;
+
+  // --- Initial level set: signed distance to the union of the seed spheres, cut to the data's
+  // bounding box (grown by half a spacing) so that a seed larger than the data still has a
+  // front. SeedRadius 0 seeds the whole box.
+  double bounds[6];
+  input->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] -= 0.5 * spacing;
+    bounds[2 * k + 1] += 0.5 * spacing;
+  }
+  std::vector<double> spheres;
+  if (this->SeedRadius > 0.0)
+  {
+    spheres.insert(spheres.end(),
+      { this->SeedCenter[0], this->SeedCenter[1], this->SeedCenter[2], this->SeedRadius });
+    spheres.insert(spheres.end(), this->AdditionalSeeds.begin(), this->AdditionalSeeds.end());
+  }
+  std::vector<vtkIdType> samplesInSphere(spheres.size() / 4, 0);
+  std::vector<double> phi(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = geometry.Position(i);
+    double seed = spheres.empty() ? VTK_DOUBLE_MAX : -VTK_DOUBLE_MAX;
+    for (std::size_t s = 0; s < spheres.size(); s += 4)
+    {
+      const double d = spheres[s + 3] -
+        std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
+          (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
+          (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
+      samplesInSphere[s / 4] += d > 0.0;
+      seed = std::max(seed, d);
+    }
+    phi[i] = std::min(seed, DistanceInsideBox(x, bounds));
+  }
+  for (std::size_t s = 0; s < samplesInSphere.size(); ++s)
+  {
+    if (samplesInSphere[s] == 0)
+    {
+      vtkErrorMacro("Seed sphere " << s << (s == 0 ? " (the main seed)" : " (additional)")
+                                   << " at (" << spheres[4 * s] << ", " << spheres[4 * s + 1]
+                                   << ", " << spheres[4 * s + 2] << ") with radius "
+                                   << spheres[4 * s + 3] << " contains no sample.");
+      return false;
+    }
+  }
+  std::vector<double> dataSign(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    dataSign[i] = lsi::Sign(values[i] - this->IsoValue);
+  }
+
+  // --- Evolution --------------------------------------------------------------------------
+  start = Clock::now();
+  vtkNew<vtkTable> rows = EmptyConvergenceTable();
+  lsi::LevelSetEvolution evolution(geometry, dataSign, phi);
+  const int maximum = std::max(1, this->MaximumNumberOfIterations);
+  const bool finished = evolution.Run(
+    settings,
+    [&](const lsi::IterationRecord& record) {
+      AppendRow(rows, record);
+      this->NumberOfIterationsPerformed = record.Iteration;
+      this->UpdateProgress(0.2 + 0.65 * record.Iteration / maximum);
+      return !this->CheckAbort();
+    },
+    aborted);
+  this->EvolutionSeconds = SecondsSince(start);
+  if (!finished)
+  {
+    return false;
+  }
+  this->Converged = evolution.Converged();
+  this->UpdateProgress(0.85);
+
+  // --- Isopoints --------------------------------------------------------------------------
+  start = Clock::now();
+  lsi::IsopointSettings isopointSettings;
+  isopointSettings.Completion = this->Completion;
+  isopointSettings.CellSize = 0.5 * spacing;
+  isopointSettings.Newton.Tolerance = 1e-4 * spacing;
+  isopointSettings.Newton.MaximumDistance = 2.0 * spacing;
+  lsi::IsopointSet isopoints;
+  if (!lsi::ExtractIsopoints(geometry, phi, isopointSettings, isopoints, aborted))
+  {
+    return false;
+  }
+  this->IsopointSeconds = SecondsSince(start);
+
+  // --- Outputs ----------------------------------------------------------------------------
+  const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
+  vtkNew<vtkPoints> isopointCoordinates;
+  isopointCoordinates->SetDataTypeToDouble();
+  isopointCoordinates->SetNumberOfPoints(m);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    isopointCoordinates->SetPoint(i, &isopoints.Points[3 * i]);
+    normals->SetTuple(i, &isopoints.Normals[3 * i]);
+  }
+  isopointOutput->SetPoints(isopointCoordinates);
+  isopointOutput->SetVerts(VertexCells(m));
+  isopointOutput->GetPointData()->SetNormals(normals);
+
+  particleOutput->SetPoints(points);
+  particleOutput->SetVerts(VertexCells(n));
+  particleOutput->GetPointData()->PassData(input->GetPointData());
+  vtkNew<vtkDoubleArray> levelSet;
+  levelSet->SetName("LevelSet");
+  levelSet->SetNumberOfValues(n);
+  std::copy(phi.begin(), phi.end(), levelSet->GetPointer(0));
+  particleOutput->GetPointData()->AddArray(levelSet);
+
+  table->ShallowCopy(rows);
+  this->UpdateProgress(1.0);
+  return true;
+}
+
+void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "SeedCenter: (" << this->SeedCenter[0] << ", " << this->SeedCenter[1] << ", "
+     << this->SeedCenter[2] << ")\n";
+  os << indent << "SeedRadius: " << this->SeedRadius << "\n";
+  os << indent << "NumberOfAdditionalSeeds: " << this->GetNumberOfAdditionalSeeds() << "\n";
+  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "CurvatureEpsilon: " << this->CurvatureEpsilon << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
+  os << indent << "ReinitializationSteps: " << this->ReinitializationSteps << "\n";
+  os << indent << "DistanceRegularization: " << this->DistanceRegularization << "\n";
+  os << indent << "EvolutionScheme: " << this->EvolutionScheme << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NeighborSearchCount: " << this->NeighborSearchCount << "\n";
+  os << indent << "NumberOfIterationsPerformed: " << this->NumberOfIterationsPerformed << "\n";
+  os << indent << "Converged: " << this->Converged << "\n";
+  os << indent << "MeanSampleSpacing: " << this->MeanSampleSpacing << "\n";
+  os << indent << "EffectiveEpsilon: " << this->EffectiveEpsilon << "\n";
+  os << indent << "EffectiveCurvatureEpsilon: " << this->EffectiveCurvatureEpsilon << "\n";
+  os << indent << "EffectiveTimeStep: " << this->EffectiveTimeStep << "\n";
+}

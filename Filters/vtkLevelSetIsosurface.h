@@ -1,0 +1,226 @@
+/**
+ * @class   vtkLevelSetIsosurface
+ * @brief   Smooth local isosurface of scattered point data by a variational level-set method.
+ *
+ * vtkLevelSetIsosurface extracts the components of the isosurface {f = IsoValue} of a point
+ * scalar f that meet a region of interest given by seed spheres, directly on the scattered
+ * samples of any vtkPointSet (no resampling to a grid). It implements Rosenthal, Molchanov,
+ * Linsen et al., "Variational Level-Set Detection of Local Isosurfaces from Unstructured
+ * Point-based Volume Data": a level-set function phi, initialised as the signed distance to the
+ * seed spheres, evolves on the samples by the equation of gradient descent of a functional whose
+ * minimum makes {phi > 0} agree with {f > IsoValue} (eq. 9), with MLS estimates of gradient and
+ * divergence on each sample's n nearest neighbours, updating only the band around the zero
+ * level; a reinitialisation keeps phi a signed distance (or, in the alternative scheme, a
+ * distance-regularisation term does). The zero level is then sampled by isopoints: zero
+ * crossings between neighbours, refined by Newton's method on the MLS approximation and completed
+ * on tangent planes so that the set renders without holes.
+ *
+ * Outputs: port 0, the isopoints (one vertex per point) with unit "Normals" pointing out of the
+ * region where f > IsoValue; port 1, the input samples as vertices with their point data and a
+ * "LevelSet" array (the final phi); port 2, a vtkTable with one row per iteration (Iteration,
+ * SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds).
+ *
+ * The neighbourhoods (and MLS stencils) depend only on the points: they are kept across
+ * re-executions while the input's points and NumberOfNeighbors are unchanged.
+ *
+ * Threads: loops run in vtkSMPTools with the STDThread backend on NumberOfThreads threads
+ * (0: all cores), whatever the global backend is.
+ *
+ * @sa vtkSPHInterpolator vtkFlyingEdges3D vtkPCANormalEstimation
+ */
+#ifndef vtkLevelSetIsosurface_h
+#define vtkLevelSetIsosurface_h
+
+#include "LevelSetIsosurfaceFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
+class vtkPointSet;
+class vtkTable;
+
+class LEVELSETISOSURFACEFILTERS_EXPORT vtkLevelSetIsosurface : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLevelSetIsosurface* New();
+  vtkTypeMacro(vtkLevelSetIsosurface, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum EvolutionSchemes
+  {
+    VARIATIONAL_WITH_REINITIALIZATION = 0,
+    VARIATIONAL_WITHOUT_REINITIALIZATION = 1
+  };
+
+  ///@{
+  /** The isovalue of the input scalars (SetInputArrayToProcess(0, ...)). Default 0. */
+  vtkSetMacro(IsoValue, double);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /** Centre and radius of the main seed sphere. A radius of 0 (the default) seeds the whole
+   * data set (its bounding box), so every component is extracted. Default centre (0, 0, 0). */
+  vtkSetVector3Macro(SeedCenter, double);
+  vtkGetVector3Macro(SeedCenter, double);
+  vtkSetClampMacro(SeedRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SeedRadius, double);
+  ///@}
+
+  ///@{
+  /** Additional seed spheres (centre x, y, z and radius): the seed is the union of all. */
+  void AddAdditionalSeed(double cx, double cy, double cz, double radius);
+  void RemoveAllAdditionalSeeds();
+  int GetNumberOfAdditionalSeeds() const;
+  ///@}
+
+  ///@{
+  /** Number of nearest neighbours of each sample for the MLS fits. Default 26. */
+  vtkSetClampMacro(NumberOfNeighbors, int, 4, 200);
+  vtkGetMacro(NumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /** Width eps of the smoothed delta and sign of the main term (band: |phi| < 2 eps).
+   * 0 (default): automatic, 1.5 x the mean sample spacing. */
+  vtkSetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /** Width eps' of the smoothed delta of the curvature term. 0 (default): equal to eps. */
+  vtkSetClampMacro(CurvatureEpsilon, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(CurvatureEpsilon, double);
+  ///@}
+
+  ///@{
+  /** Time step dt. 0 (default): automatic, 0.45 eps^2 (the paper's [0.3, 0.6] eps^2), limited so
+   * that CurvatureWeight x dt <= 0.4. */
+  vtkSetClampMacro(TimeStep, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TimeStep, double);
+  ///@}
+
+  ///@{
+  /** Weight lambda of the mean-curvature (smoothing) term. Default 0.05. */
+  vtkSetClampMacro(CurvatureWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(CurvatureWeight, double);
+  ///@}
+
+  ///@{
+  /** Pseudo-time steps of the reinitialisation (eq. 10) after each iteration. Default 2. */
+  vtkSetClampMacro(ReinitializationSteps, int, 0, 100);
+  vtkGetMacro(ReinitializationSteps, int);
+  ///@}
+
+  ///@{
+  /** Weight mu of the distance-regularisation term of the scheme without reinitialisation
+   * (eq. 13). Default 0.1. Unused by the default scheme. */
+  vtkSetClampMacro(DistanceRegularization, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DistanceRegularization, double);
+  ///@}
+
+  ///@{
+  /** VARIATIONAL_WITH_REINITIALIZATION (0, default) or VARIATIONAL_WITHOUT_REINITIALIZATION (1). */
+  vtkSetClampMacro(EvolutionScheme, int, VARIATIONAL_WITH_REINITIALIZATION,
+    VARIATIONAL_WITHOUT_REINITIALIZATION);
+  vtkGetMacro(EvolutionScheme, int);
+  void SetEvolutionSchemeToWithReinitialization()
+  {
+    this->SetEvolutionScheme(VARIATIONAL_WITH_REINITIALIZATION);
+  }
+  void SetEvolutionSchemeToWithoutReinitialization()
+  {
+    this->SetEvolutionScheme(VARIATIONAL_WITHOUT_REINITIALIZATION);
+  }
+  ///@}
+
+  ///@{
+  /** Upper bound on the iterations. Default 500. */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /** Stopping rule: the evolution stops when, for 3 iterations in a row, at most this fraction
+   * of the band's samples changed sign (the front has stopped moving). Default 0.001. */
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+
+  ///@{
+  /** Complete the isopoints on tangent planes (paper Fig. 3) for hole-free rendering.
+   * Default on. */
+  vtkSetMacro(Completion, bool);
+  vtkGetMacro(Completion, bool);
+  vtkBooleanMacro(Completion, bool);
+  ///@}
+
+  ///@{
+  /** Threads for the parallel loops; 0 (default) uses all cores. */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /** Read-only results of the last execution. */
+  vtkGetMacro(NeighborSearchCount, int);  // how many times the neighbourhoods were built
+  vtkGetMacro(NumberOfIterationsPerformed, int);
+  vtkGetMacro(Converged, bool);
+  vtkGetMacro(MeanSampleSpacing, double);
+  vtkGetMacro(EffectiveEpsilon, double);
+  vtkGetMacro(EffectiveCurvatureEpsilon, double);
+  vtkGetMacro(EffectiveTimeStep, double);
+  vtkGetMacro(NeighborSearchSeconds, double);
+  vtkGetMacro(EvolutionSeconds, double);
+  vtkGetMacro(IsopointSeconds, double);
+  ///@}
+
+protected:
+  vtkLevelSetIsosurface();
+  ~vtkLevelSetIsosurface() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double IsoValue = 0.0;
+  double SeedCenter[3] = { 0.0, 0.0, 0.0 };
+  double SeedRadius = 0.0;
+  std::vector<double> AdditionalSeeds; // 4 per sphere
+  int NumberOfNeighbors = 26;
+  double Epsilon = 0.0;
+  double CurvatureEpsilon = 0.0;
+  double TimeStep = 0.0;
+  double CurvatureWeight = 0.05;
+  int ReinitializationSteps = 2;
+  double DistanceRegularization = 0.1;
+  int EvolutionScheme = VARIATIONAL_WITH_REINITIALIZATION;
+  int MaximumNumberOfIterations = 500;
+  double ConvergenceTolerance = 1e-3;
+  bool Completion = true;
+  int NumberOfThreads = 0;
+
+  int NeighborSearchCount = 0;
+  int NumberOfIterationsPerformed = 0;
+  bool Converged = false;
+  double MeanSampleSpacing = 0.0;
+  double EffectiveEpsilon = 0.0;
+  double EffectiveCurvatureEpsilon = 0.0;
+  double EffectiveTimeStep = 0.0;
+  double NeighborSearchSeconds = 0.0;
+  double EvolutionSeconds = 0.0;
+  double IsopointSeconds = 0.0;
+
+private:
+  vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
+  void operator=(const vtkLevelSetIsosurface&) = delete;
+
+  bool Execute(vtkPointSet* input, vtkPolyData* isopoints, vtkPolyData* particles,
+    vtkTable* convergence);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
