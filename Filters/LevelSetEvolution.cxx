@@ -32,6 +32,12 @@ void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
 }
 } // namespace
 
+double ReinitializationHalfWidth(const EvolutionSettings& settings, const Neighborhoods& geometry)
+{
+  const EvolutionCoefficients& c = settings.Coefficients;
+  return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * geometry.MeanRadius;
+}
+
 LevelSetEvolution::LevelSetEvolution(
   const Neighborhoods& geometry, const std::vector<double>& dataSign, std::vector<double>& phi)
   : Geometry(geometry)
@@ -147,11 +153,11 @@ std::size_t LevelSetEvolution::Evolve(const EvolutionSettings& settings)
 std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
 {
   const EvolutionCoefficients& c = settings.Coefficients;
-  // Only where it matters: the band plus a margin of two neighbourhood radii, so that samples
-  // about to enter the band already hold a distance.
-  const double halfWidth =
-    BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * this->Geometry.MeanRadius;
-  this->CollectWhere(halfWidth, this->Region);
+  // Only where it matters: the band plus a margin, so that samples about to enter the band
+  // already hold a distance; plus one ring of neighbours, so that clamped (stale) values next
+  // to the region are repaired as the front approaches them.
+  this->CollectWhere(ReinitializationHalfWidth(settings, this->Geometry), this->Scratch);
+  this->CollectWithNeighbors(this->Scratch, this->Region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
   std::vector<double> initial(this->Region.size());
   for (std::size_t k = 0; k < this->Region.size(); ++k)
@@ -163,11 +169,14 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   {
     ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const double gradientNorm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
-        [&](std::size_t m) { return this->Phi[ids[m]]; })
-                                    .norm();
-      this->NewValues[k] = ReinitializedValue(this->Phi[i], initial[k], gradientNorm,
-        settings.Spacing, settings.ReinitializationTimeStep);
+      const Eigen::Vector3d xi(this->Geometry.Position(i));
+      const UpwindSlope slope = SteepestUpwindSlope(
+        this->Phi[i], stride, [&](std::size_t m, double& value, double& distance) {
+          value = this->Phi[ids[m]];
+          distance = (Eigen::Vector3d(this->Geometry.Position(ids[m])) - xi).norm();
+        });
+      this->NewValues[k] = ReinitializedValue(
+        this->Phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
     });
     for (std::size_t k = 0; k < this->Region.size(); ++k)
     {
@@ -258,6 +267,13 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
 {
   this->HasConverged = false;
   int stableIterations = 0;
+  // Values beyond the reinitialised region are never read as distances: clamp them, so that a
+  // front moving into stale values meets a bounded step that the reinitialisation repairs.
+  const double clamp = ReinitializationHalfWidth(settings, this->Geometry);
+  for (double& phi : this->Phi)
+  {
+    phi = std::max(-clamp, std::min(clamp, phi));
+  }
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {
     if (aborted && aborted())

@@ -35,6 +35,10 @@ struct EvolutionSettings
   int StableIterationsToStop = 3;
 };
 
+/// Half width of the region |phi| < w that the reinitialisation keeps a signed distance: the
+/// band plus a margin of two neighbourhood radii, so samples about to enter the band are ready.
+double ReinitializationHalfWidth(const EvolutionSettings& settings, const Neighborhoods& geometry);
+
 /// One row of the convergence table.
 struct IterationRecord
 {

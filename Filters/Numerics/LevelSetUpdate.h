@@ -5,7 +5,9 @@
 
 #include "LevelSetSplines.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace lsi
 {
@@ -39,13 +41,56 @@ inline double EvolvedValue(double phi, double signOfData, double curvature, doub
   return phi + c.TimeStep * (main + smoothing + c.DistanceRegularization * regularization);
 }
 
+/// Upwind estimate of |grad psi| at a sample for the eikonal equation: the steepest slope
+/// towards the zero level, max over the neighbours j closer to it (sign(psi) psi_j < |psi|) of
+/// sign(psi) (psi - psi_j) / |x - x_j|. Distance information flows out of the interface, so only
+/// those neighbours are used (upwinding). `Floor` is the value of the steepest neighbour: the
+/// update may not pass it, which makes the explicit step monotone.
+struct UpwindSlope
+{
+  bool Found = false;
+  double Norm = 0.0;
+  double Floor = 0.0;
+};
+
+template <typename NeighborFn>
+UpwindSlope SteepestUpwindSlope(double psi, std::size_t count, NeighborFn neighbor)
+{
+  // neighbor(j, value, distance) fills the neighbour's value and distance from the sample.
+  UpwindSlope best;
+  const double sign = psi >= 0.0 ? 1.0 : -1.0;
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    double value = 0.0, distance = 0.0;
+    neighbor(j, value, distance);
+    if (!(distance > 0.0) || !(sign * value < sign * psi))
+    {
+      continue;
+    }
+    const double slope = sign * (psi - value) / distance;
+    if (!best.Found || slope > best.Norm)
+    {
+      best.Found = true;
+      best.Norm = slope;
+      best.Floor = value;
+    }
+  }
+  return best;
+}
+
 /// One pseudo-time step of d psi / d tau = S(phi0) (1 - |grad psi|) with the smoothed sign
 /// S = phi0 / sqrt(phi0^2 + spacing^2): zero on the interface, so the zero level barely moves.
+/// With an upwind slope, the step is limited so that psi does not pass the upwind value.
 inline double ReinitializedValue(
-  double psi, double phi0, double gradientNorm, double spacing, double pseudoTimeStep)
+  double psi, double phi0, const UpwindSlope& slope, double spacing, double pseudoTimeStep)
 {
+  if (!slope.Found)
+  {
+    return psi; // no neighbour nearer the interface: nothing to propagate from
+  }
   const double s = phi0 / std::sqrt(phi0 * phi0 + spacing * spacing);
-  return psi + pseudoTimeStep * s * (1.0 - gradientNorm);
+  const double next = psi + pseudoTimeStep * s * (1.0 - slope.Norm);
+  return psi >= 0.0 ? std::max(next, slope.Floor) : std::min(next, slope.Floor);
 }
 
 /// The quantity the paper's MG/AG statistics average: max(|g|, 1/|g|) (1 for a distance).

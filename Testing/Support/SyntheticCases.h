@@ -1,0 +1,201 @@
+// The analytic test cases: the paper's one-component field (§8.2), a multi-component field of
+// our own (§8.3 leaves its formula out), and a sphere. Each knows its value and gradient
+// everywhere, so the exact isosurface is known. Used by the data generator, the tests and the
+// benchmark (plain C++/Eigen).
+#ifndef SyntheticCases_h
+#define SyntheticCases_h
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace lsi
+{
+namespace cases
+{
+
+struct Sphere3
+{
+  Eigen::Vector3d Center;
+  double Radius;
+};
+
+struct Case
+{
+  std::string Name;
+  double IsoValue = 0.0;
+  Eigen::Vector3d BoxMin{ 0, 0, 0 }, BoxMax{ 128, 128, 128 };
+  std::vector<Sphere3> Seeds; // main seed first
+  double CurvatureWeight = 0.05; // lambda used by the case (the paper's for its own runs)
+  virtual ~Case() = default;
+  virtual double Value(const Eigen::Vector3d& x) const = 0;
+  virtual Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const = 0;
+  /// Which component of {f > iso} a point near the surface belongs to (0 if only one).
+  virtual int Component(const Eigen::Vector3d&) const { return 0; }
+  /// Whether that component meets the seeds (and so must be extracted).
+  virtual bool Seeded(int component) const { return component == 0; }
+};
+
+/// Paper §8.2: f = -((a x + 0.05 (a y)^3)^2 + 0.7 (a y)^2 + 0.3 (a z - 0.7 (a y)^2)^2 - 4) / a^2,
+/// a = 0.1, in coordinates centred so that the surface (about 54 x 48 x 113) fits in
+/// [0, 128]^3; isovalue 0; a sphere seed inside the object.
+struct OneComponentCase : Case
+{
+  static constexpr double A = 0.1;
+  Eigen::Vector3d Origin{ 64.0, 64.0, 44.0 };
+  OneComponentCase()
+  {
+    this->Name = "one-component";
+    this->IsoValue = 0.0;
+    this->Seeds = { { Eigen::Vector3d(64.0, 64.0, 64.0), 12.0 } };
+    this->CurvatureWeight = 0.15;
+  }
+  double Value(const Eigen::Vector3d& x) const override
+  {
+    const Eigen::Vector3d q = A * (x - this->Origin);
+    const double u = q.x() + 0.05 * q.y() * q.y() * q.y();
+    const double w = q.z() - 0.7 * q.y() * q.y();
+    return -(u * u + 0.7 * q.y() * q.y() + 0.3 * w * w - 4.0) / (A * A);
+  }
+  Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
+  {
+    const Eigen::Vector3d q = A * (x - this->Origin);
+    const double v = q.y();
+    const double u = q.x() + 0.05 * v * v * v;
+    const double w = q.z() - 0.7 * v * v;
+    const double dFdu = 2.0 * u;
+    const double dFdv = 2.0 * u * 0.15 * v * v + 1.4 * v - 0.6 * w * 1.4 * v;
+    const double dFdw = 0.6 * w;
+    return -Eigen::Vector3d(dFdu, dFdv, dFdw) / A;
+  }
+};
+
+/// Four Gaussian blobs, f = sum_k exp(-|S_k (x - c_k)|^2 / 2), isovalue 0.5: components A
+/// (round), B (elongated), C and D (small). Two intersecting seed spheres meet A and B only;
+/// the gap between A and B inside the seed has f < 0.5, so the front must also retreat there.
+struct MultiComponentCase : Case
+{
+  struct Blob
+  {
+    Eigen::Vector3d Center, Sigma;
+  };
+  std::array<Blob, 4> Blobs{ { { { 36, 64, 64 }, { 14, 14, 14 } },
+    { { 86, 64, 64 }, { 10, 16, 20 } }, { { 64, 64, 22 }, { 8, 8, 8 } },
+    { { 64, 104, 100 }, { 10, 10, 10 } } } };
+  MultiComponentCase()
+  {
+    this->Name = "multi-component";
+    this->IsoValue = 0.5;
+    this->Seeds = { { Eigen::Vector3d(44, 64, 64), 14.0 }, { Eigen::Vector3d(70, 64, 64), 14.0 } };
+    this->CurvatureWeight = 0.01;
+  }
+  double Term(int k, const Eigen::Vector3d& x) const
+  {
+    const Eigen::Vector3d s = (x - this->Blobs[k].Center).cwiseQuotient(this->Blobs[k].Sigma);
+    return std::exp(-0.5 * s.squaredNorm());
+  }
+  double Value(const Eigen::Vector3d& x) const override
+  {
+    double f = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      f += this->Term(k, x);
+    }
+    return f;
+  }
+  Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
+  {
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k)
+    {
+      const Blob& b = this->Blobs[k];
+      g -= this->Term(k, x) *
+        (x - b.Center).cwiseQuotient(b.Sigma).cwiseQuotient(b.Sigma);
+    }
+    return g;
+  }
+  int Component(const Eigen::Vector3d& x) const override
+  {
+    int best = 0;
+    for (int k = 1; k < 4; ++k)
+    {
+      if (this->Term(k, x) > this->Term(best, x))
+      {
+        best = k;
+      }
+    }
+    return best;
+  }
+  bool Seeded(int component) const override { return component == 0 || component == 1; }
+};
+
+/// A ball: f = R - |x - c|, isovalue 0, so the exact surface is the sphere of radius R.
+struct SphereCase : Case
+{
+  Eigen::Vector3d Center;
+  double Radius;
+  SphereCase(const Eigen::Vector3d& center, double radius, double boxHalfWidth)
+    : Center(center)
+    , Radius(radius)
+  {
+    this->Name = "sphere";
+    this->BoxMin = center - Eigen::Vector3d::Constant(boxHalfWidth);
+    this->BoxMax = center + Eigen::Vector3d::Constant(boxHalfWidth);
+    this->Seeds = { { center, 0.5 * radius } };
+  }
+  double Value(const Eigen::Vector3d& x) const override
+  {
+    return this->Radius - (x - this->Center).norm();
+  }
+  Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
+  {
+    return -(x - this->Center).normalized();
+  }
+};
+
+/// `count` uniform random samples in the case's box (deterministic for a given seed).
+inline std::vector<Eigen::Vector3d> UniformSamples(
+  const Case& c, std::size_t count, std::uint64_t seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points(count);
+  const Eigen::Vector3d size = c.BoxMax - c.BoxMin;
+  for (auto& p : points)
+  {
+    const double x = unit(random), y = unit(random), z = unit(random);
+    p = c.BoxMin + Eigen::Vector3d(x * size.x(), y * size.y(), z * size.z());
+  }
+  return points;
+}
+
+/// Newton projection of x onto the exact isosurface along the gradient.
+inline bool ProjectOntoSurface(const Case& c, Eigen::Vector3d& x)
+{
+  for (int k = 0; k < 30; ++k)
+  {
+    const Eigen::Vector3d g = c.Gradient(x);
+    const double r = c.Value(x) - c.IsoValue;
+    if (!(g.squaredNorm() > 0.0))
+    {
+      return false;
+    }
+    const Eigen::Vector3d step = (r / g.squaredNorm()) * g;
+    x -= step;
+    if (step.norm() < 1e-10)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace cases
+} // namespace lsi
+
+#endif
