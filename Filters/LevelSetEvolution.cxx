@@ -159,15 +159,46 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   this->CollectWhere(ReinitializationHalfWidth(settings, this->Geometry), this->Scratch);
   this->CollectWithNeighbors(this->Scratch, this->Region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  this->NewValues.resize(this->Region.size());
   std::vector<double> initial(this->Region.size());
   for (std::size_t k = 0; k < this->Region.size(); ++k)
   {
     initial[k] = this->Phi[this->Region[k]];
   }
-  this->NewValues.resize(this->Region.size());
+  // Samples with a neighbour of the other sign hold the interface: fix them at their
+  // first-order distance; the others are updated by upwind steps.
+  std::vector<char> atInterface(this->Region.size(), 0);
+  ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    bool crossing = false;
+    for (std::size_t m = 1; m < stride && !crossing; ++m)
+    {
+      crossing = Positive(this->Phi[ids[m]]) != Positive(this->Phi[i]);
+    }
+    if (crossing)
+    {
+      atInterface[k] = 1;
+      const double norm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
+        [&](std::size_t m) { return this->Phi[ids[m]]; })
+                            .norm();
+      this->NewValues[k] = InterfaceDistance(this->Phi[i], norm);
+    }
+  });
+  for (std::size_t k = 0; k < this->Region.size(); ++k)
+  {
+    if (atInterface[k])
+    {
+      this->Phi[this->Region[k]] = this->NewValues[k];
+    }
+  }
   for (int step = 0; step < settings.ReinitializationSteps; ++step)
   {
     ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
+      if (atInterface[k])
+      {
+        this->NewValues[k] = this->Phi[i];
+        return;
+      }
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
       const Eigen::Vector3d xi(this->Geometry.Position(i));
       const UpwindSlope slope = SteepestUpwindSlope(

@@ -78,9 +78,11 @@ UpwindSlope SteepestUpwindSlope(double psi, std::size_t count, NeighborFn neighb
   return best;
 }
 
-/// One pseudo-time step of d psi / d tau = S(phi0) (1 - |grad psi|) with the smoothed sign
-/// S = phi0 / sqrt(phi0^2 + spacing^2): zero on the interface, so the zero level barely moves.
-/// With an upwind slope, the step is limited so that psi does not pass the upwind value.
+/// One pseudo-time step of d psi / d tau = S(phi0) (1 - |grad psi|) away from the interface,
+/// with |S| = |phi0| / sqrt(phi0^2 + spacing^2) and the sign of psi. The step is limited to
+/// [upwind value, psi + pseudoTimeStep] (mirrored for psi < 0): it neither passes the neighbour
+/// the information comes from nor grows |psi| faster than distance grows, so it is monotone
+/// and cannot amplify (the unlimited explicit step can, next to near-duplicate samples).
 inline double ReinitializedValue(
   double psi, double phi0, const UpwindSlope& slope, double spacing, double pseudoTimeStep)
 {
@@ -88,9 +90,20 @@ inline double ReinitializedValue(
   {
     return psi; // no neighbour nearer the interface: nothing to propagate from
   }
-  const double s = phi0 / std::sqrt(phi0 * phi0 + spacing * spacing);
-  const double next = psi + pseudoTimeStep * s * (1.0 - slope.Norm);
-  return psi >= 0.0 ? std::max(next, slope.Floor) : std::min(next, slope.Floor);
+  const double sign = psi >= 0.0 ? 1.0 : -1.0;
+  const double s = std::abs(phi0) / std::sqrt(phi0 * phi0 + spacing * spacing);
+  const double magnitude = sign * psi + pseudoTimeStep * s * (1.0 - slope.Norm);
+  const double lowest = std::max(0.0, sign * slope.Floor);
+  const double highest = sign * psi + pseudoTimeStep;
+  return sign * std::min(highest, std::max(lowest, magnitude));
+}
+
+/// Distance of a sample next to the interface (a neighbour has the other sign), held fixed
+/// during reinitialisation so that the zero level does not move: phi0 / |grad phi0| (first-order
+/// estimate; Russo and Smereka's subcell fix). Keeps phi0 if the gradient is too flat to trust.
+inline double InterfaceDistance(double phi0, double gradientNorm)
+{
+  return gradientNorm > 0.1 ? phi0 / gradientNorm : phi0;
 }
 
 /// The quantity the paper's MG/AG statistics average: max(|g|, 1/|g|) (1 for a distance).
