@@ -305,6 +305,13 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   {
     phi = std::max(-clamp, std::min(clamp, phi));
   }
+  const std::size_t n = this->Geometry.NumberOfSamples;
+  this->InitiallyPositive.resize(n);
+  this->HasChangedSign.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->InitiallyPositive[i] = Positive(this->Phi[i]);
+  }
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {
     if (aborted && aborted())
@@ -320,6 +327,18 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     {
       record.SignChanges += this->Reinitialize(settings);
     }
+    // First-time sign changes: scan the samples that may have changed (band and its region).
+    for (const std::vector<std::size_t>* touched : { &this->Band, &this->Region })
+    {
+      for (std::size_t i : *touched)
+      {
+        if (!this->HasChangedSign[i] && Positive(this->Phi[i]) != this->InitiallyPositive[i])
+        {
+          this->HasChangedSign[i] = 1;
+          ++record.FirstSignChanges;
+        }
+      }
+    }
     record.Seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->Measure(record); // statistics are reported, not timed as part of the iteration
@@ -328,7 +347,8 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
       return false;
     }
     const double allowed = settings.ConvergenceTolerance * static_cast<double>(record.BandSize);
-    stableIterations = static_cast<double>(record.SignChanges) <= allowed ? stableIterations + 1 : 0;
+    stableIterations =
+      static_cast<double>(record.FirstSignChanges) <= allowed ? stableIterations + 1 : 0;
     if (stableIterations >= settings.StableIterationsToStop)
     {
       this->HasConverged = true;

@@ -30,8 +30,9 @@ struct EvolutionSettings
   double Spacing = 1.0; // mean sample spacing: the smoothed sign's width in eq. 10
   int MaximumIterations = 500;
   // Stop when, for StableIterationsToStop iterations in a row, at most this fraction of the
-  // band's samples changed sign: the front has stopped moving.
-  double ConvergenceTolerance = 1e-3;
+  // band's samples changed sign for the first time: the front no longer advances anywhere.
+  // (Counting every change would also count samples that flicker at a converged front.)
+  double ConvergenceTolerance = 1e-4;
   int StableIterationsToStop = 3;
 };
 
@@ -48,6 +49,7 @@ struct IterationRecord
   double MeanGradientDeviation = 0.0; // AG over the zero crossings
   std::size_t BandSize = 0;           // samples updated
   std::size_t SignChanges = 0;        // samples whose sign of phi changed this iteration
+  std::size_t FirstSignChanges = 0;   // of those, samples that had never changed sign before
   double Seconds = 0.0;
 };
 
@@ -81,6 +83,7 @@ private:
   std::uint32_t CurrentStamp = 0;
   std::vector<std::size_t> Band, Region, Scratch, Front;
   std::vector<double> NewValues;
+  std::vector<char> InitiallyPositive, HasChangedSign;
   bool HasConverged = false;
 };
 

@@ -252,10 +252,39 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
 }
 } // namespace
 
-bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
+namespace
+{
+// A sample whose sign of phi differs from all of its neighbours' encloses no resolvable
+// surface (a pocket smaller than the sampling): give it its neighbours' mean, so that Newton's
+// method is not drawn to a spurious zero around it.
+std::vector<double> WithoutIsolatedSigns(const Neighborhoods& geometry, std::vector<double> phi)
+{
+  const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
+  const std::vector<double> original = phi;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    bool isolated = true;
+    double sum = 0.0;
+    for (std::size_t m = 1; m < stride && isolated; ++m)
+    {
+      isolated = (original[ids[m]] > 0.0) != (original[i] > 0.0);
+      sum += original[ids[m]];
+    }
+    if (isolated)
+    {
+      phi[i] = sum / static_cast<double>(stride - 1);
+    }
+  }
+  return phi;
+}
+} // namespace
+
+bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& evolvedPhi,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
 {
   out = IsopointSet();
+  const std::vector<double> phi = WithoutIsolatedSigns(geometry, evolvedPhi);
   std::vector<double> points, normals;
   RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
   out.RoughCount = points.size() / 3;

@@ -143,7 +143,8 @@ public:
 
   ///@{
   /** Stopping rule: the evolution stops when, for 3 iterations in a row, at most this fraction
-   * of the band's samples changed sign (the front has stopped moving). Default 0.001. */
+   * of the band's samples changed sign for the first time (the front no longer advances
+   * anywhere). Default 0.0001. */
   vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceTolerance, double);
   ///@}
@@ -197,7 +198,7 @@ protected:
   double DistanceRegularization = 0.1;
   int EvolutionScheme = VARIATIONAL_WITH_REINITIALIZATION;
   int MaximumNumberOfIterations = 500;
-  double ConvergenceTolerance = 1e-3;
+  double ConvergenceTolerance = 1e-4;
   bool Completion = true;
   int NumberOfThreads = 0;
 
