@@ -1,0 +1,240 @@
+// Filter-level tests: neighbour reuse across parameter changes, and bad input (a clear error
+// and empty outputs, never a crash or hang).
+#include "vtkLevelSetIsosurface.h"
+
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkDoubleArray.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <string>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+// Counts error events so that tests can require a message without printing it.
+class ErrorCounter : public vtkCommand
+{
+public:
+  static ErrorCounter* New() { return new ErrorCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = static_cast<const char*>(data);
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+// Random samples in [0, 60]^3 of f = 20 - |x - (30, 30, 30)|, optionally with extra tweaks.
+vtkNew<vtkPolyData> Ball(vtkIdType count, int components = 1)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(11);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  f->SetNumberOfComponents(components);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double x[3];
+    for (double& v : x)
+    {
+      v = random->GetNextRangeValue(0.0, 60.0);
+    }
+    points->InsertNextPoint(x);
+    const double r =
+      std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
+    for (int c = 0; c < components; ++c)
+    {
+      f->InsertNextValue(20.0 - r);
+    }
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->GetPointData()->AddArray(f);
+  return data;
+}
+
+void Configure(vtkLevelSetIsosurface* filter, vtkPolyData* input)
+{
+  filter->SetInputData(input);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
+  filter->SetIsoValue(0.0);
+  filter->SetSeedCenter(30, 30, 30);
+  filter->SetSeedRadius(8);
+}
+
+// Runs a filter expected to fail: an error message naming the problem, empty outputs.
+void ExpectError(vtkLevelSetIsosurface* filter, const std::string& expected, const char* what)
+{
+  vtkNew<ErrorCounter> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->Update();
+  Check(errors->Count > 0, std::string(what) + ": an error is reported");
+  Check(errors->Last.find(expected) != std::string::npos,
+    std::string(what) + ": message mentions '" + expected + "' (got: " + errors->Last + ")");
+  Check(filter->GetOutput(0)->GetNumberOfPoints() == 0, std::string(what) + ": empty isopoints");
+  Check(filter->GetOutput(1)->GetNumberOfPoints() == 0, std::string(what) + ": empty particles");
+}
+
+void TestReuseOfNeighbours()
+{
+  vtkNew<vtkPolyData> data = Ball(20000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  filter->Update();
+  const vtkIdType first = filter->GetOutput(0)->GetNumberOfPoints();
+  Check(first > 500, "isopoints produced");
+  Check(filter->GetNeighborSearchCount() == 1, "neighbours built once");
+  filter->SetIsoValue(-3.0); // sphere of radius 23
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 1, "isovalue change reuses the neighbours");
+  double p[3];
+  filter->GetOutput(0)->GetPoint(0, p);
+  const double r =
+    std::sqrt((p[0] - 30) * (p[0] - 30) + (p[1] - 30) * (p[1] - 30) + (p[2] - 30) * (p[2] - 30));
+  Check(std::abs(r - 23.0) < 1.5, "new isovalue gives the new sphere (r = " + std::to_string(r) + ")");
+  filter->SetCurvatureWeight(0.1);
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 1, "a parameter change reuses the neighbours");
+  filter->SetNumberOfNeighbors(20);
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 2, "NumberOfNeighbors change rebuilds them");
+  data->GetPoints()->Modified();
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 3, "moved points rebuild them");
+  // The other outputs: LevelSet on the particles, one table row per iteration.
+  Check(filter->GetOutput(1)->GetPointData()->GetArray("LevelSet") != nullptr, "LevelSet array");
+  vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
+  Check(table && table->GetNumberOfRows() == filter->GetNumberOfIterationsPerformed() &&
+      table->GetColumnByName("SignMismatch") && table->GetColumnByName("BandSize"),
+    "convergence table");
+}
+
+void TestBadInput()
+{
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, empty);
+    ExpectError(filter, "no points", "no points");
+  }
+  {
+    vtkNew<vtkPolyData> few = Ball(20);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, few);
+    ExpectError(filter, "fewer than NumberOfNeighbors", "too few points");
+  }
+  vtkNew<vtkPolyData> data = Ball(5000);
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "missing");
+    ExpectError(filter, "No input scalars", "missing array");
+  }
+  {
+    vtkNew<vtkPolyData> vectors = Ball(5000, 3);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, vectors);
+    ExpectError(filter, "3 components", "non-scalar array");
+  }
+  {
+    vtkNew<vtkPolyData> nan = Ball(5000);
+    vtkDoubleArray::SafeDownCast(nan->GetPointData()->GetArray("f"))
+      ->SetValue(17, std::numeric_limits<double>::quiet_NaN());
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, nan);
+    ExpectError(filter, "NaN or infinite value at point 17", "NaN value");
+  }
+  {
+    vtkNew<vtkPolyData> inf = Ball(5000);
+    vtkDoubleArray::SafeDownCast(inf->GetPointData()->GetArray("f"))
+      ->SetValue(3, std::numeric_limits<double>::infinity());
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, inf);
+    ExpectError(filter, "NaN or infinite", "infinite value");
+  }
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetIsoValue(1000.0);
+    ExpectError(filter, "outside the open range", "isovalue outside the data range");
+  }
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetSeedCenter(500, 500, 500);
+    filter->SetSeedRadius(1);
+    ExpectError(filter, "contains no sample", "empty seed");
+  }
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->AddAdditionalSeed(-100, -100, -100, 2);
+    ExpectError(filter, "contains no sample", "empty additional seed");
+  }
+  {
+    vtkNew<vtkPolyData> duplicated = Ball(5000);
+    double x[3];
+    duplicated->GetPoint(10, x);
+    duplicated->GetPoints()->SetPoint(11, x);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, duplicated);
+    ExpectError(filter, "coincide", "duplicate points");
+  }
+  {
+    // All samples on the plane z = 30: every MLS fit is singular.
+    vtkNew<vtkPolyData> flat = Ball(5000);
+    for (vtkIdType i = 0; i < flat->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      flat->GetPoint(i, x);
+      x[2] = 30.0;
+      flat->GetPoints()->SetPoint(i, x);
+    }
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, flat);
+    ExpectError(filter, "singular", "coplanar samples");
+  }
+  {
+    // Collinear samples.
+    vtkNew<vtkPolyData> line = Ball(2000);
+    for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      line->GetPoint(i, x);
+      line->GetPoints()->SetPoint(i, x[0], x[0], x[0]);
+    }
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, line);
+    ExpectError(filter, "singular", "collinear samples");
+  }
+}
+} // namespace
+
+int main()
+{
+  TestReuseOfNeighbours();
+  TestBadInput();
+  std::cout << (failures ? "filter tests FAILED\n" : "filter tests passed\n");
+  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}

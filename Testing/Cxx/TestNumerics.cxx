@@ -1,0 +1,295 @@
+// Unit tests of the per-sample numerics (Filters/Numerics), against known answers.
+#include "AutomaticParameters.h"
+#include "IsopointRefinement.h"
+#include "LevelSetSplines.h"
+#include "LevelSetUpdate.h"
+#include "MovingLeastSquares.h"
+#include "TangentPlaneCompletion.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <vector>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const char* what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+void TestSplines()
+{
+  const double eps = 1.7;
+  // sgn' = 2 delta, by central differences, everywhere including the knots.
+  for (double x = -4.0 * eps; x <= 4.0 * eps; x += 0.01)
+  {
+    const double h = 1e-6;
+    const double derivative =
+      (lsi::SmoothedSign(x + h, eps) - lsi::SmoothedSign(x - h, eps)) / (2 * h);
+    Check(std::abs(derivative - 2.0 * lsi::SmoothedDelta(x, eps)) < 1e-6, "sgn' = 2 delta");
+  }
+  // Continuity at the knots |x| = eps and 2 eps, and the values there.
+  for (double u : { 1.0, 2.0 })
+  {
+    Check(std::abs(lsi::SplineKernel(u - 1e-12) - lsi::SplineKernel(u + 1e-12)) < 1e-9,
+      "delta continuous");
+    Check(std::abs(lsi::SplineKernelIntegral(u - 1e-12) - lsi::SplineKernelIntegral(u + 1e-12)) <
+        1e-9,
+      "sign continuous");
+  }
+  Check(std::abs(lsi::SplineKernelIntegral(1.0) - 11.0 / 12.0) < 1e-15, "s(1) = 11/12");
+  // Limits: sign -> +-1 beyond 2 eps, delta -> 0; odd sign, even delta; unit mass of delta.
+  Check(lsi::SmoothedSign(2.0 * eps, eps) == 1.0 && lsi::SmoothedSign(-9.0, eps) == -1.0,
+    "sign limits");
+  Check(lsi::SmoothedDelta(2.0 * eps, eps) == 0.0 && lsi::SmoothedDelta(5.0, eps) == 0.0,
+    "delta support");
+  Check(lsi::SmoothedSign(0.0, eps) == 0.0, "sign(0) = 0");
+  double mass = 0.0;
+  for (double x = -2.0 * eps; x < 2.0 * eps; x += 1e-4)
+  {
+    mass += lsi::SmoothedDelta(x + 0.5e-4, eps) * 1e-4;
+  }
+  Check(std::abs(mass - 1.0) < 1e-6, "delta has unit mass");
+}
+
+void TestMLS()
+{
+  // Gradients (and values) of linear fields are exact on scattered neighbourhoods.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    std::vector<double> xyz(3 * 27);
+    for (double& v : xyz)
+    {
+      v = 5.0 + 2.0 * u(random);
+    }
+    const double c[3] = { xyz[0], xyz[1], xyz[2] };
+    double h = 0.0;
+    for (int j = 0; j < 27; ++j)
+    {
+      h = std::max(h, std::sqrt(std::pow(xyz[3 * j] - c[0], 2) + std::pow(xyz[3 * j + 1] - c[1], 2) +
+                        std::pow(xyz[3 * j + 2] - c[2], 2)));
+    }
+    std::vector<double> g(3 * 27), value(27);
+    const bool ok = lsi::BuildLinearStencil(c, 27, [&](std::size_t j) { return &xyz[3 * j]; }, h,
+      lsi::LinearStencilView{ g.data(), value.data() });
+    Check(ok, "regular neighbourhood is not singular");
+    const Eigen::Vector3d a(0.3, -1.2, 2.5);
+    auto field = [&](std::size_t j) {
+      return a.dot(Eigen::Vector3d(&xyz[3 * j])) + 4.0;
+    };
+    const Eigen::Vector3d grad = lsi::ApplyGradientStencil(g.data(), 27, field);
+    Check((grad - a).norm() < 1e-10, "MLS gradient exact for a linear field");
+    double v = 0.0;
+    for (std::size_t j = 0; j < 27; ++j)
+    {
+      v += value[j] * field(j);
+    }
+    Check(std::abs(v - field(0)) < 1e-10, "MLS value exact for a linear field");
+    // Divergence of the linear vector field (x, 2y, -z) is 1 + 2 - 1 = 2.
+    const double div = lsi::ApplyDivergenceStencil(g.data(), 27, [&](std::size_t j) {
+      return Eigen::Vector3d(xyz[3 * j], 2.0 * xyz[3 * j + 1], -xyz[3 * j + 2]);
+    });
+    Check(std::abs(div - 2.0) < 1e-10, "MLS divergence exact for a linear field");
+  }
+  // Coplanar, collinear and coincident neighbourhoods are reported singular.
+  std::vector<double> plane, line, same;
+  for (int j = 0; j < 27; ++j)
+  {
+    plane.insert(plane.end(), { u(random), u(random), 0.0 });
+    const double t = u(random);
+    line.insert(line.end(), { t, 2 * t, -t });
+    same.insert(same.end(), { 1.0, 1.0, 1.0 });
+  }
+  std::vector<double> g(3 * 27);
+  for (const std::vector<double>* xyz : { &plane, &line, &same })
+  {
+    const double c[3] = { (*xyz)[0], (*xyz)[1], (*xyz)[2] };
+    Check(!lsi::BuildLinearStencil(c, 27, [&](std::size_t j) { return &(*xyz)[3 * j]; }, 3.0,
+            lsi::LinearStencilView{ g.data(), nullptr }),
+      "degenerate neighbourhood reported singular");
+  }
+}
+
+// Appendix, Theorem 1, with the theorem's own triangular delta and sign of support alpha.
+void TestTheorem1()
+{
+  const double alpha = 2.0;
+  auto delta = [&](double x) {
+    return std::abs(x) < alpha ? (alpha - std::abs(x)) / (alpha * alpha) : 0.0;
+  };
+  auto sign = [&](double x) {
+    return std::abs(x) < alpha ? x * (2 * alpha - std::abs(x)) / (alpha * alpha) : lsi::Sign(x);
+  };
+  // 1D: phi0(x) = -x (decreasing), f - f_iso = 0.3 - x.
+  auto run = [&](double dt, int steps, bool& monotone, double& worstLimitError) {
+    std::vector<double> xs, phi;
+    for (double x = -3.0; x <= 3.0; x += 0.01)
+    {
+      xs.push_back(x);
+      phi.push_back(-x);
+    }
+    monotone = true;
+    for (int k = 0; k < steps; ++k)
+    {
+      for (std::size_t i = 0; i < xs.size(); ++i)
+      {
+        phi[i] = lsi::MainTermStep(phi[i], lsi::Sign(0.3 - xs[i]), dt, delta, sign);
+      }
+      for (std::size_t i = 1; i < xs.size(); ++i)
+      {
+        monotone = monotone && phi[i] <= phi[i - 1] + 1e-12;
+      }
+    }
+    worstLimitError = 0.0;
+    for (std::size_t i = 0; i < xs.size(); ++i)
+    {
+      const double limit = std::abs(xs[i]) < alpha ? alpha * lsi::Sign(0.3 - xs[i]) : -xs[i];
+      if (std::abs(std::abs(xs[i]) - alpha) > 0.02 && std::abs(xs[i] - 0.3) > 0.02)
+      {
+        worstLimitError = std::max(worstLimitError, std::abs(phi[i] - limit));
+      }
+    }
+  };
+  bool monotone;
+  double error;
+  run(0.95 * alpha * alpha / 3.0, 4000, monotone, error);
+  Check(monotone, "Theorem 1: dt < alpha^2/3 keeps phi monotone");
+  Check(error < 0.05, "Theorem 1: phi converges to alpha sgn(f - f_iso) inside the support");
+  run(0.95 * alpha * alpha, 50, monotone, error);
+  Check(!monotone, "Theorem 1 is sharp: dt near alpha^2 loses monotonicity");
+  // The corrected splines at the paper's largest recommended step, 0.6 eps^2 (the appendix's
+  // 4 eps^2 / 3, from alpha = 2 eps, is only approximate for them and fails here).
+  const double eps = 1.0;
+  std::vector<double> phi;
+  for (double x = -3.0; x <= 3.0; x += 0.01)
+  {
+    phi.push_back(-x);
+  }
+  bool splineMonotone = true;
+  for (int k = 0; k < 500; ++k)
+  {
+    for (std::size_t i = 0; i < phi.size(); ++i)
+    {
+      const double x = -3.0 + 0.01 * i;
+      phi[i] = lsi::MainTermStep(phi[i], lsi::Sign(0.3 - x), 0.6 * eps * eps,
+        [&](double p) { return lsi::SmoothedDelta(p, eps); },
+        [&](double p) { return lsi::SmoothedSign(p, eps); });
+    }
+    for (std::size_t i = 1; i < phi.size(); ++i)
+    {
+      splineMonotone = splineMonotone && phi[i] <= phi[i - 1] + 1e-12;
+    }
+  }
+  Check(splineMonotone, "splines: dt = 0.6 eps^2 keeps phi monotone");
+  // Automatic parameters sit inside the paper's bounds.
+  const lsi::AutomaticChoice c = lsi::ChooseParameters(1.0, 0.05);
+  Check(c.TimeStep >= 0.3 * c.Epsilon * c.Epsilon && c.TimeStep <= 0.6 * c.Epsilon * c.Epsilon,
+    "automatic dt in [0.3, 0.6] eps^2");
+  Check(lsi::ChooseParameters(1.0, 1.0).TimeStep * 1.0 < 0.5, "automatic lambda dt < 0.5");
+}
+
+void TestReinitialization()
+{
+  // Upwind slope of an exact 1D distance (neighbours at +-1 of psi = 5) is 1: nothing moves.
+  auto neighbors = [](double a, double b) {
+    return [a, b](std::size_t j, double& value, double& distance) {
+      value = j == 0 ? a : b;
+      distance = 1.0;
+    };
+  };
+  lsi::UpwindSlope s = lsi::SteepestUpwindSlope(5.0, 2, neighbors(4.0, 6.0));
+  Check(s.Found && std::abs(s.Norm - 1.0) < 1e-15, "upwind slope of a distance is 1");
+  Check(lsi::ReinitializedValue(5.0, 5.0, s, 1.0, 0.5) == 5.0, "a distance is a fixed point");
+  // Too steep (psi = 9 next to 4): decreases, but never below the upwind value.
+  s = lsi::SteepestUpwindSlope(9.0, 2, neighbors(4.0, 10.0));
+  const double next = lsi::ReinitializedValue(9.0, 9.0, s, 1.0, 100.0);
+  Check(next < 9.0 && next >= 4.0, "steep psi decreases, bounded by the upwind value");
+  // Too flat: grows by at most the pseudo-time step. Negative side mirrors.
+  s = lsi::SteepestUpwindSlope(4.1, 2, neighbors(4.0, 4.2));
+  Check(lsi::ReinitializedValue(4.1, 4.1, s, 1.0, 0.5) <= 4.6 + 1e-12, "growth bounded");
+  s = lsi::SteepestUpwindSlope(-9.0, 2, neighbors(-4.0, -10.0));
+  const double negative = lsi::ReinitializedValue(-9.0, -9.0, s, 1.0, 100.0);
+  Check(negative > -9.0 && negative <= -4.0, "negative side mirrors");
+  Check(lsi::InterfaceDistance(0.6, 2.0) == 0.3, "interface distance phi / |grad phi|");
+}
+
+void TestIsopoints()
+{
+  // Newton onto the unit sphere from an approximation phi(p) = 1 - |p| (exact gradient).
+  auto sphere = [](const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient) {
+    value = 1.0 - p.norm();
+    gradient = -p.normalized();
+    return true;
+  };
+  lsi::NewtonSettings settings;
+  settings.MaximumDistance = 2.0;
+  for (const Eigen::Vector3d& start :
+    { Eigen::Vector3d(0.3, 0.4, 0.2), Eigen::Vector3d(1.5, -0.2, 0.7), Eigen::Vector3d(0, 0, 1.9) })
+  {
+    Eigen::Vector3d p = start, g;
+    Check(lsi::ProjectOntoZeroLevel(p, g, sphere, settings) && std::abs(p.norm() - 1.0) < 1e-6,
+      "Newton projects onto the sphere");
+    Check((p.normalized() - start.normalized()).norm() < 1e-9, "projection along the normal");
+  }
+  Eigen::Vector3d far(10, 0, 0), g;
+  Check(!lsi::ProjectOntoZeroLevel(far, g, sphere, settings), "trust region rejects far points");
+  // Linear zero crossing and the angle criterion.
+  const Eigen::Vector3d z = lsi::ZeroCrossing(Eigen::Vector3d(0, 0, 0), 1.0,
+    Eigen::Vector3d(4, 0, 0), -3.0);
+  Check((z - Eigen::Vector3d(1, 0, 0)).norm() < 1e-15, "zero crossing by interpolation");
+  Check(lsi::AlignedWithGradient(Eigen::Vector3d(1, 0.2, 0), Eigen::Vector3d(1, 0, 0), 0.5),
+    "aligned pair accepted");
+  Check(!lsi::AlignedWithGradient(Eigen::Vector3d(0.1, 1, 0), Eigen::Vector3d(1, 0, 0), 0.5),
+    "tangential pair rejected");
+}
+
+void TestCompletion()
+{
+  // Plane z = 0, isopoint at the origin, neighbours fill the +x half: the empty cells are the
+  // 10 of the 5 x 5 grid with u < 0, all on the plane.
+  std::vector<Eigen::Vector3d> neighbors;
+  for (int u = 1; u <= 2; ++u)
+  {
+    for (int v = -2; v <= 2; ++v)
+    {
+      neighbors.emplace_back(0.5 * u, 0.5 * v, 0.01);
+    }
+  }
+  neighbors.emplace_back(0.0, 0.0, 3.0); // another sheet: ignored
+  std::vector<Eigen::Vector3d> cells;
+  const Eigen::Vector3d n(0, 0, 1);
+  lsi::EmptyTangentCells(Eigen::Vector3d::Zero(), n, 0.5, 2, 0.5, neighbors.size(),
+    [&](std::size_t j) { return neighbors[j]; }, cells);
+  Check(cells.size() == 25 - 1 - 10, "empty cells counted");
+  for (const Eigen::Vector3d& c : cells)
+  {
+    Check(std::abs(c.z()) < 1e-12, "candidates lie on the tangent plane");
+  }
+  Eigen::Vector3d e1, e2;
+  lsi::TangentBasis(Eigen::Vector3d(1, 2, 3).normalized(), e1, e2);
+  Check(std::abs(e1.dot(e2)) < 1e-12 && std::abs(e1.norm() - 1) < 1e-12 &&
+      std::abs(e1.dot(Eigen::Vector3d(1, 2, 3))) < 1e-12,
+    "orthonormal tangent basis");
+}
+} // namespace
+
+int main()
+{
+  TestSplines();
+  TestMLS();
+  TestTheorem1();
+  TestReinitialization();
+  TestIsopoints();
+  TestCompletion();
+  std::cout << (failures ? "numerics tests FAILED\n" : "numerics tests passed\n");
+  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}
