@@ -16,13 +16,14 @@
 namespace lsi
 {
 
-MLSEvaluator::MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values)
+MLSEvaluator::MLSEvaluator(
+  const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count)
   : Geometry(geometry)
   , Values(values)
-  , Ids(geometry.Stride)
-  , D2(geometry.Stride)
-  , GradientCoefficients(3 * geometry.Stride)
-  , ValueCoefficients(geometry.Stride)
+  , Ids(count ? count : geometry.Stride)
+  , D2(Ids.size())
+  , GradientCoefficients(3 * Ids.size())
+  , ValueCoefficients(Ids.size())
 {
 }
 
@@ -95,17 +96,21 @@ void AppendSelected(const std::vector<double>& points, const std::vector<double>
 // Refines candidate points in place; `valid` says which converged. Normals point along
 // -grad phi: out of the region phi > 0, which is the region f > f_iso.
 void RefineCandidates(const Neighborhoods& geometry, const std::vector<double>& phi,
-  const NewtonSettings& newton, std::vector<double>& points, std::vector<double>& normals,
-  std::vector<char>& valid)
+  const NewtonSettings& newton, int normalFitScale, std::vector<double>& points,
+  std::vector<double>& normals, std::vector<char>& valid)
 {
-  vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
+  const std::size_t normalFitCount = std::min<std::size_t>(
+    geometry.NumberOfSamples, static_cast<std::size_t>(normalFitScale) * geometry.Stride);
+  vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators, normalEvaluators;
   const std::size_t count = points.size() / 3;
   normals.assign(3 * count, 0.0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
+    std::shared_ptr<MLSEvaluator>& normalEvaluator = normalEvaluators.Local();
     if (!evaluator)
     {
       evaluator.reset(new MLSEvaluator(geometry, phi));
+      normalEvaluator.reset(new MLSEvaluator(geometry, phi, normalFitCount));
     }
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -116,6 +121,12 @@ void RefineCandidates(const Neighborhoods& geometry, const std::vector<double>& 
       Eigen::Vector3d p(&points[3 * i]);
       Eigen::Vector3d gradient;
       valid[i] = ProjectOntoZeroLevel(p, gradient, *evaluator, newton);
+      double value;
+      Eigen::Vector3d wide;
+      if (valid[i] && (*normalEvaluator)(p, value, wide) && wide.squaredNorm() > 0.0)
+      {
+        gradient = wide;
+      }
       if (valid[i])
       {
         const Eigen::Vector3d n = -gradient.normalized();
@@ -293,7 +304,8 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   {
     return false;
   }
-  RefineCandidates(geometry, phi, settings.Newton, points, normals, valid);
+  RefineCandidates(
+    geometry, phi, settings.Newton, settings.NormalFitScale, points, normals, valid);
   {
     // Thin the refined points: many crossings land on nearly the same spot.
     IsopointSet tmp;
@@ -314,7 +326,8 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   CompletionCandidates(out, settings, candidates, candidateValid);
   NewtonSettings newton = settings.Newton;
   newton.MaximumDistance = 2.0 * settings.CellSize; // stay near the cell it was proposed for
-  RefineCandidates(geometry, phi, newton, candidates, candidateNormals, candidateValid);
+  RefineCandidates(geometry, phi, newton, settings.NormalFitScale, candidates, candidateNormals,
+    candidateValid);
 
   // The union, thinned again; existing isopoints come first and so win their voxels.
   IsopointSet all = out;

@@ -21,6 +21,9 @@ struct IsopointSettings
   double CellSize = 0.5;      // completion cells and the minimum spacing of output points
   int CompletionHalfCells = 2; // a 5 x 5 grid of cells around each isopoint
   NewtonSettings Newton;
+  // The normal is the gradient of a wider fit (this many times n + 1 samples) at the refined
+  // point: phi is noisy at the sample scale, and a 27-sample fit gave ~20 degree errors.
+  int NormalFitScale = 4;
 };
 
 struct IsopointSet
@@ -40,7 +43,9 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
 class MLSEvaluator
 {
 public:
-  MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values);
+  /// `count`: how many nearest samples enter the fit (0: the neighbourhood size, n + 1).
+  MLSEvaluator(
+    const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count = 0);
   bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
 
 private:
