@@ -3,11 +3,9 @@
 // ParaView 5.11, which cannot read appended-mode XML).
 //   LevelSetGenerateData one-component|multi-component SAMPLES OUTPUT.vtp [RANDOM_SEED]
 #include "SyntheticCases.h"
+#include "SyntheticParticles.h"
 
-#include "vtkDoubleArray.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -42,20 +40,7 @@ int main(int argc, char* argv[])
   const std::size_t count = std::strtoull(argv[2], nullptr, 10);
   const std::uint64_t seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
   const auto samples = lsi::cases::UniformSamples(*c, count, seed);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(count));
-  vtkNew<vtkDoubleArray> f;
-  f->SetName("f");
-  f->SetNumberOfValues(static_cast<vtkIdType>(count));
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), samples[i].data());
-    f->SetValue(static_cast<vtkIdType>(i), c->Value(samples[i]));
-  }
-  vtkNew<vtkPolyData> data;
-  data->SetPoints(points);
-  data->GetPointData()->SetScalars(f);
+  vtkSmartPointer<vtkPolyData> data = lsi::cases::MakeParticles(*c, samples);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(data);
   writer->SetDataModeToBinary();

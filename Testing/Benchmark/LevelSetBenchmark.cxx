@@ -4,6 +4,7 @@
 // fails when an accuracy threshold is missed.
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
+#include "SyntheticParticles.h"
 #include "vtkLevelSetIsosurface.h"
 
 #include "vtkDoubleArray.h"
@@ -92,25 +93,6 @@ std::unique_ptr<Case> MakeCase(const std::string& name)
   return nullptr;
 }
 
-vtkNew<vtkPolyData> MakeParticles(const Case& c, const std::vector<Eigen::Vector3d>& samples)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(samples.size()));
-  vtkNew<vtkDoubleArray> f;
-  f->SetName("f");
-  f->SetNumberOfValues(static_cast<vtkIdType>(samples.size()));
-  for (std::size_t i = 0; i < samples.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), samples[i].data());
-    f->SetValue(static_cast<vtkIdType>(i), c.Value(samples[i]));
-  }
-  vtkNew<vtkPolyData> particles;
-  particles->SetPoints(points);
-  particles->GetPointData()->SetScalars(f);
-  return particles;
-}
-
 void Configure(vtkLevelSetIsosurface* filter, const Case& c, const Options& o)
 {
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
@@ -178,7 +160,7 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const std::vector<Eigen::Vector3d> samples = UniformSamples(*c, o.Samples, o.Seed);
-  vtkNew<vtkPolyData> particles = MakeParticles(*c, samples);
+  vtkSmartPointer<vtkPolyData> particles = MakeParticles(*c, samples);
   const Eigen::Vector3d box = c->BoxMax - c->BoxMin;
   const double spacing = std::cbrt(box.prod() / static_cast<double>(o.Samples));
 
