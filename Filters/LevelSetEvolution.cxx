@@ -170,18 +170,23 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   std::vector<char> atInterface(this->Region.size(), 0);
   ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    bool crossing = false;
-    for (std::size_t m = 1; m < stride && !crossing; ++m)
+    const Eigen::Vector3d xi(this->Geometry.Position(i));
+    double opposite = HUGE_VAL;
+    for (std::size_t m = 1; m < stride; ++m)
     {
-      crossing = Positive(this->Phi[ids[m]]) != Positive(this->Phi[i]);
+      if (Positive(this->Phi[ids[m]]) != Positive(this->Phi[i]))
+      {
+        opposite = std::min(
+          opposite, (Eigen::Vector3d(this->Geometry.Position(ids[m])) - xi).norm());
+      }
     }
-    if (crossing)
+    if (opposite < HUGE_VAL)
     {
       atInterface[k] = 1;
       const double norm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
         [&](std::size_t m) { return this->Phi[ids[m]]; })
                             .norm();
-      this->NewValues[k] = InterfaceDistance(this->Phi[i], norm);
+      this->NewValues[k] = InterfaceDistance(this->Phi[i], norm, opposite);
     }
   });
   for (std::size_t k = 0; k < this->Region.size(); ++k)

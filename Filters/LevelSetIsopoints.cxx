@@ -265,26 +265,57 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
 
 namespace
 {
-// A sample whose sign of phi differs from all of its neighbours' encloses no resolvable
-// surface (a pocket smaller than the sampling): give it its neighbours' mean, so that Newton's
-// method is not drawn to a spurious zero around it.
-std::vector<double> WithoutIsolatedSigns(const Neighborhoods& geometry, std::vector<double> phi)
+std::uint32_t Root(std::vector<std::uint32_t>& parent, std::uint32_t i)
 {
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+// A connected region of samples with one sign of phi (over the neighbour graph) in which no
+// sample has that sign in the data (say phi <= 0 everywhere but f > f_iso everywhere) cannot
+// hold a piece of the isosurface: it is a pocket the front left behind. Flip its sign, so
+// that Newton's method is not drawn to spurious zeros around it.
+std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
+  const std::vector<double>& dataSign, std::vector<double> phi)
+{
+  const std::size_t n = geometry.NumberOfSamples;
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  const std::vector<double> original = phi;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (std::size_t i = 0; i < n; ++i)
   {
     const std::uint32_t* ids = geometry.NeighborsOf(i);
-    bool isolated = true;
-    double sum = 0.0;
-    for (std::size_t m = 1; m < stride && isolated; ++m)
+    for (std::size_t m = 1; m < stride; ++m)
     {
-      isolated = (original[ids[m]] > 0.0) != (original[i] > 0.0);
-      sum += original[ids[m]];
+      if ((phi[ids[m]] > 0.0) == (phi[i] > 0.0))
+      {
+        const std::uint32_t a = Root(parent, static_cast<std::uint32_t>(i));
+        const std::uint32_t b = Root(parent, ids[m]);
+        if (a != b)
+        {
+          parent[std::max(a, b)] = std::min(a, b);
+        }
+      }
     }
-    if (isolated)
+  }
+  // A region is genuine if any of its samples agrees with the data.
+  std::vector<char> agrees(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if ((phi[i] > 0.0) == (dataSign[i] > 0.0))
     {
-      phi[i] = sum / static_cast<double>(stride - 1);
+      agrees[Root(parent, static_cast<std::uint32_t>(i))] = 1;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!agrees[Root(parent, static_cast<std::uint32_t>(i))])
+    {
+      phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12);
     }
   }
   return phi;
@@ -292,10 +323,11 @@ std::vector<double> WithoutIsolatedSigns(const Neighborhoods& geometry, std::vec
 } // namespace
 
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& evolvedPhi,
-  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
+  const std::vector<double>& dataSign, const IsopointSettings& settings, IsopointSet& out,
+  const AbortCheck& aborted)
 {
   out = IsopointSet();
-  const std::vector<double> phi = WithoutIsolatedSigns(geometry, evolvedPhi);
+  const std::vector<double> phi = WithoutSpuriousPockets(geometry, dataSign, evolvedPhi);
   std::vector<double> points, normals;
   RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
   out.RoughCount = points.size() / 3;

@@ -34,9 +34,11 @@ struct IsopointSet
   std::size_t CompletedCount = 0; // points added by completion (after thinning)
 };
 
-/// Returns false only when aborted.
+/// `dataSign` is sgn(f - f_iso) per sample (used to discard pockets of phi that no sample's data
+/// supports). Returns false only when aborted.
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
-  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+  const std::vector<double>& dataSign, const IsopointSettings& settings, IsopointSet& out,
+  const AbortCheck& aborted);
 
 /// Value and gradient at p of the MLS linear fit of per-sample values over the samples nearest
 /// to p. Holds scratch space: use one per thread.

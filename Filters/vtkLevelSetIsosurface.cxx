@@ -405,9 +405,9 @@ bool vtkLevelSetIsosurface::Execute(
   isopointSettings.Completion = this->Completion;
   isopointSettings.CellSize = 0.5 * spacing;
   isopointSettings.Newton.Tolerance = 1e-4 * spacing;
-  isopointSettings.Newton.MaximumDistance = 2.0 * spacing;
+  isopointSettings.Newton.MaximumDistance = 1.0 * spacing;
   lsi::IsopointSet isopoints;
-  if (!lsi::ExtractIsopoints(geometry, phi, isopointSettings, isopoints, aborted))
+  if (!lsi::ExtractIsopoints(geometry, phi, dataSign, isopointSettings, isopoints, aborted))
   {
     return false;
   }

@@ -83,7 +83,7 @@ public:
 
   ///@{
   /** Width eps of the smoothed delta and sign of the main term (band: |phi| < 2 eps).
-   * 0 (default): automatic, 1.5 x the mean sample spacing. */
+   * 0 (default): automatic, 2.5 x the mean sample spacing. */
   vtkSetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Epsilon, double);
   ///@}

@@ -100,10 +100,14 @@ inline double ReinitializedValue(
 
 /// Distance of a sample next to the interface (a neighbour has the other sign), held fixed
 /// during reinitialisation so that the zero level does not move: phi0 / |grad phi0| (first-order
-/// estimate; Russo and Smereka's subcell fix). Keeps phi0 if the gradient is too flat to trust.
-inline double InterfaceDistance(double phi0, double gradientNorm)
+/// estimate; Russo and Smereka's subcell fix), or phi0 if the gradient is too flat to trust.
+/// The zero lies between the sample and its nearest neighbour of the other sign, so the
+/// distance is at most `oppositeDistance`: a stale value stranded among samples of the other
+/// sign is pulled to the interface instead of being held.
+inline double InterfaceDistance(double phi0, double gradientNorm, double oppositeDistance)
 {
-  return gradientNorm > 0.1 ? phi0 / gradientNorm : phi0;
+  const double d = gradientNorm > 0.1 ? phi0 / gradientNorm : phi0;
+  return std::abs(d) <= oppositeDistance ? d : (d < 0.0 ? -oppositeDistance : oppositeDistance);
 }
 
 /// The quantity the paper's MG/AG statistics average: max(|g|, 1/|g|) (1 for a distance).

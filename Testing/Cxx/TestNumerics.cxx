@@ -219,7 +219,9 @@ void TestReinitialization()
   s = lsi::SteepestUpwindSlope(-9.0, 2, neighbors(-4.0, -10.0));
   const double negative = lsi::ReinitializedValue(-9.0, -9.0, s, 1.0, 100.0);
   Check(negative > -9.0 && negative <= -4.0, "negative side mirrors");
-  Check(lsi::InterfaceDistance(0.6, 2.0) == 0.3, "interface distance phi / |grad phi|");
+  Check(lsi::InterfaceDistance(0.6, 2.0, 1.0) == 0.3, "interface distance phi / |grad phi|");
+  Check(lsi::InterfaceDistance(-28.0, 1.0, 2.5) == -2.5,
+    "interface distance at most the distance to the other side");
 }
 
 void TestIsopoints()
