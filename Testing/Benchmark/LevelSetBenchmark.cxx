@@ -253,7 +253,7 @@ int main(int argc, char* argv[])
       "mean distance " + std::to_string(m.MeanDistance) + " > " +
         std::to_string(o.CheckMeanDistance) + " x spacing " + std::to_string(spacing));
     check(m.MaxNormalLengthError < 1e-5, "normals are not unit vectors");
-    check(m.MeanNormalAngleDegrees < 12.0, "normals deviate from the exact outward normal by more than 12 degrees on average");
+    check(m.MeanNormalAngleDegrees < 8.0, "normals deviate from the exact outward normal by more than 8 degrees on average");
   }
   if (o.CheckCoverage > 0.0)
   {
