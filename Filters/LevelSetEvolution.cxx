@@ -97,7 +97,7 @@ void LevelSetEvolution::ComputeGradients(
   });
 }
 
-std::size_t LevelSetEvolution::Evolve(const EvolutionSettings& settings)
+void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
 {
   const EvolutionCoefficients& c = settings.Coefficients;
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
@@ -140,17 +140,13 @@ std::size_t LevelSetEvolution::Evolve(const EvolutionSettings& settings)
       EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);
   });
 
-  std::size_t signChanges = 0;
   for (std::size_t k = 0; k < this->Band.size(); ++k)
   {
-    double& phi = this->Phi[this->Band[k]];
-    signChanges += Positive(phi) != Positive(this->NewValues[k]);
-    phi = this->NewValues[k];
+    this->Phi[this->Band[k]] = this->NewValues[k];
   }
-  return signChanges;
 }
 
-std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
+void LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
 {
   const EvolutionCoefficients& c = settings.Coefficients;
   // Only where it matters: the band plus a margin, so that samples about to enter the band
@@ -165,19 +161,22 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   {
     initial[k] = this->Phi[this->Region[k]];
   }
+  auto distance = [&](std::size_t i, std::uint32_t j) {
+    return (Eigen::Vector3d(this->Geometry.Position(i)) -
+      Eigen::Vector3d(this->Geometry.Position(j)))
+      .norm();
+  };
   // Samples with a neighbour of the other sign hold the interface: fix them at their
   // first-order distance; the others are updated by upwind steps.
   std::vector<char> atInterface(this->Region.size(), 0);
   ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    const Eigen::Vector3d xi(this->Geometry.Position(i));
     double opposite = HUGE_VAL;
     for (std::size_t m = 1; m < stride; ++m)
     {
       if (Positive(this->Phi[ids[m]]) != Positive(this->Phi[i]))
       {
-        opposite = std::min(
-          opposite, (Eigen::Vector3d(this->Geometry.Position(ids[m])) - xi).norm());
+        opposite = std::min(opposite, distance(i, ids[m]));
       }
     }
     if (opposite < HUGE_VAL)
@@ -205,11 +204,10 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
         return;
       }
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const Eigen::Vector3d xi(this->Geometry.Position(i));
       const UpwindSlope slope = SteepestUpwindSlope(
-        this->Phi[i], stride, [&](std::size_t m, double& value, double& distance) {
+        this->Phi[i], stride, [&](std::size_t m, double& value, double& length) {
           value = this->Phi[ids[m]];
-          distance = (Eigen::Vector3d(this->Geometry.Position(ids[m])) - xi).norm();
+          length = distance(i, ids[m]);
         });
       this->NewValues[k] = ReinitializedValue(
         this->Phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
@@ -219,12 +217,7 @@ std::size_t LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
       this->Phi[this->Region[k]] = this->NewValues[k];
     }
   }
-  std::size_t signChanges = 0;
-  for (std::size_t k = 0; k < this->Region.size(); ++k)
-  {
-    signChanges += Positive(initial[k]) != Positive(this->Phi[this->Region[k]]);
-  }
-  return signChanges;
+
 }
 
 void LevelSetEvolution::Measure(IterationRecord& record)
@@ -326,11 +319,11 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     const auto start = std::chrono::steady_clock::now();
     IterationRecord record;
     record.Iteration = iteration;
-    record.SignChanges = this->Evolve(settings);
+    this->Evolve(settings);
     record.BandSize = this->Band.size();
     if (settings.Method == Scheme::WithReinitialization && settings.ReinitializationSteps > 0)
     {
-      record.SignChanges += this->Reinitialize(settings);
+      this->Reinitialize(settings);
     }
     // First-time sign changes: scan the samples that may have changed (band and its region).
     for (const std::vector<std::size_t>* touched : { &this->Band, &this->Region })

@@ -48,8 +48,7 @@ struct IterationRecord
   double MaxGradientDeviation = 0.0;  // MG over the zero crossings
   double MeanGradientDeviation = 0.0; // AG over the zero crossings
   std::size_t BandSize = 0;           // samples updated
-  std::size_t SignChanges = 0;        // samples whose sign of phi changed this iteration
-  std::size_t FirstSignChanges = 0;   // of those, samples that had never changed sign before
+  std::size_t FirstSignChanges = 0;   // samples whose sign changed for the first time
   double Seconds = 0.0;
 };
 
@@ -71,8 +70,8 @@ private:
   void CollectWhere(double halfWidth, std::vector<std::size_t>& out) const;
   void CollectWithNeighbors(const std::vector<std::size_t>& core, std::vector<std::size_t>& out);
   void ComputeGradients(const std::vector<std::size_t>& where, const std::vector<double>& values);
-  std::size_t Evolve(const EvolutionSettings& settings);
-  std::size_t Reinitialize(const EvolutionSettings& settings);
+  void Evolve(const EvolutionSettings& settings);
+  void Reinitialize(const EvolutionSettings& settings);
   void Measure(IterationRecord& record);
 
   const Neighborhoods& Geometry;

@@ -121,14 +121,14 @@ void RefineCandidates(const Neighborhoods& geometry, const std::vector<double>& 
       Eigen::Vector3d p(&points[3 * i]);
       Eigen::Vector3d gradient;
       valid[i] = ProjectOntoZeroLevel(p, gradient, *evaluator, newton);
-      double value;
-      Eigen::Vector3d wide;
-      if (valid[i] && (*normalEvaluator)(p, value, wide) && wide.squaredNorm() > 0.0)
-      {
-        gradient = wide;
-      }
       if (valid[i])
       {
+        double value;
+        Eigen::Vector3d wide;
+        if ((*normalEvaluator)(p, value, wide) && wide.squaredNorm() > 0.0)
+        {
+          gradient = wide;
+        }
         const Eigen::Vector3d n = -gradient.normalized();
         for (int d = 0; d < 3; ++d)
         {
