@@ -308,9 +308,7 @@ bool vtkLevelSetIsosurface::Execute(
     this->CurvatureEpsilon > 0.0 ? this->CurvatureEpsilon : settings.Coefficients.Epsilon;
   settings.Coefficients.TimeStep = this->TimeStep > 0.0
     ? this->TimeStep
-    : lsi::ChooseParameters(settings.Coefficients.Epsilon / lsi::EpsilonPerSpacing,
-        this->CurvatureWeight)
-        .TimeStep;
+    : lsi::AutomaticTimeStep(settings.Coefficients.Epsilon, this->CurvatureWeight);
   settings.Coefficients.CurvatureWeight = this->CurvatureWeight;
   settings.Method = this->EvolutionScheme == VARIATIONAL_WITHOUT_REINITIALIZATION
     ? lsi::Scheme::WithoutReinitialization

@@ -35,16 +35,19 @@ struct AutomaticChoice
 constexpr double EpsilonPerSpacing = 2.5;
 constexpr double TimeStepPerEpsilonSquared = 0.45;
 
+/// dt for a given eps: TimeStepPerEpsilonSquared eps^2, limited so that lambda dt <= 0.4.
+inline double AutomaticTimeStep(double epsilon, double curvatureWeight)
+{
+  const double dt = TimeStepPerEpsilonSquared * epsilon * epsilon;
+  return curvatureWeight > 0.0 && curvatureWeight * dt > 0.4 ? 0.4 / curvatureWeight : dt;
+}
+
 inline AutomaticChoice ChooseParameters(double spacing, double curvatureWeight)
 {
   AutomaticChoice c;
   c.Epsilon = EpsilonPerSpacing * spacing;
   c.CurvatureEpsilon = c.Epsilon;
-  c.TimeStep = TimeStepPerEpsilonSquared * c.Epsilon * c.Epsilon;
-  if (curvatureWeight > 0.0 && curvatureWeight * c.TimeStep > 0.4)
-  {
-    c.TimeStep = 0.4 / curvatureWeight;
-  }
+  c.TimeStep = AutomaticTimeStep(c.Epsilon, curvatureWeight);
   c.ReinitializationTimeStep = 0.5 * spacing;
   return c;
 }
