@@ -2,11 +2,15 @@
 
 #include "AutomaticParameters.h"
 #include "MovingLeastSquares.h"
+#include "SpatialOrder.h"
 
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 
 namespace lsi
@@ -43,6 +47,47 @@ bool ArrangeRow(std::uint32_t self, std::uint32_t* ids, double* d2, int stride)
 }
 } // namespace
 
+namespace
+{
+double SecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Fills out.Order and out.Positions: the points sorted by Morton key over their bounding box.
+void SortSpatially(vtkPoints* points, Neighborhoods& out)
+{
+  const std::size_t n = out.NumberOfSamples;
+  double bounds[6];
+  points->GetBounds(bounds);
+  const double lower[3] = { bounds[0], bounds[2], bounds[4] };
+  double size[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    size[k] = std::max(bounds[2 * k + 1] - bounds[2 * k], 1e-300);
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double x[3];
+      points->GetPoint(i, x);
+      keys[i] = { MortonKey(x, lower, size), static_cast<std::uint32_t>(i) };
+    }
+  });
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+  out.Order.resize(n);
+  out.Positions.resize(3 * n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      out.Order[i] = keys[i].second;
+      points->GetPoint(keys[i].second, &out.Positions[3 * i]);
+    }
+  });
+}
+} // namespace
+
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted)
 {
@@ -51,16 +96,15 @@ bool BuildNeighborhoods(
   out = Neighborhoods();
   out.NumberOfSamples = n;
   out.Stride = stride;
-  out.Positions.resize(3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    points->GetPoint(static_cast<vtkIdType>(i), &out.Positions[3 * i]);
-  }
+  auto start = std::chrono::steady_clock::now();
+  SortSpatially(points, out);
+  out.SortSeconds = SecondsSince(start);
+
+  // Nearest neighbours, queried in Morton order (consecutive queries walk the same tree nodes).
+  start = std::chrono::steady_clock::now();
   out.Index.reset(new PointCloudIndex(out.Positions.data(), n));
   out.Ids.resize(n * stride);
   out.Radius.resize(n);
-  out.GradientStencil.resize(3 * n * stride);
-
   std::atomic<std::size_t> duplicates(0), singular(0);
   std::atomic<long long> firstDuplicate(-1), firstSingular(-1);
   auto remember = [](std::atomic<long long>& first, long long i) {
@@ -69,50 +113,57 @@ bool BuildNeighborhoods(
     {
     }
   };
-
-  struct Scratch
-  {
-    std::vector<double> D2, Stencil;
-  };
-  vtkSMPThreadLocal<Scratch> scratch;
-  const bool completed = ParallelForInBlocks(
+  vtkSMPThreadLocal<std::vector<double>> distances;
+  bool completed = ParallelForInBlocks(
     n,
     [&](std::size_t begin, std::size_t end) {
-      Scratch& s = scratch.Local();
-      s.D2.resize(stride);
-      s.Stencil.resize(3 * stride);
+      std::vector<double>& d2 = distances.Local();
+      d2.resize(stride);
       for (std::size_t i = begin; i < end; ++i)
       {
         std::uint32_t* ids = &out.Ids[i * stride];
-        out.Index->Nearest(out.Position(i), stride, ids, s.D2.data());
-        if (ArrangeRow(static_cast<std::uint32_t>(i), ids, s.D2.data(), stride))
+        out.Index->Nearest(out.Position(i), stride, ids, d2.data());
+        if (ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride))
         {
           ++duplicates;
-          remember(firstDuplicate, static_cast<long long>(i));
+          remember(firstDuplicate, out.Order[i]);
         }
-        double h2 = 0.0;
-        for (int k = 0; k < stride; ++k)
-        {
-          h2 = std::max(h2, s.D2[k]);
-        }
-        out.Radius[i] = std::sqrt(h2);
-        const bool ok = BuildLinearStencil(
-          out.Position(i), static_cast<std::size_t>(stride),
-          [&](std::size_t k) { return out.Position(ids[k]); }, out.Radius[i],
-          LinearStencilView{ s.Stencil.data(), nullptr });
-        if (!ok)
-        {
-          ++singular;
-          remember(firstSingular, static_cast<long long>(i));
-        }
-        float* stencil = &out.GradientStencil[3 * i * stride];
-        for (int k = 0; k < 3 * stride; ++k)
-        {
-          stencil[k] = static_cast<float>(s.Stencil[k]);
-        }
+        out.Radius[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
       }
     },
     aborted);
+  out.SearchSeconds = SecondsSince(start);
+  if (!completed)
+  {
+    return false;
+  }
+
+  // MLS gradient stencils (positions only, so reused for every level set).
+  start = std::chrono::steady_clock::now();
+  out.GradientStencil.resize(3 * n * stride);
+  vtkSMPThreadLocal<std::vector<double>> scratch;
+  completed = ParallelForInBlocks(
+    n,
+    [&](std::size_t begin, std::size_t end) {
+      std::vector<double>& stencil = scratch.Local();
+      stencil.resize(3 * stride);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const std::uint32_t* ids = out.NeighborsOf(i);
+        const bool ok = BuildLinearStencil(
+          out.Position(i), static_cast<std::size_t>(stride),
+          [&](std::size_t k) { return out.Position(ids[k]); }, out.Radius[i],
+          LinearStencilView{ stencil.data(), nullptr });
+        if (!ok)
+        {
+          ++singular;
+          remember(firstSingular, out.Order[i]);
+        }
+        std::copy(stencil.begin(), stencil.end(), &out.GradientStencil[3 * i * stride]);
+      }
+    },
+    aborted);
+  out.StencilSeconds = SecondsSince(start);
   if (!completed)
   {
     return false;

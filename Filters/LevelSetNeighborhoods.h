@@ -22,6 +22,9 @@ struct Neighborhoods
   std::size_t NumberOfSamples = 0;
   int Stride = 0; // entries per sample: the sample itself (slot 0) and its n neighbours
 
+  // Samples are stored in Morton order (SpatialOrder.h), so that neighbours are near in memory.
+  // Every index below is an index in that order; Order maps it back to the input point id.
+  std::vector<std::uint32_t> Order;
   std::vector<double> Positions;        // 3 per sample
   std::vector<std::uint32_t> Ids;       // Stride per sample
   std::vector<double> Radius;           // h_i: distance to the farthest neighbour
@@ -31,7 +34,10 @@ struct Neighborhoods
   double MeanSpacing = 0.0;     // mean of the local spacings (AutomaticParameters.h)
   double MeanRadius = 0.0;      // mean h_i
 
-  // Problems found while building; the filter turns them into error messages.
+  // Seconds spent on each part of the build.
+  double SortSeconds = 0.0, SearchSeconds = 0.0, StencilSeconds = 0.0;
+
+  // Problems found while building (sample ids are input point ids); the filter turns them into error messages.
   std::size_t DuplicateSamples = 0;
   long long FirstDuplicate = -1;
   std::size_t SingularSamples = 0;

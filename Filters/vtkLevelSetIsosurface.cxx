@@ -278,12 +278,15 @@ bool vtkLevelSetIsosurface::Execute(
     cache.NumberOfPoints = n;
     cache.NumberOfNeighbors = this->NumberOfNeighbors;
     this->NeighborSearchSeconds = SecondsSince(start);
+    this->SpatialSortSeconds = cache.Geometry.SortSeconds;
+    this->NearestNeighborSeconds = cache.Geometry.SearchSeconds;
+    this->StencilSeconds = cache.Geometry.StencilSeconds;
   }
   const lsi::Neighborhoods& geometry = cache.Geometry;
   if (geometry.DuplicateSamples > 0)
   {
     vtkErrorMacro("The input has " << geometry.DuplicateSamples
-                                   << " points that coincide with another point (first: point "
+                                   << " points that coincide with another point (for example point "
                                    << geometry.FirstDuplicate
                                    << "). Merge duplicate points first, e.g. with Clean.");
     return false;
@@ -291,7 +294,7 @@ bool vtkLevelSetIsosurface::Execute(
   if (geometry.SingularSamples > 0)
   {
     vtkErrorMacro("The MLS fit is singular at "
-      << geometry.SingularSamples << " points (first: point " << geometry.FirstSingular
+      << geometry.SingularSamples << " points (for example point " << geometry.FirstSingular
       << "): their neighbourhoods are collinear or coplanar. The method needs volume (3D) "
          "samples; try more NumberOfNeighbors.");
     return false;
@@ -372,7 +375,7 @@ bool vtkLevelSetIsosurface::Execute(
   std::vector<double> dataSign(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    dataSign[i] = lsi::Sign(values[i] - this->IsoValue);
+    dataSign[i] = lsi::Sign(values[geometry.Order[i]] - this->IsoValue);
   }
 
   // --- Evolution --------------------------------------------------------------------------
@@ -435,7 +438,10 @@ bool vtkLevelSetIsosurface::Execute(
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
-  std::copy(phi.begin(), phi.end(), levelSet->GetPointer(0));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    levelSet->SetValue(geometry.Order[i], phi[i]); // back from Morton order to input order
+  }
   particleOutput->GetPointData()->AddArray(levelSet);
 
   table->ShallowCopy(rows);

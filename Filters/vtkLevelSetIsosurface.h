@@ -172,7 +172,10 @@ public:
   vtkGetMacro(EffectiveEpsilon, double);
   vtkGetMacro(EffectiveCurvatureEpsilon, double);
   vtkGetMacro(EffectiveTimeStep, double);
-  vtkGetMacro(NeighborSearchSeconds, double);
+  vtkGetMacro(NeighborSearchSeconds, double); // the sum of the next three
+  vtkGetMacro(SpatialSortSeconds, double);
+  vtkGetMacro(NearestNeighborSeconds, double);
+  vtkGetMacro(StencilSeconds, double);
   vtkGetMacro(EvolutionSeconds, double);
   vtkGetMacro(IsopointSeconds, double);
   ///@}
@@ -210,6 +213,9 @@ protected:
   double EffectiveCurvatureEpsilon = 0.0;
   double EffectiveTimeStep = 0.0;
   double NeighborSearchSeconds = 0.0;
+  double SpatialSortSeconds = 0.0;
+  double NearestNeighborSeconds = 0.0;
+  double StencilSeconds = 0.0;
   double EvolutionSeconds = 0.0;
   double IsopointSeconds = 0.0;
 

@@ -190,7 +190,9 @@ int main(int argc, char* argv[])
             << filter->GetEffectiveCurvatureEpsilon() << ", " << filter->GetEffectiveTimeStep()
             << "\niterations: " << iterations << (filter->GetConverged() ? " (converged)" : " (limit)")
             << "\nseconds total: " << total << "\nseconds neighbours: "
-            << filter->GetNeighborSearchSeconds() << "\nseconds evolution: "
+            << filter->GetNeighborSearchSeconds() << " (sort " << filter->GetSpatialSortSeconds()
+            << ", nearest " << filter->GetNearestNeighborSeconds() << ", stencils "
+            << filter->GetStencilSeconds() << ")\nseconds evolution: "
             << filter->GetEvolutionSeconds() << "\nseconds per iteration: "
             << (iterations ? filter->GetEvolutionSeconds() / iterations : 0.0)
             << "\nseconds isopoints: " << filter->GetIsopointSeconds()
