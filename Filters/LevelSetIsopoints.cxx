@@ -8,6 +8,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -265,6 +266,32 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
 
 namespace
 {
+// Neighbouring isopoints propose the same empty cells: before the costly refinement, keep one
+// proposal per voxel, and none in a voxel that an isopoint already occupies.
+void DropProposalsInOccupiedVoxels(const IsopointSet& current, double cell,
+  const std::vector<double>& candidates, std::vector<char>& valid)
+{
+  const std::size_t existing = current.Points.size() / 3;
+  std::vector<double> all(current.Points);
+  std::vector<std::size_t> candidateOf;
+  for (std::size_t c = 0; c < valid.size(); ++c)
+  {
+    if (valid[c])
+    {
+      all.insert(all.end(), &candidates[3 * c], &candidates[3 * c + 3]);
+      candidateOf.push_back(c);
+    }
+  }
+  std::fill(valid.begin(), valid.end(), 0);
+  for (std::size_t k : ThinByVoxels(all, cell)) // existing points come first and win
+  {
+    if (k >= existing)
+    {
+      valid[candidateOf[k - existing]] = 1;
+    }
+  }
+}
+
 std::uint32_t Root(std::vector<std::uint32_t>& parent, std::uint32_t i)
 {
   while (parent[i] != i)
@@ -331,7 +358,12 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   std::vector<double> points, normals;
   RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
   out.RoughCount = points.size() / 3;
-  std::vector<char> valid(out.RoughCount, 1);
+  // Many crossings lie within one voxel: refine one per voxel only.
+  std::vector<char> valid(out.RoughCount, 0);
+  for (std::size_t k : ThinByVoxels(points, settings.CellSize))
+  {
+    valid[k] = 1;
+  }
   if (aborted && aborted())
   {
     return false;
@@ -353,9 +385,11 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   {
     return false;
   }
+  const auto completionStart = std::chrono::steady_clock::now();
   std::vector<double> candidates, candidateNormals;
   std::vector<char> candidateValid;
   CompletionCandidates(out, settings, candidates, candidateValid);
+  DropProposalsInOccupiedVoxels(out, settings.CellSize, candidates, candidateValid);
   NewtonSettings newton = settings.Newton;
   newton.MaximumDistance = 2.0 * settings.CellSize; // stay near the cell it was proposed for
   RefineCandidates(geometry, phi, newton, settings.NormalFitScale, candidates, candidateNormals,
@@ -370,6 +404,8 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   result.RoughCount = out.RoughCount;
   AppendSelected(all.Points, all.Normals, kept, result);
   result.CompletedCount = result.Points.size() / 3 - std::min(before, result.Points.size() / 3);
+  result.CompletionSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - completionStart).count();
   out = std::move(result);
   return true;
 }

@@ -32,6 +32,7 @@ struct IsopointSet
   std::vector<double> Normals; // 3 per isopoint: unit, pointing out of {phi > 0}
   std::size_t RoughCount = 0;     // zero crossings accepted by the angle criterion
   std::size_t CompletedCount = 0; // points added by completion (after thinning)
+  double CompletionSeconds = 0.0;
 };
 
 /// `dataSign` is sgn(f - f_iso) per sample (used to discard pockets of phi that no sample's data

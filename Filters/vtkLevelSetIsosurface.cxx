@@ -413,6 +413,7 @@ bool vtkLevelSetIsosurface::Execute(
     return false;
   }
   this->IsopointSeconds = SecondsSince(start);
+  this->CompletionSeconds = isopoints.CompletionSeconds;
 
   // --- Outputs ----------------------------------------------------------------------------
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);

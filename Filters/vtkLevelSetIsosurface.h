@@ -177,7 +177,8 @@ public:
   vtkGetMacro(NearestNeighborSeconds, double);
   vtkGetMacro(StencilSeconds, double);
   vtkGetMacro(EvolutionSeconds, double);
-  vtkGetMacro(IsopointSeconds, double);
+  vtkGetMacro(IsopointSeconds, double); // includes the completion
+  vtkGetMacro(CompletionSeconds, double);
   ///@}
 
 protected:
@@ -218,6 +219,7 @@ protected:
   double StencilSeconds = 0.0;
   double EvolutionSeconds = 0.0;
   double IsopointSeconds = 0.0;
+  double CompletionSeconds = 0.0;
 
 private:
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
