@@ -86,6 +86,7 @@ void LevelSetEvolution::ComputeGradients(
   const std::vector<std::size_t>& where, const std::vector<double>& values)
 {
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  this->Geometry.EnsureStencils(where);
   ForEachIn(where, [&](std::size_t, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
     const Eigen::Vector3d g = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
@@ -154,6 +155,7 @@ void LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   // to the region are repaired as the front approaches them.
   this->CollectWhere(ReinitializationHalfWidth(settings, this->Geometry), this->Scratch);
   this->CollectWithNeighbors(this->Scratch, this->Region);
+  this->Geometry.EnsureStencils(this->Region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
   this->NewValues.resize(this->Region.size());
   std::vector<double> initial(this->Region.size());

@@ -169,6 +169,24 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
       front.push_back(i);
     }
   }
+  {
+    // The angle criterion needs gradients on the front and at its negative neighbours.
+    std::vector<char> needed(n, 0);
+    std::vector<std::size_t> list;
+    for (std::size_t i : front)
+    {
+      const std::uint32_t* ids = geometry.NeighborsOf(i);
+      for (std::size_t m = 0; m < stride; ++m)
+      {
+        if ((m == 0 || phi[ids[m]] <= 0.0) && !needed[ids[m]])
+        {
+          needed[ids[m]] = 1;
+          list.push_back(ids[m]);
+        }
+      }
+    }
+    geometry.EnsureStencils(list);
+  }
   auto gradientAt = [&](std::size_t i) {
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     return ApplyGradientStencil(

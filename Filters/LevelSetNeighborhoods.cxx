@@ -86,7 +86,67 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
     }
   });
 }
+// Whether all positions lie on one plane or line (up to rounding): the smallest eigenvalue of
+// their covariance is negligible against the largest.
+bool IsFlat(const std::vector<double>& positions)
+{
+  const std::size_t n = positions.size() / 3;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    mean += Eigen::Vector3d(&positions[3 * i]);
+  }
+  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d(&positions[3 * i]) - mean;
+    covariance.noalias() += d * d.transpose();
+  }
+  const Eigen::Vector3d eigenvalues =
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)
+      .eigenvalues(); // increasing
+  return !(eigenvalues[0] > 1e-12 * eigenvalues[2]);
+}
 } // namespace
+
+void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count) const
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (this->StencilState[samples[k]] == 0)
+    {
+      missing.push_back(samples[k]);
+    }
+  }
+  const std::size_t stride = static_cast<std::size_t>(this->Stride);
+  vtkSMPThreadLocal<std::vector<double>> scratch;
+  vtkSMPThreadLocal<std::size_t> singular(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), [&](vtkIdType begin, vtkIdType end) {
+    std::vector<double>& stencil = scratch.Local();
+    stencil.resize(3 * stride);
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const std::size_t i = missing[k];
+      const std::uint32_t* ids = this->NeighborsOf(i);
+      const bool ok = BuildLinearStencil(this->Position(i), stride,
+        [&](std::size_t m) { return this->Position(ids[m]); }, this->Radius[i],
+        LinearStencilView{ stencil.data(), nullptr }); // zero when singular
+      std::copy(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride]);
+      this->StencilState[i] = ok ? 1 : 2;
+      singular.Local() += !ok;
+    }
+  });
+  for (std::size_t s : singular)
+  {
+    this->SingularSamples += s;
+  }
+  this->ComputedStencils += missing.size();
+  this->StencilSeconds +=
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted)
@@ -105,9 +165,9 @@ bool BuildNeighborhoods(
   out.Index.reset(new PointCloudIndex(out.Positions.data(), n));
   out.Ids.resize(n * stride);
   out.Radius.resize(n);
-  std::atomic<std::size_t> duplicates(0), singular(0);
-  std::atomic<long long> firstDuplicate(-1), firstSingular(-1);
-  auto remember = [](std::atomic<long long>& first, long long i) {
+  std::atomic<std::size_t> duplicates(0);
+  std::atomic<long long> firstDuplicate(-1);
+  auto remember = [](std::atomic<long long>& first, long long i) { // the smallest id wins
     long long expected = -1;
     while ((expected < 0 || i < expected) && !first.compare_exchange_weak(expected, i))
     {
@@ -138,40 +198,11 @@ bool BuildNeighborhoods(
     return false;
   }
 
-  // MLS gradient stencils (positions only, so reused for every level set).
-  start = std::chrono::steady_clock::now();
-  out.GradientStencil.resize(3 * n * stride);
-  vtkSMPThreadLocal<std::vector<double>> scratch;
-  completed = ParallelForInBlocks(
-    n,
-    [&](std::size_t begin, std::size_t end) {
-      std::vector<double>& stencil = scratch.Local();
-      stencil.resize(3 * stride);
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        const std::uint32_t* ids = out.NeighborsOf(i);
-        const bool ok = BuildLinearStencil(
-          out.Position(i), static_cast<std::size_t>(stride),
-          [&](std::size_t k) { return out.Position(ids[k]); }, out.Radius[i],
-          LinearStencilView{ stencil.data(), nullptr });
-        if (!ok)
-        {
-          ++singular;
-          remember(firstSingular, out.Order[i]);
-        }
-        std::copy(stencil.begin(), stencil.end(), &out.GradientStencil[3 * i * stride]);
-      }
-    },
-    aborted);
-  out.StencilSeconds = SecondsSince(start);
-  if (!completed)
-  {
-    return false;
-  }
+  out.GradientStencil.reset(new float[3 * n * stride]);
+  out.StencilState.assign(n, 0);
+  out.Flat = IsFlat(out.Positions);
   out.DuplicateSamples = duplicates;
   out.FirstDuplicate = firstDuplicate;
-  out.SingularSamples = singular;
-  out.FirstSingular = firstSingular;
   double sumRadius = 0.0;
   for (std::size_t i = 0; i < n; ++i)
   {

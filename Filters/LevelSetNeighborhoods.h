@@ -28,22 +28,37 @@ struct Neighborhoods
   std::vector<double> Positions;        // 3 per sample
   std::vector<std::uint32_t> Ids;       // Stride per sample
   std::vector<double> Radius;           // h_i: distance to the farthest neighbour
-  std::vector<float> GradientStencil;   // 3 * Stride per sample (float: halves the memory)
   std::unique_ptr<PointCloudIndex> Index;
+
+  // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
+  // the evolution only ever visits a band around the front, so most samples never need one.
+  // The storage is allocated but not initialised, so untouched pages cost no memory.
+  mutable std::unique_ptr<float[]> GradientStencil;
+  mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
+  mutable std::size_t ComputedStencils = 0;
 
   double MeanSpacing = 0.0;     // mean of the local spacings (AutomaticParameters.h)
   double MeanRadius = 0.0;      // mean h_i
 
   // Seconds spent on each part of the build.
-  double SortSeconds = 0.0, SearchSeconds = 0.0, StencilSeconds = 0.0;
+  double SortSeconds = 0.0, SearchSeconds = 0.0;
+  mutable double StencilSeconds = 0.0; // accumulated over EnsureStencils calls
 
   // Problems found while building (sample ids are input point ids); the filter turns them into error messages.
   std::size_t DuplicateSamples = 0;
   long long FirstDuplicate = -1;
-  std::size_t SingularSamples = 0;
-  long long FirstSingular = -1;
+  bool Flat = false; // all samples on one plane or line: no 3D fit anywhere
+  mutable std::size_t SingularSamples = 0; // among the stencils computed so far
 
   const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }
+  /// Computes the stencils that `samples` (count indices, no repeats) still lack, in parallel.
+  /// Call from the main thread between parallel loops.
+  void EnsureStencils(const std::size_t* samples, std::size_t count) const;
+  void EnsureStencils(const std::vector<std::size_t>& samples) const
+  {
+    this->EnsureStencils(samples.data(), samples.size());
+  }
+
   const float* StencilOf(std::size_t i) const
   {
     return &this->GradientStencil[3 * i * this->Stride];

@@ -280,7 +280,6 @@ bool vtkLevelSetIsosurface::Execute(
     this->NeighborSearchSeconds = SecondsSince(start);
     this->SpatialSortSeconds = cache.Geometry.SortSeconds;
     this->NearestNeighborSeconds = cache.Geometry.SearchSeconds;
-    this->StencilSeconds = cache.Geometry.StencilSeconds;
   }
   const lsi::Neighborhoods& geometry = cache.Geometry;
   if (geometry.DuplicateSamples > 0)
@@ -291,12 +290,10 @@ bool vtkLevelSetIsosurface::Execute(
                                    << "). Merge duplicate points first, e.g. with Clean.");
     return false;
   }
-  if (geometry.SingularSamples > 0)
+  if (geometry.Flat)
   {
-    vtkErrorMacro("The MLS fit is singular at "
-      << geometry.SingularSamples << " points (for example point " << geometry.FirstSingular
-      << "): their neighbourhoods are collinear or coplanar. The method needs volume (3D) "
-         "samples; try more NumberOfNeighbors.");
+    vtkErrorMacro("All input points lie on one plane or line, so the MLS fit is singular "
+                  "everywhere: the method needs volume (3D) samples.");
     return false;
   }
   this->UpdateProgress(0.2);
@@ -414,6 +411,13 @@ bool vtkLevelSetIsosurface::Execute(
   }
   this->IsopointSeconds = SecondsSince(start);
   this->CompletionSeconds = isopoints.CompletionSeconds;
+  this->StencilSeconds = geometry.StencilSeconds;
+  if (geometry.SingularSamples > 0)
+  {
+    vtkWarningMacro("The MLS fit was singular at " << geometry.SingularSamples
+      << " samples (neighbourhoods on a plane or line); their gradients were taken as zero. "
+         "More NumberOfNeighbors may help.");
+  }
 
   // --- Outputs ----------------------------------------------------------------------------
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);

@@ -172,10 +172,10 @@ public:
   vtkGetMacro(EffectiveEpsilon, double);
   vtkGetMacro(EffectiveCurvatureEpsilon, double);
   vtkGetMacro(EffectiveTimeStep, double);
-  vtkGetMacro(NeighborSearchSeconds, double); // the sum of the next three
+  vtkGetMacro(NeighborSearchSeconds, double); // spatial sort + nearest neighbours
   vtkGetMacro(SpatialSortSeconds, double);
   vtkGetMacro(NearestNeighborSeconds, double);
-  vtkGetMacro(StencilSeconds, double);
+  vtkGetMacro(StencilSeconds, double); // MLS stencils, computed on demand (all runs so far)
   vtkGetMacro(EvolutionSeconds, double);
   vtkGetMacro(IsopointSeconds, double); // includes the completion
   vtkGetMacro(CompletionSeconds, double);
