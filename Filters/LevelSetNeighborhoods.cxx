@@ -179,16 +179,26 @@ bool BuildNeighborhoods(
     [&](std::size_t begin, std::size_t end) {
       std::vector<double>& d2 = distances.Local();
       d2.resize(stride);
+      double previousRadius = 0.0;
       for (std::size_t i = begin; i < end; ++i)
       {
         std::uint32_t* ids = &out.Ids[i * stride];
-        out.Index->Nearest(out.Position(i), stride, ids, d2.data());
+        // The previous sample (its Morton neighbour) has about the same radius: search within
+        // a slightly larger one first, and without a bound only if that misses some.
+        const double bound = 1.44 * previousRadius * previousRadius;
+        if (!(bound > 0.0) ||
+          out.Index->NearestWithin(out.Position(i), stride, bound, ids, d2.data()) <
+            static_cast<std::size_t>(stride))
+        {
+          out.Index->Nearest(out.Position(i), stride, ids, d2.data());
+        }
         if (ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride))
         {
           ++duplicates;
           remember(firstDuplicate, out.Order[i]);
         }
         out.Radius[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
+        previousRadius = out.Radius[i];
       }
     },
     aborted);

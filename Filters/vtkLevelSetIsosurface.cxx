@@ -2,6 +2,7 @@
 
 #include "AutomaticParameters.h"
 #include "LevelSetEvolution.h"
+#include "LevelSetInitialization.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborhoods.h"
 
@@ -341,8 +342,9 @@ bool vtkLevelSetIsosurface::Execute(
       { this->SeedCenter[0], this->SeedCenter[1], this->SeedCenter[2], this->SeedRadius });
     spheres.insert(spheres.end(), this->AdditionalSeeds.begin(), this->AdditionalSeeds.end());
   }
+  start = Clock::now();
   std::vector<vtkIdType> samplesInSphere(spheres.size() / 4, 0);
-  std::vector<double> phi(n);
+  std::vector<double> phi(n), seedDistance(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const double* x = geometry.Position(i);
@@ -356,6 +358,7 @@ bool vtkLevelSetIsosurface::Execute(
       samplesInSphere[s / 4] += d > 0.0;
       seed = std::max(seed, d);
     }
+    seedDistance[i] = seed;
     phi[i] = std::min(seed, DistanceInsideBox(x, bounds));
   }
   for (std::size_t s = 0; s < samplesInSphere.size(); ++s)
@@ -374,6 +377,26 @@ bool vtkLevelSetIsosurface::Execute(
   {
     dataSign[i] = lsi::Sign(values[geometry.Order[i]] - this->IsoValue);
   }
+  if (this->Initialization == FLOOD)
+  {
+    std::vector<double> offsets(n);
+    std::vector<char> inSeed(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      offsets[i] = values[geometry.Order[i]] - this->IsoValue;
+      inSeed[i] = spheres.empty() || seedDistance[i] > 0.0;
+    }
+    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, offsets, inSeed,
+      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings, geometry),
+      phi);
+    if (flood.SeedSamples == 0)
+    {
+      vtkErrorMacro("No sample inside the seed sphere(s) has a value above IsoValue "
+        << this->IsoValue << ": there is nothing to flood. Move the seed into the object.");
+      return false;
+    }
+  }
+  this->InitializationSeconds = SecondsSince(start);
 
   // --- Evolution --------------------------------------------------------------------------
   start = Clock::now();
@@ -472,6 +495,7 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EvolutionScheme: " << this->EvolutionScheme << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+ os << indent << "Initialization: " << this->Initialization << "\n";
   os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NeighborSearchCount: " << this->NeighborSearchCount << "\n";

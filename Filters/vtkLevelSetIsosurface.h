@@ -157,6 +157,22 @@ public:
   vtkBooleanMacro(Completion, bool);
   ///@}
 
+  enum Initializations
+  {
+    SEED_SPHERES = 0, // the paper: phi starts as the distance to the seed spheres
+    FLOOD = 1         // start at the answer: flood f > f_iso from the seeds (default)
+  };
+  ///@{
+  /**
+   * How phi starts. FLOOD (default): the samples with f > IsoValue connected to the seeds
+   * through the neighbour graph are the inside, and phi starts as the signed distance to their
+   * boundary, so the evolution only smooths the front (a few iterations instead of tens).
+   * SEED_SPHERES: the paper's start, the signed distance to the seed spheres.
+   */
+  vtkSetClampMacro(Initialization, int, SEED_SPHERES, FLOOD);
+  vtkGetMacro(Initialization, int);
+  ///@}
+
   ///@{
   /** Threads for the parallel loops; 0 (default) uses all cores. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -176,6 +192,7 @@ public:
   vtkGetMacro(SpatialSortSeconds, double);
   vtkGetMacro(NearestNeighborSeconds, double);
   vtkGetMacro(StencilSeconds, double); // MLS stencils, computed on demand (all runs so far)
+  vtkGetMacro(InitializationSeconds, double);
   vtkGetMacro(EvolutionSeconds, double);
   vtkGetMacro(IsopointSeconds, double); // includes the completion
   vtkGetMacro(CompletionSeconds, double);
@@ -204,6 +221,7 @@ protected:
   int MaximumNumberOfIterations = 500;
   double ConvergenceTolerance = 1e-4;
   bool Completion = true;
+  int Initialization = FLOOD;
   int NumberOfThreads = 0;
 
   int NeighborSearchCount = 0;
@@ -217,6 +235,7 @@ protected:
   double SpatialSortSeconds = 0.0;
   double NearestNeighborSeconds = 0.0;
   double StencilSeconds = 0.0;
+  double InitializationSeconds = 0.0;
   double EvolutionSeconds = 0.0;
   double IsopointSeconds = 0.0;
   double CompletionSeconds = 0.0;

@@ -31,6 +31,18 @@ public:
     return this->Tree.knnSearch(query, k, indices, squaredDistances);
   }
 
+  /// Like Nearest, but only among points closer than sqrt(squaredBound): a good bound (from a
+  /// query nearby) prunes most of the tree walk. Returns how many were found, possibly < k.
+  std::size_t NearestWithin(const double query[3], std::size_t k, double squaredBound,
+    std::uint32_t* indices, double* squaredDistances) const
+  {
+    nanoflann::KNNResultSet<double, std::uint32_t> result(k);
+    result.init(indices, squaredDistances);
+    squaredDistances[k - 1] = squaredBound; // the initial worst distance
+    this->Tree.findNeighbors(result, query, nanoflann::SearchParams());
+    return result.size();
+  }
+
   std::size_t Size() const { return this->Cloud.Count; }
 
 private:

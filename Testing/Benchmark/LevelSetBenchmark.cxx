@@ -34,6 +34,7 @@ struct Options
   std::uint64_t Seed = 1;
   bool PaperParameters = false;
   int Scheme = 0;
+  int Initialization = 1; // flood
   int Threads = 0;
   int MaximumIterations = 500;
   bool Completion = true;
@@ -60,6 +61,16 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (a == "--seed") o.Seed = std::strtoull(next(), nullptr, 10);
     else if (a == "--paper-parameters") o.PaperParameters = true;
     else if (a == "--scheme") o.Scheme = std::atoi(next());
+    else if (a == "--initialization")
+    {
+      const std::string v = next();
+      if (v != "flood" && v != "seed-spheres")
+      {
+        std::cerr << "--initialization takes flood or seed-spheres\n";
+        return false;
+      }
+      o.Initialization = v == "flood" ? 1 : 0;
+    }
     else if (a == "--threads") o.Threads = std::atoi(next());
     else if (a == "--max-iterations") o.MaximumIterations = std::atoi(next());
     else if (a == "--no-completion") o.Completion = false;
@@ -105,6 +116,7 @@ void Configure(vtkLevelSetIsosurface* filter, const Case& c, const Options& o)
     filter->AddAdditionalSeed(seed.Center.x(), seed.Center.y(), seed.Center.z(), seed.Radius);
   }
   filter->SetEvolutionScheme(o.Scheme);
+  filter->SetInitialization(o.Initialization);
   filter->SetMaximumNumberOfIterations(o.MaximumIterations);
   filter->SetCompletion(o.Completion);
   filter->SetNumberOfThreads(o.Threads);
@@ -184,7 +196,8 @@ int main(int argc, char* argv[])
   std::cout << std::setprecision(4);
   std::cout << "case: " << c->Name << "\nsamples: " << o.Samples
             << "\nparameters: " << (o.PaperParameters ? "paper" : "default")
-            << "\nscheme: " << o.Scheme << "\nmean sample spacing (box): " << spacing
+            << "\nscheme: " << o.Scheme
+            << "\ninitialization: " << (o.Initialization ? "flood" : "seed spheres") << "\nmean sample spacing (box): " << spacing
             << "\nmean sample spacing (filter): " << filter->GetMeanSampleSpacing()
             << "\neps, eps', dt: " << filter->GetEffectiveEpsilon() << ", "
             << filter->GetEffectiveCurvatureEpsilon() << ", " << filter->GetEffectiveTimeStep()
@@ -192,7 +205,8 @@ int main(int argc, char* argv[])
             << "\nseconds total: " << total << "\nseconds neighbours: "
             << filter->GetNeighborSearchSeconds() << " (sort " << filter->GetSpatialSortSeconds()
             << ", nearest " << filter->GetNearestNeighborSeconds() << ", stencils "
-            << filter->GetStencilSeconds() << ")\nseconds evolution: "
+            << filter->GetStencilSeconds() << ")\nseconds initialisation: "
+            << filter->GetInitializationSeconds() << "\nseconds evolution: "
             << filter->GetEvolutionSeconds() << "\nseconds per iteration: "
             << (iterations ? filter->GetEvolutionSeconds() / iterations : 0.0)
             << "\nseconds isopoints: " << filter->GetIsopointSeconds()

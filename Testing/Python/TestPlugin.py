@@ -63,9 +63,12 @@ expected = ["Iteration", "SignMismatch", "MaxGradientDeviation", "MeanGradientDe
 if names != expected or table.GetNumberOfRows() < 2:
     failures.append("convergence table columns %s rows %d" % (names, table.GetNumberOfRows()))
 else:
+    # The default start (flood) already agrees in sign with the data nearly everywhere; the
+    # evolution must keep it so (P is the fraction of samples whose sign disagrees).
     mismatch = table.GetColumnByName("SignMismatch")
-    if mismatch.GetValue(table.GetNumberOfRows() - 1) >= mismatch.GetValue(0):
-        failures.append("SignMismatch did not decrease")
+    last = mismatch.GetValue(table.GetNumberOfRows() - 1)
+    if not last < 0.01:
+        failures.append("SignMismatch %g at the end (>= 0.01)" % last)
 
 for failure in failures:
     print("FAILED:", failure)

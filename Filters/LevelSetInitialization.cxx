@@ -1,0 +1,191 @@
+#include "LevelSetInitialization.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+
+namespace lsi
+{
+
+namespace
+{
+// Breadth-first flood from the seed samples through neighbours with f > f_iso.
+std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& values,
+  const std::vector<char>& inSeed, FloodResult& result)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  const int stride = geometry.Stride;
+  std::vector<char> inside(n, 0);
+  std::vector<std::uint32_t> queue;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (inSeed[i] && values[i] > 0.0)
+    {
+      inside[i] = 1;
+      queue.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  result.SeedSamples = queue.size();
+  for (std::size_t head = 0; head < queue.size(); ++head)
+  {
+    const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
+    for (int m = 1; m < stride; ++m)
+    {
+      if (!inside[ids[m]] && values[ids[m]] > 0.0)
+      {
+        inside[ids[m]] = 1;
+        queue.push_back(ids[m]);
+      }
+    }
+  }
+  result.InsideSamples = queue.size();
+  return inside;
+}
+
+// Outside pockets next to the inside with fewer than `bubbleSize` samples become inside.
+// Each search stops as soon as its pocket proves large, so the cost stays near the front.
+void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vector<char>& inside,
+  FloodResult& result)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  const int stride = geometry.Stride;
+  std::vector<char> large(n, 0); // outside samples known to belong to a large pocket
+  std::vector<std::uint32_t> pocket;
+  std::vector<char> visited(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!inside[i])
+    {
+      continue;
+    }
+    const std::uint32_t* around = geometry.NeighborsOf(i);
+    for (int a = 1; a < stride; ++a)
+    {
+      const std::uint32_t start = around[a];
+      if (inside[start] || large[start] || visited[start])
+      {
+        continue;
+      }
+      pocket.assign(1, start);
+      visited[start] = 1;
+      bool isLarge = false;
+      for (std::size_t head = 0; head < pocket.size() && !isLarge; ++head)
+      {
+        const std::uint32_t* ids = geometry.NeighborsOf(pocket[head]);
+        for (int m = 1; m < stride; ++m)
+        {
+          const std::uint32_t j = ids[m];
+          if (inside[j] || visited[j])
+          {
+            continue;
+          }
+          if (large[j] || pocket.size() >= bubbleSize)
+          {
+            isLarge = true;
+            break;
+          }
+          visited[j] = 1;
+          pocket.push_back(j);
+        }
+      }
+      for (std::uint32_t j : pocket)
+      {
+        visited[j] = 0;
+        if (isLarge)
+        {
+          large[j] = 1;
+        }
+        else
+        {
+          inside[j] = 1;
+          ++result.FilledBubbles;
+        }
+      }
+    }
+  }
+}
+} // namespace
+
+FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
+  const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  double halfWidth, std::vector<double>& phi)
+{
+  FloodResult result;
+  std::vector<char> inside = Flood(geometry, values, inSeed, result);
+  FillBubbles(geometry, bubbleSize, inside, result);
+
+  // Distances to the crossings by a closest-point Dijkstra: every sample near the front
+  // carries the crossing nearest to it found so far and offers it to its neighbours.
+  const std::size_t n = geometry.NumberOfSamples;
+  const int stride = geometry.Stride;
+  std::vector<double> distance(n, HUGE_VAL);
+  std::vector<Eigen::Vector3d> closest(n);
+  using Entry = std::pair<double, std::uint32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d xi(geometry.Position(i));
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < stride; ++m)
+    {
+      const std::uint32_t j = ids[m];
+      if (inside[j] == inside[i])
+      {
+        continue;
+      }
+      // Where f - f_iso interpolates to zero; the midpoint if the values disagree with the
+      // classes (a filled bubble).
+      const double vi = values[i], vj = values[j];
+      double t = vi != vj ? vi / (vi - vj) : 0.5;
+      if (!(t >= 0.0 && t <= 1.0))
+      {
+        t = 0.5;
+      }
+      const Eigen::Vector3d crossing = xi + t * (Eigen::Vector3d(geometry.Position(j)) - xi);
+      const double d = (crossing - xi).norm();
+      if (d < distance[i])
+      {
+        distance[i] = d;
+        closest[i] = crossing;
+      }
+    }
+    if (distance[i] < HUGE_VAL)
+    {
+      heap.push({ distance[i], static_cast<std::uint32_t>(i) });
+    }
+  }
+  while (!heap.empty())
+  {
+    const Entry top = heap.top();
+    heap.pop();
+    const std::uint32_t i = top.second;
+    if (top.first > distance[i] || top.first > halfWidth)
+    {
+      continue;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < stride; ++m)
+    {
+      const std::uint32_t j = ids[m];
+      const double d = (Eigen::Vector3d(geometry.Position(j)) - closest[i]).norm();
+      if (d < distance[j])
+      {
+        distance[j] = d;
+        closest[j] = closest[i];
+        heap.push({ d, j });
+      }
+    }
+  }
+  phi.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double d = std::min(distance[i], halfWidth);
+    phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
+  }
+  return result;
+}
+
+} // namespace lsi

@@ -1,0 +1,36 @@
+// Initial level sets. The paper starts from the seed spheres and lets the front travel to the
+// isosurface, which takes tens of iterations. Flooding starts at the answer instead: the
+// samples with f > f_iso that are connected to the seeds through the neighbour graph are the
+// inside, and phi is the signed distance to the crossings between inside and outside samples.
+// The evolution then only has to smooth that front, and it keeps the locality: components
+// the seeds do not touch are never inside.
+#ifndef LevelSetInitialization_h
+#define LevelSetInitialization_h
+
+#include "LevelSetNeighborhoods.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace lsi
+{
+
+struct FloodResult
+{
+  std::size_t InsideSamples = 0;  // samples reached by the flood
+  std::size_t FilledBubbles = 0;  // samples of small outside pockets taken as inside
+  std::size_t SeedSamples = 0;    // seed samples with f > f_iso (the flood's sources)
+};
+
+/// `values`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
+/// `inSeed`: whether each sample lies in a seed. Outside pockets of fewer than `bubbleSize`
+/// samples enclosed by the inside are noise below the neighbourhood scale: they are filled.
+/// phi becomes the signed distance (positive inside) to the crossings, up to `halfWidth`
+/// and clamped to +-halfWidth beyond.
+FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
+  const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  double halfWidth, std::vector<double>& phi);
+
+} // namespace lsi
+
+#endif
