@@ -32,10 +32,10 @@ void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
 }
 } // namespace
 
-double ReinitializationHalfWidth(const EvolutionSettings& settings, const Neighborhoods& geometry)
+double ReinitializationHalfWidth(const EvolutionSettings& settings)
 {
   const EvolutionCoefficients& c = settings.Coefficients;
-  return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * geometry.MeanRadius;
+  return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * settings.NeighborhoodRadius;
 }
 
 LevelSetEvolution::LevelSetEvolution(
@@ -109,7 +109,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   double halfWidth = BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon));
   if (regularize)
   {
-    halfWidth += 2.0 * this->Geometry.MeanRadius;
+    halfWidth += 2.0 * settings.NeighborhoodRadius;
   }
   this->CollectWhere(halfWidth, this->Band);
   // Curvature needs unit normals on the band and on its neighbours.
@@ -153,7 +153,7 @@ void LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
   // Only where it matters: the band plus a margin, so that samples about to enter the band
   // already hold a distance; plus one ring of neighbours, so that clamped (stale) values next
   // to the region are repaired as the front approaches them.
-  this->CollectWhere(ReinitializationHalfWidth(settings, this->Geometry), this->Scratch);
+  this->CollectWhere(ReinitializationHalfWidth(settings), this->Scratch);
   this->CollectWithNeighbors(this->Scratch, this->Region);
   this->Geometry.EnsureStencils(this->Region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
@@ -222,7 +222,7 @@ void LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
 
 }
 
-void LevelSetEvolution::Measure(IterationRecord& record)
+void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationRecord& record)
 {
   const std::size_t n = this->Geometry.NumberOfSamples;
   // P = (1/2N) sum |sgn(phi_i) - sgn(f_i - f_iso)|, with sgn(phi) taken as +1 / -1.
@@ -244,7 +244,7 @@ void LevelSetEvolution::Measure(IterationRecord& record)
 
   // MG and AG over the zero crossings between neighbours (the rough isopoints), with the
   // gradient interpolated linearly along each crossing segment.
-  const double h = this->Geometry.MeanRadius;
+  const double h = settings.NeighborhoodRadius;
   this->CollectWhere(2.0 * h, this->Scratch);
   this->ComputeGradients(this->Scratch, this->Phi);
   this->CollectWhere(1.0 * h, this->Front);
@@ -300,7 +300,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   int stableIterations = 0;
   // Values beyond the reinitialised region are never read as distances: clamp them, so that a
   // front moving into stale values meets a bounded step that the reinitialisation repairs.
-  const double clamp = ReinitializationHalfWidth(settings, this->Geometry);
+  const double clamp = ReinitializationHalfWidth(settings);
   for (double& phi : this->Phi)
   {
     phi = std::max(-clamp, std::min(clamp, phi));
@@ -341,7 +341,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     }
     record.Seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    this->Measure(record); // statistics are reported, not timed as part of the iteration
+    this->Measure(settings, record); // statistics are reported, not timed as part of the iteration
     if (onIteration && !onIteration(record))
     {
       return false;

@@ -27,7 +27,8 @@ struct EvolutionSettings
   Scheme Method = Scheme::WithReinitialization;
   int ReinitializationSteps = 2;
   double ReinitializationTimeStep = 0.5;
-  double Spacing = 1.0; // mean sample spacing: the smoothed sign's width in eq. 10
+  double Spacing = 1.0; // mean sample spacing at the surface: the smoothed sign's width in eq. 10
+  double NeighborhoodRadius = 1.0; // mean h_i at the surface
   int MaximumIterations = 500;
   // Stop when, for StableIterationsToStop iterations in a row, at most this fraction of the
   // band's samples changed sign for the first time: the front no longer advances anywhere.
@@ -38,7 +39,7 @@ struct EvolutionSettings
 
 /// Half width of the region |phi| < w that the reinitialisation keeps a signed distance: the
 /// band plus a margin of two neighbourhood radii, so samples about to enter the band are ready.
-double ReinitializationHalfWidth(const EvolutionSettings& settings, const Neighborhoods& geometry);
+double ReinitializationHalfWidth(const EvolutionSettings& settings);
 
 /// One row of the convergence table.
 struct IterationRecord
@@ -72,7 +73,7 @@ private:
   void ComputeGradients(const std::vector<std::size_t>& where, const std::vector<double>& values);
   void Evolve(const EvolutionSettings& settings);
   void Reinitialize(const EvolutionSettings& settings);
-  void Measure(IterationRecord& record);
+  void Measure(const EvolutionSettings& settings, IterationRecord& record);
 
   const Neighborhoods& Geometry;
   const std::vector<double>& DataSign;

@@ -77,6 +77,28 @@ void AppendRow(vtkTable* table, const lsi::IterationRecord& r)
   }
 }
 
+// Mean neighbourhood radius h_i over the samples that have a neighbour on the other side of
+// the isovalue (all samples if there is none).
+double MeanRadiusAtCrossings(const lsi::Neighborhoods& geometry, const std::vector<double>& sign)
+{
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if (sign[ids[m]] != sign[i])
+      {
+        sum += geometry.Radius[i];
+        ++count;
+        break;
+      }
+    }
+  }
+  return count ? sum / count : geometry.MeanRadius;
+}
+
 // Signed distance to the inside of the axis-aligned box `bounds` (positive inside).
 double DistanceInsideBox(const double x[3], const double bounds[6])
 {
@@ -299,9 +321,21 @@ bool vtkLevelSetIsosurface::Execute(
   }
   this->UpdateProgress(0.2);
 
-  // --- Parameters -------------------------------------------------------------------------
-  const double spacing = geometry.MeanSpacing;
+  // --- The data in Morton order, and the sampling scale where the surface is -------------
+  std::vector<double> offsets(n), dataSign(n); // f - f_iso and its sign
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    offsets[i] = values[geometry.Order[i]] - this->IsoValue;
+    dataSign[i] = lsi::Sign(offsets[i]);
+  }
+  // Adaptive data (SPH) is sampled far more densely in some places than at the isosurface:
+  // every length scale (eps, time step, band, cells) comes from the samples that straddle it.
+  const double surfaceRadius = MeanRadiusAtCrossings(geometry, dataSign);
+  const double spacing =
+    lsi::SpacingFromNeighborhoodRadius(surfaceRadius, geometry.Stride - 1);
   this->MeanSampleSpacing = spacing;
+
+  // --- Parameters -------------------------------------------------------------------------
   const lsi::AutomaticChoice automatic = lsi::ChooseParameters(spacing, this->CurvatureWeight);
   lsi::EvolutionSettings settings;
   settings.Coefficients.Epsilon = this->Epsilon > 0.0 ? this->Epsilon : automatic.Epsilon;
@@ -319,6 +353,7 @@ bool vtkLevelSetIsosurface::Execute(
   settings.ReinitializationSteps = this->ReinitializationSteps;
   settings.ReinitializationTimeStep = automatic.ReinitializationTimeStep;
   settings.Spacing = spacing;
+  settings.NeighborhoodRadius = surfaceRadius;
   settings.MaximumIterations = this->MaximumNumberOfIterations;
   settings.ConvergenceTolerance = this->ConvergenceTolerance;
   this->EffectiveEpsilon = settings.Coefficients.Epsilon;
@@ -372,22 +407,15 @@ bool vtkLevelSetIsosurface::Execute(
       return false;
     }
   }
-  std::vector<double> dataSign(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    dataSign[i] = lsi::Sign(values[geometry.Order[i]] - this->IsoValue);
-  }
   if (this->Initialization == FLOOD)
   {
-    std::vector<double> offsets(n);
     std::vector<char> inSeed(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      offsets[i] = values[geometry.Order[i]] - this->IsoValue;
       inSeed[i] = spheres.empty() || seedDistance[i] > 0.0;
     }
     const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, offsets, inSeed,
-      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings, geometry),
+      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings),
       phi);
     if (flood.SeedSamples == 0)
     {
