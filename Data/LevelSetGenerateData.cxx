@@ -1,7 +1,7 @@
 // Writes the paper's synthetic test data (§8.2 one-component field, our multi-component field)
 // as uniform random samples with the scalar "f", to a binary .vtp (readable by Debian 12's
 // ParaView 5.11, which cannot read appended-mode XML).
-//   LevelSetGenerateData one-component|multi-component SAMPLES OUTPUT.vtp [RANDOM_SEED]
+//   LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp [RANDOM_SEED]
 #include "SyntheticCases.h"
 #include "SyntheticParticles.h"
 
@@ -18,7 +18,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    std::cerr << "usage: LevelSetGenerateData one-component|multi-component SAMPLES OUTPUT.vtp "
+    std::cerr << "usage: LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp "
                  "[RANDOM_SEED]\n";
     return EXIT_FAILURE;
   }
@@ -32,6 +32,10 @@ int main(int argc, char* argv[])
   {
     c.reset(new lsi::cases::MultiComponentCase);
   }
+  else if (name == "adaptive-noisy")
+  {
+    c.reset(new lsi::cases::AdaptiveNoisyCase);
+  }
   else
   {
     std::cerr << "unknown case " << name << "\n";
@@ -39,7 +43,7 @@ int main(int argc, char* argv[])
   }
   const std::size_t count = std::strtoull(argv[2], nullptr, 10);
   const std::uint64_t seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
-  const auto samples = lsi::cases::UniformSamples(*c, count, seed);
+  const auto samples = c->Samples(count, seed);
   vtkSmartPointer<vtkPolyData> data = lsi::cases::MakeParticles(*c, samples);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(data);

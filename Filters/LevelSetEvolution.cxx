@@ -38,10 +38,12 @@ double ReinitializationHalfWidth(const EvolutionSettings& settings)
   return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * settings.NeighborhoodRadius;
 }
 
-LevelSetEvolution::LevelSetEvolution(
-  const Neighborhoods& geometry, const std::vector<double>& dataSign, std::vector<double>& phi)
+LevelSetEvolution::LevelSetEvolution(const Neighborhoods& geometry,
+  const std::vector<double>& dataSign, std::vector<double>& phi,
+  const std::vector<double>* dataOffsets)
   : Geometry(geometry)
   , DataSign(dataSign)
+  , DataOffsets(dataOffsets)
   , Phi(phi)
   , Gradient(3 * geometry.NumberOfSamples, 0.0)
   , Stamp(geometry.NumberOfSamples, 0)
@@ -128,6 +130,27 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   };
 
   this->NewValues.resize(this->Band.size());
+  if (settings.Method == Scheme::RosenthalLinsen)
+  {
+    const double limit = ReinitializationHalfWidth(settings);
+    ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
+      const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+      const std::vector<double>& f = *this->DataOffsets;
+      const double slope = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
+        [&](std::size_t m) { return f[ids[m]]; })
+                             .norm();
+      // g = (f - f_iso) / |grad f|, bounded like phi where f is flat.
+      const double target = slope > std::abs(f[i]) / limit ? f[i] / slope : Sign(f[i]) * limit;
+      this->NewValues[k] = RosenthalLinsenValue(this->Phi[i],
+        Eigen::Vector3d(&this->Gradient[3 * i]).norm(), target, settings.RelaxationRate,
+        settings.MaximumStep);
+    });
+    for (std::size_t k = 0; k < this->Band.size(); ++k)
+    {
+      this->Phi[this->Band[k]] = this->NewValues[k];
+    }
+    return;
+  }
   ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
     const float* stencil = this->Geometry.StencilOf(i);
@@ -323,7 +346,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     record.Iteration = iteration;
     this->Evolve(settings);
     record.BandSize = this->Band.size();
-    if (settings.Method == Scheme::WithReinitialization && settings.ReinitializationSteps > 0)
+    if (settings.Method != Scheme::WithoutReinitialization && settings.ReinitializationSteps > 0)
     {
       this->Reinitialize(settings);
     }

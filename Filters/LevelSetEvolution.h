@@ -19,6 +19,7 @@ enum class Scheme
 {
   WithReinitialization = 0,    // eq. 9 + eq. 10 (the paper's main method)
   WithoutReinitialization = 1, // eq. 13: distance regularisation instead of eq. 10
+  RosenthalLinsen = 2,         // eq. 16 (+ eq. 10): phi relaxes towards the data's distance
 };
 
 struct EvolutionSettings
@@ -27,6 +28,9 @@ struct EvolutionSettings
   Scheme Method = Scheme::WithReinitialization;
   int ReinitializationSteps = 2;
   double ReinitializationTimeStep = 0.5;
+  // Rosenthal-Linsen: fraction of phi - g removed per step, and the largest change per step.
+  double RelaxationRate = 0.5;
+  double MaximumStep = 0.5;
   double Spacing = 1.0; // mean sample spacing at the surface: the smoothed sign's width in eq. 10
   double NeighborhoodRadius = 1.0; // mean h_i at the surface
   int MaximumIterations = 500;
@@ -57,8 +61,9 @@ class LevelSetEvolution
 {
 public:
   /// `dataSign` holds sgn(f_i - f_iso); `phi` the initial level set, evolved in place.
+  /// `dataOffsets` (f_i - f_iso) is needed by the Rosenthal-Linsen scheme only.
   LevelSetEvolution(const Neighborhoods& geometry, const std::vector<double>& dataSign,
-    std::vector<double>& phi);
+    std::vector<double>& phi, const std::vector<double>* dataOffsets = nullptr);
 
   /// Iterates until the stopping rule or the iteration limit. `onIteration` is called on the
   /// calling thread after each iteration; returning false aborts. Returns false if aborted.
@@ -77,6 +82,7 @@ private:
 
   const Neighborhoods& Geometry;
   const std::vector<double>& DataSign;
+  const std::vector<double>* DataOffsets;
   std::vector<double>& Phi;
   std::vector<double> Gradient;         // 3 per sample, valid where last computed
   std::vector<std::uint32_t> Stamp;     // marks for neighbourhood collection

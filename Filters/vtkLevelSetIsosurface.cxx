@@ -347,7 +347,9 @@ bool vtkLevelSetIsosurface::Execute(
   settings.Coefficients.CurvatureWeight = this->CurvatureWeight;
   settings.Method = this->EvolutionScheme == VARIATIONAL_WITHOUT_REINITIALIZATION
     ? lsi::Scheme::WithoutReinitialization
-    : lsi::Scheme::WithReinitialization;
+    : this->EvolutionScheme == ROSENTHAL_LINSEN ? lsi::Scheme::RosenthalLinsen
+                                                : lsi::Scheme::WithReinitialization;
+  settings.MaximumStep = 0.5 * spacing;
   settings.Coefficients.DistanceRegularization =
     settings.Method == lsi::Scheme::WithoutReinitialization ? this->DistanceRegularization : 0.0;
   settings.ReinitializationSteps = this->ReinitializationSteps;
@@ -429,7 +431,7 @@ bool vtkLevelSetIsosurface::Execute(
   // --- Evolution --------------------------------------------------------------------------
   start = Clock::now();
   vtkNew<vtkTable> rows = EmptyConvergenceTable();
-  lsi::LevelSetEvolution evolution(geometry, dataSign, phi);
+  lsi::LevelSetEvolution evolution(geometry, dataSign, phi, &offsets);
   const int maximum = std::max(1, this->MaximumNumberOfIterations);
   const bool finished = evolution.Run(
     settings,

@@ -50,7 +50,8 @@ public:
   enum EvolutionSchemes
   {
     VARIATIONAL_WITH_REINITIALIZATION = 0,
-    VARIATIONAL_WITHOUT_REINITIALIZATION = 1
+    VARIATIONAL_WITHOUT_REINITIALIZATION = 1,
+    ROSENTHAL_LINSEN = 2
   };
 
   ///@{
@@ -121,9 +122,12 @@ public:
   ///@}
 
   ///@{
-  /** VARIATIONAL_WITH_REINITIALIZATION (0, default) or VARIATIONAL_WITHOUT_REINITIALIZATION (1). */
-  vtkSetClampMacro(EvolutionScheme, int, VARIATIONAL_WITH_REINITIALIZATION,
-    VARIATIONAL_WITHOUT_REINITIALIZATION);
+  /**
+   * VARIATIONAL_WITH_REINITIALIZATION (0, default), VARIATIONAL_WITHOUT_REINITIALIZATION (1)
+   * or ROSENTHAL_LINSEN (2: the earlier method the paper compares against, eq. 16 with
+   * reinitialisation; phi relaxes towards (f - f_iso) / |grad f|).
+   */
+  vtkSetClampMacro(EvolutionScheme, int, VARIATIONAL_WITH_REINITIALIZATION, ROSENTHAL_LINSEN);
   vtkGetMacro(EvolutionScheme, int);
   void SetEvolutionSchemeToWithReinitialization()
   {

@@ -41,6 +41,19 @@ inline double EvolvedValue(double phi, double signOfData, double curvature, doub
   return phi + c.TimeStep * (main + smoothing + c.DistanceRegularization * regularization);
 }
 
+/// One explicit step of Rosenthal and Linsen's evolution (the paper's eq. 16),
+/// d phi / dt + (phi - g) |grad phi| = 0, which drives phi towards g. Here g is the data turned
+/// into a first-order distance, (f - f_iso) / |grad f| (the same zero level as f - f_iso, in the
+/// units of phi), so the time step is dimensionless: `relaxation` (0 < r <= 1) of the way per
+/// step. The change is limited to `maximumStep` (a fraction of the spacing, like a CFL bound).
+inline double RosenthalLinsenValue(
+  double phi, double gradientNorm, double target, double relaxation, double maximumStep)
+{
+  double change = -relaxation * (phi - target) * gradientNorm;
+  change = std::max(-maximumStep, std::min(maximumStep, change));
+  return phi + change;
+}
+
 /// Upwind estimate of |grad psi| at a sample for the eikonal equation: the steepest slope
 /// towards the zero level, max over the neighbours j closer to it (sign(psi) psi_j < |psi|) of
 /// sign(psi) (psi - psi_j) / |x - x_j|. Distance information flows out of the interface, so only

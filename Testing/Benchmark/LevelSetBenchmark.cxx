@@ -99,6 +99,7 @@ std::unique_ptr<Case> MakeCase(const std::string& name)
 {
   if (name == "one-component") return std::unique_ptr<Case>(new OneComponentCase);
   if (name == "multi-component") return std::unique_ptr<Case>(new MultiComponentCase);
+  if (name == "adaptive-noisy") return std::unique_ptr<Case>(new AdaptiveNoisyCase);
   if (name == "sphere")
     return std::unique_ptr<Case>(new SphereCase(Eigen::Vector3d(64, 64, 64), 40.0, 64.0));
   return nullptr;
@@ -167,14 +168,13 @@ int main(int argc, char* argv[])
   std::unique_ptr<Case> c;
   if (!Parse(argc, argv, o) || !(c = MakeCase(o.CaseName)))
   {
-    std::cerr << "usage: LevelSetBenchmark [--case one-component|multi-component|sphere] "
+    std::cerr << "usage: LevelSetBenchmark [--case one-component|multi-component|adaptive-noisy|sphere] "
                  "[--samples N] [--paper-parameters] [--scheme 0|1] [--threads T] ...\n";
     return EXIT_FAILURE;
   }
-  const std::vector<Eigen::Vector3d> samples = UniformSamples(*c, o.Samples, o.Seed);
+  const std::vector<Eigen::Vector3d> samples = c->Samples(o.Samples, o.Seed);
   vtkSmartPointer<vtkPolyData> particles = MakeParticles(*c, samples);
-  const Eigen::Vector3d box = c->BoxMax - c->BoxMin;
-  const double spacing = std::cbrt(box.prod() / static_cast<double>(o.Samples));
+  const double spacing = c->SurfaceSpacing(o.Samples);
 
   vtkNew<vtkLevelSetIsosurface> filter;
   filter->SetInputData(particles);
@@ -197,7 +197,7 @@ int main(int argc, char* argv[])
   std::cout << "case: " << c->Name << "\nsamples: " << o.Samples
             << "\nparameters: " << (o.PaperParameters ? "paper" : "default")
             << "\nscheme: " << o.Scheme
-            << "\ninitialization: " << (o.Initialization ? "flood" : "seed spheres") << "\nmean sample spacing (box): " << spacing
+            << "\ninitialization: " << (o.Initialization ? "flood" : "seed spheres") << "\nmean sample spacing on the exact surface: " << spacing
             << "\nmean sample spacing (filter): " << filter->GetMeanSampleSpacing()
             << "\neps, eps', dt: " << filter->GetEffectiveEpsilon() << ", "
             << filter->GetEffectiveCurvatureEpsilon() << ", " << filter->GetEffectiveTimeStep()

@@ -39,6 +39,18 @@ struct Case
   virtual int Component(const Eigen::Vector3d&) const { return 0; }
   /// Whether that component meets the seeds (and so must be extracted).
   virtual bool Seeded(int component) const { return component == 0; }
+  /// `count` sample positions (default: uniform in the box; deterministic for a given seed).
+  virtual std::vector<Eigen::Vector3d> Samples(std::size_t count, std::uint64_t seed) const;
+  /// The value a sample carries (default: exact; a noisy case perturbs it).
+  virtual double MeasuredValue(const Eigen::Vector3d& x, std::mt19937_64&) const
+  {
+    return this->Value(x);
+  }
+  /// Mean sample spacing on the exact surface for `count` samples (default: uniform).
+  virtual double SurfaceSpacing(std::size_t count) const
+  {
+    return std::cbrt((this->BoxMax - this->BoxMin).prod() / static_cast<double>(count));
+  }
 };
 
 /// Paper §8.2: f = -((a x + 0.05 (a y)^3)^2 + 0.7 (a y)^2 + 0.3 (a z - 0.7 (a y)^2)^2 - 4) / a^2,
@@ -158,6 +170,76 @@ struct SphereCase : Case
   }
 };
 
+/// Equal-mass particles of an ellipsoidal Plummer sphere, f = (1 + q^2)^(-5/2) with
+/// q = |(x - c) / (a axes)|, truncated at q = 6: the density falls 8300x from the core to the
+/// edge, so the sampling is adaptive. The isovalue is f at q = 4, in the sparse outskirts
+/// (where the density is 1/1190 of the core's), so the exact surface is the ellipsoid q = 4.
+/// Sample values carry 5% multiplicative Gaussian noise, f (1 + 0.05 N(0, 1)).
+struct AdaptiveNoisyCase : Case
+{
+  Eigen::Vector3d Centre{ 64, 64, 64 };
+  double Scale = 8.0; // a
+  Eigen::Vector3d Axes{ 1.0, 0.7, 0.5 };
+  static constexpr double SurfaceQ = 4.0, OuterQ = 6.0, Noise = 0.05;
+  AdaptiveNoisyCase()
+  {
+    this->Name = "adaptive-noisy";
+    this->IsoValue = Density(SurfaceQ);
+    this->Seeds = { { this->Centre, this->Scale } };
+    this->BoxMin = this->Centre - OuterQ * this->Scale * this->Axes;
+    this->BoxMax = this->Centre + OuterQ * this->Scale * this->Axes;
+  }
+  static double Density(double q) { return std::pow(1.0 + q * q, -2.5); }
+  // Fraction of the (untruncated) Plummer mass within q.
+  static double MassWithin(double q) { return std::pow(q * q / (1.0 + q * q), 1.5); }
+  Eigen::Vector3d Scaled(const Eigen::Vector3d& x) const
+  {
+    return (x - this->Centre).cwiseQuotient(this->Scale * this->Axes);
+  }
+  double Value(const Eigen::Vector3d& x) const override
+  {
+    return Density(this->Scaled(x).norm());
+  }
+  Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
+  {
+    const Eigen::Vector3d u = this->Scaled(x);
+    const double q2 = u.squaredNorm();
+    // d/dx (1 + q^2)^(-5/2) = -5 (1 + q^2)^(-7/2) u / (a axes)
+    return (-5.0 * std::pow(1.0 + q2, -3.5)) * u.cwiseQuotient(this->Scale * this->Axes);
+  }
+  std::vector<Eigen::Vector3d> Samples(std::size_t count, std::uint64_t seed) const override
+  {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    std::vector<Eigen::Vector3d> points(count);
+    const double total = MassWithin(OuterQ);
+    for (auto& p : points)
+    {
+      // Invert the mass profile: m = q^3 / (1 + q^2)^(3/2)  =>  q = 1 / sqrt(m^(-2/3) - 1).
+      const double m = std::max(1e-300, total * unit(random));
+      const double q = 1.0 / std::sqrt(std::pow(m, -2.0 / 3.0) - 1.0);
+      Eigen::Vector3d direction(gauss(random), gauss(random), gauss(random));
+      direction.normalize();
+      p = this->Centre + (q * this->Scale) * direction.cwiseProduct(this->Axes);
+    }
+    return points;
+  }
+  double MeasuredValue(const Eigen::Vector3d& x, std::mt19937_64& random) const override
+  {
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    return this->Value(x) * (1.0 + Noise * gauss(random));
+  }
+  double SurfaceSpacing(std::size_t count) const override
+  {
+    // Number density on q = 4: count / mass(6) times the normalised Plummer density there.
+    const double volume = std::pow(this->Scale, 3) * this->Axes.prod();
+    const double density = static_cast<double>(count) / MassWithin(OuterQ) * 3.0 /
+      (4.0 * 3.14159265358979323846 * volume) * Density(SurfaceQ);
+    return std::cbrt(1.0 / density);
+  }
+};
+
 /// `count` uniform random samples in the case's box (deterministic for a given seed).
 inline std::vector<Eigen::Vector3d> UniformSamples(
   const Case& c, std::size_t count, std::uint64_t seed)
@@ -193,6 +275,11 @@ inline bool ProjectOntoSurface(const Case& c, Eigen::Vector3d& x)
     }
   }
   return false;
+}
+
+inline std::vector<Eigen::Vector3d> Case::Samples(std::size_t count, std::uint64_t seed) const
+{
+  return UniformSamples(*this, count, seed);
 }
 
 } // namespace cases

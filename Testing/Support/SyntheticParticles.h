@@ -19,9 +19,11 @@ namespace lsi
 namespace cases
 {
 
+/// Values are c.MeasuredValue (exact, or noisy for a noisy case: `seed` fixes the noise).
 inline vtkSmartPointer<vtkPolyData> MakeParticles(
-  const Case& c, const std::vector<Eigen::Vector3d>& samples)
+  const Case& c, const std::vector<Eigen::Vector3d>& samples, std::uint64_t seed = 7)
 {
+  std::mt19937_64 random(seed);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(samples.size()));
@@ -31,7 +33,7 @@ inline vtkSmartPointer<vtkPolyData> MakeParticles(
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
     points->SetPoint(static_cast<vtkIdType>(i), samples[i].data());
-    f->SetValue(static_cast<vtkIdType>(i), c.Value(samples[i]));
+    f->SetValue(static_cast<vtkIdType>(i), c.MeasuredValue(samples[i], random));
   }
   auto particles = vtkSmartPointer<vtkPolyData>::New();
   particles->SetPoints(points);
