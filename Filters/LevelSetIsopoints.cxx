@@ -30,9 +30,27 @@ MLSEvaluator::MLSEvaluator(
 
 bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
 {
-  const std::size_t k = this->Geometry.Index->Nearest(
+  this->Gather(p);
+  return this->FitGathered(p, value, gradient);
+}
+
+void MLSEvaluator::Gather(const Eigen::Vector3d& p)
+{
+  this->Found = this->Geometry.Index->Nearest(
     p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
-  const double h = std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + k));
+  this->GatherRadius = std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + this->Found));
+}
+
+bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
+{
+  const std::size_t k = this->Found;
+  // The support must still reach all gathered samples from p (the weight vanishes at h).
+  double h2 = 0.0;
+  for (std::size_t j = 0; j < k; ++j)
+  {
+    h2 = std::max(h2, (Eigen::Vector3d(this->Geometry.Position(this->Ids[j])) - p).squaredNorm());
+  }
+  const double h = std::max(this->GatherRadius, std::sqrt(h2));
   if (!BuildLinearStencil(p.data(), k,
         [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
         LinearStencilView{ this->GradientCoefficients.data(), this->ValueCoefficients.data() }))
@@ -126,7 +144,7 @@ void RefineCandidates(const Neighborhoods& geometry, const std::vector<double>& 
       {
         double value;
         Eigen::Vector3d wide;
-        if ((*normalEvaluator)(p, value, wide) && wide.squaredNorm() > 0.0)
+        if (normalFitScale > 1 && (*normalEvaluator)(p, value, wide) && wide.squaredNorm() > 0.0)
         {
           gradient = wide;
         }
@@ -325,7 +343,7 @@ std::uint32_t Root(std::vector<std::uint32_t>& parent, std::uint32_t i)
 // hold a piece of the isosurface: it is a pocket the front left behind. Flip its sign, so
 // that Newton's method is not drawn to spurious zeros around it.
 std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
-  const std::vector<double>& dataSign, std::vector<double> phi)
+  const std::vector<double>& dataOffsets, std::vector<double> phi)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
@@ -351,7 +369,7 @@ std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
   std::vector<char> agrees(n, 0);
   for (std::size_t i = 0; i < n; ++i)
   {
-    if ((phi[i] > 0.0) == (dataSign[i] > 0.0))
+    if ((phi[i] > 0.0) == (dataOffsets[i] > 0.0))
     {
       agrees[Root(parent, static_cast<std::uint32_t>(i))] = 1;
     }
@@ -367,12 +385,25 @@ std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
 }
 } // namespace
 
+namespace
+{
+// The wide fit of phi only matters for the output normals; the data refinement replaces them.
+int NormalFitScaleFor(const IsopointSettings& settings)
+{
+  return settings.RefineOnData ? 1 : settings.NormalFitScale;
+}
+void Complete(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const IsopointSettings& settings, IsopointSet& out);
+void RefineOnData(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const IsopointSettings& settings, IsopointSet& out);
+} // namespace
+
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& evolvedPhi,
-  const std::vector<double>& dataSign, const IsopointSettings& settings, IsopointSet& out,
+  const std::vector<double>& dataOffsets, const IsopointSettings& settings, IsopointSet& out,
   const AbortCheck& aborted)
 {
   out = IsopointSet();
-  const std::vector<double> phi = WithoutSpuriousPockets(geometry, dataSign, evolvedPhi);
+  const std::vector<double> phi = WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
   std::vector<double> points, normals;
   RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
   out.RoughCount = points.size() / 3;
@@ -387,7 +418,7 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
     return false;
   }
   RefineCandidates(
-    geometry, phi, settings.Newton, settings.NormalFitScale, points, normals, valid);
+    geometry, phi, settings.Newton, NormalFitScaleFor(settings), points, normals, valid);
   {
     // Thin the refined points: many crossings land on nearly the same spot.
     IsopointSet tmp;
@@ -395,14 +426,33 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
     const std::vector<std::size_t> kept = ThinByVoxels(tmp.Points, settings.CellSize);
     AppendSelected(tmp.Points, tmp.Normals, kept, out);
   }
-  if (!settings.Completion || out.Points.empty())
+  if (settings.Completion && !out.Points.empty())
   {
-    return true;
+    if (aborted && aborted())
+    {
+      return false;
+    }
+    Complete(geometry, phi, settings, out);
   }
-  if (aborted && aborted())
+  if (settings.RefineOnData && !out.Points.empty())
   {
-    return false;
+    if (aborted && aborted())
+    {
+      return false;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    RefineOnData(geometry, dataOffsets, settings, out);
+    out.DataRefinementSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+  return true;
+}
+
+namespace
+{
+void Complete(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const IsopointSettings& settings, IsopointSet& out)
+{
   const auto completionStart = std::chrono::steady_clock::now();
   std::vector<double> candidates, candidateNormals;
   std::vector<char> candidateValid;
@@ -410,7 +460,7 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   DropProposalsInOccupiedVoxels(out, settings.CellSize, candidates, candidateValid);
   NewtonSettings newton = settings.Newton;
   newton.MaximumDistance = 2.0 * settings.CellSize; // stay near the cell it was proposed for
-  RefineCandidates(geometry, phi, newton, settings.NormalFitScale, candidates, candidateNormals,
+  RefineCandidates(geometry, phi, newton, NormalFitScaleFor(settings), candidates, candidateNormals,
     candidateValid);
 
   // The union, thinned again; existing isopoints come first and so win their voxels.
@@ -425,7 +475,51 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   result.CompletionSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - completionStart).count();
   out = std::move(result);
-  return true;
 }
+
+void RefineOnData(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const IsopointSettings& settings, IsopointSet& out)
+{
+  const std::size_t count = out.Points.size() / 3;
+  const std::size_t fitCount = std::min<std::size_t>(
+    geometry.NumberOfSamples, static_cast<std::size_t>(settings.DataFitScale) * geometry.Stride);
+  vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
+  vtkSMPThreadLocal<std::size_t> moved(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
+    if (!evaluator)
+    {
+      evaluator.reset(new MLSEvaluator(geometry, dataOffsets, fitCount));
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      Eigen::Vector3d p(&out.Points[3 * i]);
+      const Eigen::Vector3d n(&out.Normals[3 * i]);
+      Eigen::Vector3d gradient;
+      // The point moves less than a spacing: the samples nearest its start serve every step.
+      evaluator->Gather(p);
+      auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
+        return evaluator->FitGathered(x, value, g);
+      };
+      if (SlideOntoDataLevel(p, n, evaluate, settings.DataMaximumMove,
+            settings.DataIterations, gradient))
+      {
+        const Eigen::Vector3d dataNormal = -gradient.normalized();
+        for (int d = 0; d < 3; ++d)
+        {
+          out.Points[3 * i + d] = p[d];
+          out.Normals[3 * i + d] = dataNormal[d];
+        }
+        ++moved.Local();
+      }
+    }
+  });
+  out.DataRefinedCount = 0;
+  for (std::size_t m : moved)
+  {
+    out.DataRefinedCount += m;
+  }
+}
+} // namespace
 
 } // namespace lsi

@@ -24,6 +24,13 @@ struct IsopointSettings
   // The normal is the gradient of a wider fit (this many times n + 1 samples) at the refined
   // point: phi is noisy at the sample scale, and a 27-sample fit gave ~20 degree errors.
   int NormalFitScale = 4;
+  // Final refinement on the data: slide each isopoint along its normal to the zero of the MLS
+  // fit of f - f_iso over DataFitScale * (n + 1) samples (more samples: smoother under noise),
+  // at most DataMaximumMove, and take the normal from that fit's gradient.
+  bool RefineOnData = true;
+  int DataFitScale = 2;
+  double DataMaximumMove = 0.5;
+  int DataIterations = 3;
 };
 
 struct IsopointSet
@@ -33,12 +40,15 @@ struct IsopointSet
   std::size_t RoughCount = 0;     // zero crossings accepted by the angle criterion
   std::size_t CompletedCount = 0; // points added by completion (after thinning)
   double CompletionSeconds = 0.0;
+  double DataRefinementSeconds = 0.0;
+  std::size_t DataRefinedCount = 0; // points the data refinement moved
 };
 
-/// `dataSign` is sgn(f - f_iso) per sample (used to discard pockets of phi that no sample's data
-/// supports). Returns false only when aborted.
+/// `dataOffsets` is f - f_iso per sample: its sign discards pockets of phi that no sample's
+/// data supports, and its values place the points in the final refinement. Returns false only
+/// when aborted.
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
-  const std::vector<double>& dataSign, const IsopointSettings& settings, IsopointSet& out,
+  const std::vector<double>& dataOffsets, const IsopointSettings& settings, IsopointSet& out,
   const AbortCheck& aborted);
 
 /// Value and gradient at p of the MLS linear fit of per-sample values over the samples nearest
@@ -50,8 +60,14 @@ public:
   MLSEvaluator(
     const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count = 0);
   bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+  /// The same in two parts: gather the samples nearest to p, then fit them at any point near p
+  /// (for several evaluations along a short path).
+  void Gather(const Eigen::Vector3d& p);
+  bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
 
 private:
+  std::size_t Found = 0;
+  double GatherRadius = 0.0;
   const Neighborhoods& Geometry;
   const std::vector<double>& Values;
   std::vector<std::uint32_t> Ids;

@@ -458,12 +458,15 @@ bool vtkLevelSetIsosurface::Execute(
   isopointSettings.Newton.Tolerance = 1e-4 * spacing;
   isopointSettings.Newton.MaximumDistance = 1.0 * spacing;
   lsi::IsopointSet isopoints;
-  if (!lsi::ExtractIsopoints(geometry, phi, dataSign, isopointSettings, isopoints, aborted))
+  isopointSettings.RefineOnData = this->DataRefinement;
+  isopointSettings.DataMaximumMove = 0.5 * spacing;
+  if (!lsi::ExtractIsopoints(geometry, phi, offsets, isopointSettings, isopoints, aborted))
   {
     return false;
   }
   this->IsopointSeconds = SecondsSince(start);
   this->CompletionSeconds = isopoints.CompletionSeconds;
+  this->DataRefinementSeconds = isopoints.DataRefinementSeconds;
   this->StencilSeconds = geometry.StencilSeconds;
   if (geometry.SingularSamples > 0)
   {
@@ -525,7 +528,8 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EvolutionScheme: " << this->EvolutionScheme << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
- os << indent << "Initialization: " << this->Initialization << "\n";
+ os << indent << "DataRefinement: " << (this->DataRefinement ? "On" : "Off") << "\n";
+  os << indent << "Initialization: " << this->Initialization << "\n";
   os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NeighborSearchCount: " << this->NeighborSearchCount << "\n";

@@ -161,6 +161,19 @@ public:
   vtkBooleanMacro(Completion, bool);
   ///@}
 
+  ///@{
+  /**
+   * Final refinement on the data (default on). The level set only uses the sign of
+   * f - IsoValue, which places the surface to a fraction of the sample spacing. This slides
+   * each isopoint along its normal (at most half a spacing) to the zero of a moving-least-
+   * squares fit of f - IsoValue over 2 (n + 1) nearby samples, and takes the normal from that
+   * fit's gradient. The fit averages over its samples, so noisy data stay smooth.
+   */
+  vtkSetMacro(DataRefinement, bool);
+  vtkGetMacro(DataRefinement, bool);
+  vtkBooleanMacro(DataRefinement, bool);
+  ///@}
+
   enum Initializations
   {
     SEED_SPHERES = 0, // the paper: phi starts as the distance to the seed spheres
@@ -200,6 +213,7 @@ public:
   vtkGetMacro(EvolutionSeconds, double);
   vtkGetMacro(IsopointSeconds, double); // includes the completion
   vtkGetMacro(CompletionSeconds, double);
+  vtkGetMacro(DataRefinementSeconds, double); // included in IsopointSeconds
   ///@}
 
 protected:
@@ -226,6 +240,7 @@ protected:
   double ConvergenceTolerance = 1e-4;
   bool Completion = true;
   int Initialization = FLOOD;
+  bool DataRefinement = true;
   int NumberOfThreads = 0;
 
   int NeighborSearchCount = 0;
@@ -243,6 +258,7 @@ protected:
   double EvolutionSeconds = 0.0;
   double IsopointSeconds = 0.0;
   double CompletionSeconds = 0.0;
+  double DataRefinementSeconds = 0.0;
 
 private:
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lsi
@@ -74,6 +75,36 @@ bool ProjectOntoZeroLevel(
     }
   }
   return false;
+}
+
+/// Moves p along the fixed direction `normal` (unit, pointing out of f > f_iso) to where the
+/// data's approximation `evaluate(p, value, gradient)` of f - f_iso vanishes, by Newton steps
+/// on the line, but never further than `maximumMove` from where it started: the level set
+/// already located the surface to a fraction of the spacing, and the data only sharpen it.
+/// Returns false (p unchanged) when the data's gradient does not point across the surface
+/// the way the level set says.
+template <typename EvaluateFn>
+bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn evaluate,
+  double maximumMove, int iterations, Eigen::Vector3d& dataGradient)
+{
+  const Eigen::Vector3d start = p;
+  double offset = 0.0; // signed distance moved along -normal (into f > f_iso)
+  for (int k = 0; k < iterations; ++k)
+  {
+    double value;
+    if (!evaluate(start - offset * normal, value, dataGradient))
+    {
+      return false;
+    }
+    const double slope = -dataGradient.dot(normal); // d f / d offset
+    if (!(slope > 0.0) || !std::isfinite(value))
+    {
+      return false;
+    }
+    offset = std::max(-maximumMove, std::min(maximumMove, offset - value / slope));
+  }
+  p = start - offset * normal;
+  return true;
 }
 
 } // namespace lsi

@@ -39,8 +39,8 @@ struct Options
   std::size_t Samples = 2000000;
   std::uint64_t Seed = 1;
   int Threads = 0;
-  std::vector<std::string> Methods = { "level-set", "level-set-seed-spheres", "rosenthal-linsen",
-    "rosenthal-linsen-seed-spheres", "grid-route" };
+  std::vector<std::string> Methods = { "level-set", "level-set-unrefined",
+    "level-set-seed-spheres", "rosenthal-linsen", "rosenthal-linsen-seed-spheres", "grid-route" };
   std::string Json;
   bool CompareThreads = false;
 };
@@ -131,6 +131,10 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
   {
     filter->SetInitialization(vtkLevelSetIsosurface::SEED_SPHERES);
   }
+  if (name.find("unrefined") != std::string::npos)
+  {
+    filter->SetDataRefinement(false);
+  }
   lsi::ResetPeakMemory();
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
@@ -142,8 +146,10 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
     { "stencils", filter->GetStencilSeconds() },
     { "initialisation", filter->GetInitializationSeconds() },
     { "evolution", filter->GetEvolutionSeconds() },
-    { "isopoints", filter->GetIsopointSeconds() - filter->GetCompletionSeconds() },
-    { "completion", filter->GetCompletionSeconds() } };
+    { "isopoints", filter->GetIsopointSeconds() - filter->GetCompletionSeconds() -
+        filter->GetDataRefinementSeconds() },
+    { "completion", filter->GetCompletionSeconds() },
+    { "data-refinement", filter->GetDataRefinementSeconds() } };
   vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   for (vtkIdType row = 0; table && row < table->GetNumberOfRows(); ++row)
   {
@@ -264,6 +270,7 @@ int main(int argc, char* argv[])
       results.push_back(RunGrid(particles, *c, samples, spacing, o.Threads));
     }
     else if (method == "level-set" || method == "level-set-seed-spheres" ||
+      method == "level-set-unrefined" ||
       method == "rosenthal-linsen" || method == "rosenthal-linsen-seed-spheres")
     {
       results.push_back(RunFilter(method, particles, *c, samples, spacing, o.Threads));
