@@ -328,70 +328,69 @@ void DropProposalsInOccupiedVoxels(const IsopointSet& current, double cell,
   }
 }
 
-std::uint32_t Root(std::vector<std::uint32_t>& parent, std::uint32_t i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
 // A connected region of samples with one sign of phi (over the neighbour graph) in which no
 // sample has that sign in the data (say phi <= 0 everywhere but f > f_iso everywhere) cannot
 // hold a piece of the isosurface: it is a pocket the front left behind. Flip its sign, so
-// that Newton's method is not drawn to spurious zeros around it.
+// that Newton's method is not drawn to spurious zeros around it. Every sample of a pocket
+// disagrees with the data, so only the (few) disagreeing samples are searched.
 std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, std::vector<double> phi)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  std::vector<std::uint32_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0u);
-  for (std::size_t i = 0; i < n; ++i)
+  const int stride = geometry.Stride;
+  auto positive = [&](std::size_t i) { return phi[i] > 0.0; };
+  auto disagrees = [&](std::size_t i) { return positive(i) != (dataOffsets[i] > 0.0); };
+  std::vector<char> state(n, 0); // 1: in the region being searched, 2: done
+  std::vector<std::uint32_t> region;
+  for (std::size_t start = 0; start < n; ++start)
   {
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (std::size_t m = 1; m < stride; ++m)
+    if (state[start] || !disagrees(start))
     {
-      if ((phi[ids[m]] > 0.0) == (phi[i] > 0.0))
+      continue;
+    }
+    // The same-sign region of `start`, as long as it only contains disagreeing samples.
+    region.assign(1, static_cast<std::uint32_t>(start));
+    state[start] = 1;
+    bool pocket = true;
+    for (std::size_t head = 0; head < region.size(); ++head)
+    {
+      const std::uint32_t* ids = geometry.NeighborsOf(region[head]);
+      for (int m = 1; m < stride; ++m)
       {
-        const std::uint32_t a = Root(parent, static_cast<std::uint32_t>(i));
-        const std::uint32_t b = Root(parent, ids[m]);
-        if (a != b)
+        const std::uint32_t j = ids[m];
+        if (positive(j) != positive(start) || state[j] == 1)
         {
-          parent[std::max(a, b)] = std::min(a, b);
+          continue;
         }
+        if (!disagrees(j) || state[j] == 2)
+        {
+          // The region reaches a sample the data support (or, through a one-way neighbour
+          // link, a region already decided): leave it as it is.
+          pocket = false;
+          continue;
+        }
+        state[j] = 1;
+        region.push_back(j);
       }
     }
-  }
-  // A region is genuine if any of its samples agrees with the data.
-  std::vector<char> agrees(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if ((phi[i] > 0.0) == (dataOffsets[i] > 0.0))
+    for (std::uint32_t i : region)
     {
-      agrees[Root(parent, static_cast<std::uint32_t>(i))] = 1;
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (!agrees[Root(parent, static_cast<std::uint32_t>(i))])
-    {
-      phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12);
+      state[i] = 2;
+      if (pocket)
+      {
+        phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12);
+      }
     }
   }
   return phi;
 }
-} // namespace
 
-namespace
-{
 // The wide fit of phi only matters for the output normals; the data refinement replaces them.
 int NormalFitScaleFor(const IsopointSettings& settings)
 {
   return settings.RefineOnData ? 1 : settings.NormalFitScale;
 }
+
 void Complete(const Neighborhoods& geometry, const std::vector<double>& phi,
   const IsopointSettings& settings, IsopointSet& out);
 void RefineOnData(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,

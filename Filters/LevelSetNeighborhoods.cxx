@@ -75,7 +75,10 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
       keys[i] = { MortonKey(x, lower, size), static_cast<std::uint32_t>(i) };
     }
   });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> scratch;
+    RadixSortByKey(keys, scratch);
+  }
   out.Order.resize(n);
   out.Positions.resize(3 * n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {

@@ -1,11 +1,13 @@
 // Morton (Z-order) keys: sorting samples by them puts samples that are close in space close in
 // memory, so that neighbour queries and the per-sample loops over neighbours hit the cache.
-// Plain C++; the sort itself is done by the caller (in parallel).
+// Plain C++.
 #ifndef SpatialOrder_h
 #define SpatialOrder_h
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace lsi
 {
@@ -34,6 +36,37 @@ inline std::uint64_t MortonKey(const double x[3], const double lower[3], const d
     key |= SpreadBits21(cell) << k;
   }
   return key;
+}
+
+/// Sorts (key, id) pairs by key, stably, with a least-significant-digit radix sort on 16-bit
+/// digits (four passes for 63-bit keys): linear time, several times faster than std::sort on
+/// tens of millions of keys. `scratch` is resized to the same length.
+template <typename Id>
+void RadixSortByKey(std::vector<std::pair<std::uint64_t, Id>>& items,
+  std::vector<std::pair<std::uint64_t, Id>>& scratch)
+{
+  scratch.resize(items.size());
+  std::vector<std::size_t> offsets(1 << 16);
+  for (int shift = 0; shift < 64; shift += 16)
+  {
+    std::fill(offsets.begin(), offsets.end(), 0);
+    for (const auto& item : items)
+    {
+      ++offsets[(item.first >> shift) & 0xffff];
+    }
+    std::size_t total = 0;
+    for (std::size_t& offset : offsets)
+    {
+      const std::size_t count = offset;
+      offset = total;
+      total += count;
+    }
+    for (const auto& item : items)
+    {
+      scratch[offsets[(item.first >> shift) & 0xffff]++] = item;
+    }
+    items.swap(scratch);
+  }
 }
 
 } // namespace lsi

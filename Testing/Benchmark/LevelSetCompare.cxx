@@ -43,6 +43,7 @@ struct Options
     "level-set-seed-spheres", "rosenthal-linsen", "rosenthal-linsen-seed-spheres", "grid-route" };
   std::string Json;
   bool CompareThreads = false;
+  bool CheckBeatsGrid = false; // fail unless level-set beats grid-route in distance and normals
 };
 
 struct MethodResult
@@ -77,6 +78,7 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (a == "--threads") o.Threads = std::atoi(next().c_str());
     else if (a == "--json") o.Json = next();
     else if (a == "--compare-threads") o.CompareThreads = true;
+    else if (a == "--check-beats-grid") o.CheckBeatsGrid = true;
     else if (a == "--methods")
     {
       o.Methods.clear();
@@ -347,6 +349,32 @@ int main(int argc, char* argv[])
   {
     WriteJson(o.Json, o, *c, spacing, results);
     std::cout << "\nwrote " << o.Json << "\n";
+  }
+  if (o.CheckBeatsGrid)
+  {
+    const MethodResult* ours = nullptr;
+    const MethodResult* grid = nullptr;
+    for (const MethodResult& r : results)
+    {
+      ours = r.Name == "level-set" ? &r : ours;
+      grid = r.Name == "grid-route" ? &r : grid;
+    }
+    if (!ours || !grid)
+    {
+      std::cerr << "FAILED: --check-beats-grid needs the level-set and grid-route methods\n";
+      return EXIT_FAILURE;
+    }
+    const SurfaceMetrics &a = ours->Metrics, &b = grid->Metrics;
+    if (!(a.Isopoints > 0 && a.MeanDistance < b.MeanDistance &&
+          a.MeanNormalAngleDegrees < b.MeanNormalAngleDegrees && a.CoveredFraction >= 0.999 &&
+          a.UnseededIsopoints == 0))
+    {
+      std::cerr << "FAILED: level-set (distance " << a.MeanDistance << ", normal error "
+                << a.MeanNormalAngleDegrees << ", coverage " << a.CoveredFraction
+                << ") does not beat the grid route (" << b.MeanDistance << ", "
+                << b.MeanNormalAngleDegrees << ")\n";
+      return EXIT_FAILURE;
+    }
   }
   return EXIT_SUCCESS;
 }

@@ -4,8 +4,10 @@
 #include "LevelSetSplines.h"
 #include "LevelSetUpdate.h"
 #include "MovingLeastSquares.h"
+#include "SpatialOrder.h"
 #include "TangentPlaneCompletion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -284,8 +286,94 @@ void TestCompletion()
 }
 } // namespace
 
+void TestSpatialOrder()
+{
+  // Interleaving: bit b of axis k lands on bit 3 b + k.
+  Check(lsi::SpreadBits21(0x1fffff) == 0x1249249249249249ULL, "spread of all 21 bits");
+  Check(lsi::SpreadBits21(5) == ((1ULL << 0) | (1ULL << 6)), "spread of 0b101");
+  const double lower[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
+  const double a[3] = { 0.1, 0.1, 0.1 }, b[3] = { 0.9, 0.1, 0.1 }, c[3] = { 0.1, 0.9, 0.9 };
+  Check(lsi::MortonKey(a, lower, size) < lsi::MortonKey(b, lower, size) &&
+      lsi::MortonKey(b, lower, size) < lsi::MortonKey(c, lower, size),
+    "Morton order: x varies fastest, z slowest");
+  // Points of one octant are contiguous in Morton order.
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::pair<std::uint64_t, int>> keys;
+  for (int i = 0; i < 1000; ++i)
+  {
+    const double x[3] = { unit(random), unit(random), unit(random) };
+    const int octant = (x[0] >= 0.5) + 2 * (x[1] >= 0.5) + 4 * (x[2] >= 0.5);
+    keys.push_back({ lsi::MortonKey(x, lower, size), octant });
+  }
+  std::vector<std::pair<std::uint64_t, int>> sorted = keys, scratch;
+  lsi::RadixSortByKey(sorted, scratch);
+  std::stable_sort(keys.begin(), keys.end(),
+    [](const std::pair<std::uint64_t, int>& a, const std::pair<std::uint64_t, int>& b) {
+      return a.first < b.first;
+    });
+  Check(sorted == keys, "radix sort = stable sort by key");
+  bool contiguous = true;
+  for (std::size_t i = 1; i < keys.size(); ++i)
+  {
+    contiguous = contiguous && keys[i].second >= keys[i - 1].second;
+  }
+  Check(contiguous, "Morton order keeps octants contiguous");
+}
+
+void TestRosenthalLinsen()
+{
+  // phi relaxes towards g by the rate, and never by more than the step bound.
+  Check(std::abs(lsi::RosenthalLinsenValue(1.0, 1.0, 0.0, 0.5, 10.0) - 0.5) < 1e-15,
+    "half-way towards the target");
+  Check(lsi::RosenthalLinsenValue(2.0, 1.0, 2.0, 0.5, 10.0) == 2.0, "the target is a fixed point");
+  Check(std::abs(lsi::RosenthalLinsenValue(0.0, 1.0, 10.0, 0.5, 0.3) - 0.3) < 1e-15,
+    "step bounded");
+}
+
+void TestSlideOntoDataLevel()
+{
+  // f - f_iso = 0.3 - x (a plane at x = 0.3, f larger at smaller x): the outward normal is +x.
+  // From the origin the point must slide to x = 0.3 along the normal, wherever the line starts.
+  auto plane = [](const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient) {
+    value = 0.3 - p.x();
+    gradient = Eigen::Vector3d(-1, 0, 0);
+    return true;
+  };
+  Eigen::Vector3d p(0.0, 0.2, -0.1), g;
+  Check(lsi::SlideOntoDataLevel(p, Eigen::Vector3d(1, 0, 0), plane, 1.0, 3, g) &&
+      (p - Eigen::Vector3d(0.3, 0.2, -0.1)).norm() < 1e-12,
+    "slides onto a plane exactly");
+  p = Eigen::Vector3d(0.0, 0.0, 0.0);
+  Check(lsi::SlideOntoDataLevel(p, Eigen::Vector3d(1, 0, 0), plane, 0.1, 3, g) &&
+      std::abs(p.x() - 0.1) < 1e-12,
+    "the move is bounded");
+  // Along a tilted normal the line meets the plane at x = 0.3 too (Newton on the line).
+  const Eigen::Vector3d tilted = Eigen::Vector3d(1, 1, 0).normalized();
+  p = Eigen::Vector3d(0.0, 0.0, 0.0);
+  Check(lsi::SlideOntoDataLevel(p, tilted, plane, 1.0, 3, g) && std::abs(p.x() - 0.3) < 1e-12,
+    "slides along the given normal");
+  // A sphere, f - f_iso = 1 - |x|: from 1.2 along the radial normal, converges to radius 1.
+  auto sphere = [](const Eigen::Vector3d& q, double& value, Eigen::Vector3d& gradient) {
+    value = 1.0 - q.norm();
+    gradient = -q.normalized();
+    return true;
+  };
+  p = Eigen::Vector3d(1.2, 0, 0);
+  Check(lsi::SlideOntoDataLevel(p, Eigen::Vector3d(1, 0, 0), sphere, 0.5, 3, g) &&
+      std::abs(p.norm() - 1.0) < 1e-12,
+    "slides onto a sphere");
+  // Data whose gradient contradicts the normal: refused, point unchanged.
+  p = Eigen::Vector3d(0, 0, 0);
+  Check(!lsi::SlideOntoDataLevel(p, Eigen::Vector3d(-1, 0, 0), plane, 1.0, 3, g) && p.norm() == 0.0,
+    "refuses a contradicting gradient");
+}
+
 int main()
 {
+  TestSpatialOrder();
+  TestRosenthalLinsen();
+  TestSlideOntoDataLevel();
   TestSplines();
   TestMLS();
   TestTheorem1();
