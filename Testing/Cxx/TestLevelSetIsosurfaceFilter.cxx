@@ -187,6 +187,14 @@ void TestBadInput()
     ExpectError(filter, "contains no sample", "empty seed");
   }
   {
+    // A seed in the corner, where every sample lies below the isovalue: nothing to flood.
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetSeedCenter(56, 56, 56);
+    filter->SetSeedRadius(4);
+    ExpectError(filter, "nothing to flood", "seed outside the object");
+  }
+  {
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, data);
     filter->AddAdditionalSeed(-100, -100, -100, 2);

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Issue 4's benchmark: for each case at 2M particles, in one process each, the level-set filter
+# (defaults; unrefined; the paper's seed-sphere start), the Rosenthal-Linsen scheme and the grid
+# route (SPH interpolation + Flying Edges + connectivity), with the 1- vs 2-thread comparison
+# on the one-component case; then the filter alone at 20M. Tables go to stdout and
+# Results/compare-*.txt, JSON to Results/compare-*.json. About 8 minutes here.
+# Run after Scripts/setup-debian12.sh (or run-tests.sh), which builds build/bin.
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=$root/build/bin
+out=$root/Results
+mkdir -p "$out"
+for c in one-component multi-component adaptive-noisy; do
+  extra=""
+  [ "$c" = one-component ] && extra="--compare-threads"
+  echo "=== LevelSetCompare --case $c --samples 2000000 $extra"
+  "$bin/LevelSetCompare" --case "$c" --samples 2000000 --json "$out/compare-$c.json" $extra \
+    | tee "$out/compare-$c.txt"
+done
+echo "=== LevelSetCompare --case one-component --samples 20000000 --methods level-set"
+"$bin/LevelSetCompare" --case one-component --samples 20000000 --methods level-set \
+  --json "$out/compare-one-component-20M.json" | tee "$out/compare-one-component-20M.txt"
