@@ -2,6 +2,7 @@
 // surface and time, per stage and per iteration. At full size (--samples 2000000) it is the
 // benchmark quoted in the README; at reduced size, with --check-* options, a CTest test that
 // fails when an accuracy threshold is missed.
+#include "BenchmarkSupport.h"
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
 #include "SyntheticParticles.h"
@@ -95,27 +96,9 @@ bool Parse(int argc, char* argv[], Options& o)
   return true;
 }
 
-std::unique_ptr<Case> MakeCase(const std::string& name)
-{
-  if (name == "one-component") return std::unique_ptr<Case>(new OneComponentCase);
-  if (name == "multi-component") return std::unique_ptr<Case>(new MultiComponentCase);
-  if (name == "adaptive-noisy") return std::unique_ptr<Case>(new AdaptiveNoisyCase);
-  if (name == "sphere")
-    return std::unique_ptr<Case>(new SphereCase(Eigen::Vector3d(64, 64, 64), 40.0, 64.0));
-  return nullptr;
-}
-
 void Configure(vtkLevelSetIsosurface* filter, const Case& c, const Options& o)
 {
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
-  filter->SetIsoValue(c.IsoValue);
-  filter->SetSeedCenter(c.Seeds[0].Center.data());
-  filter->SetSeedRadius(c.Seeds[0].Radius);
-  for (std::size_t s = 1; s < c.Seeds.size(); ++s)
-  {
-    const Sphere3& seed = c.Seeds[s];
-    filter->AddAdditionalSeed(seed.Center.x(), seed.Center.y(), seed.Center.z(), seed.Radius);
-  }
+  SetCaseInputs(filter, c);
   filter->SetEvolutionScheme(o.Scheme);
   filter->SetInitialization(o.Initialization);
   filter->SetMaximumNumberOfIterations(o.MaximumIterations);
@@ -137,29 +120,6 @@ void Configure(vtkLevelSetIsosurface* filter, const Case& c, const Options& o)
   if (o.ReinitializationSteps >= 0) filter->SetReinitializationSteps(o.ReinitializationSteps);
 }
 
-double Seconds(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::vector<double> Flatten(vtkPolyData* isopoints, bool normals)
-{
-  const vtkIdType m = isopoints->GetNumberOfPoints();
-  std::vector<double> out(3 * m);
-  vtkDataArray* n = isopoints->GetPointData()->GetArray("Normals");
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (normals)
-    {
-      n->GetTuple(i, &out[3 * i]);
-    }
-    else
-    {
-      isopoints->GetPoint(i, &out[3 * i]);
-    }
-  }
-  return out;
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -181,7 +141,7 @@ int main(int argc, char* argv[])
   Configure(filter, *c, o);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
-  const double total = Seconds(start);
+  const double total = SecondsSince(start);
   vtkPolyData* isopoints = filter->GetOutput(0);
   vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   if (!isopoints || isopoints->GetNumberOfPoints() == 0 || !table)
@@ -189,8 +149,9 @@ int main(int argc, char* argv[])
     std::cerr << "FAILED: the filter produced no isopoints\n";
     return EXIT_FAILURE;
   }
-  const SurfaceMetrics m = MeasureSurface(
-    *c, Flatten(isopoints, false), Flatten(isopoints, true), samples, spacing);
+  std::vector<double> points, normals;
+  IsopointArrays(isopoints, points, normals);
+  const SurfaceMetrics m = MeasureSurface(*c, points, normals, samples, spacing);
 
   const int iterations = filter->GetNumberOfIterationsPerformed();
   std::cout << std::setprecision(4);
@@ -239,20 +200,11 @@ int main(int argc, char* argv[])
   }
   if (o.CompareThreads)
   {
-    double seconds[2];
-    for (int t = 1; t <= 2; ++t)
-    {
-      vtkNew<vtkLevelSetIsosurface> timed;
-      timed->SetInputData(particles);
-      Configure(timed, *c, o);
-      timed->SetNumberOfThreads(t);
-      const auto s = std::chrono::steady_clock::now();
-      timed->Update();
-      seconds[t - 1] = Seconds(s);
-      std::cout << "seconds with " << t << " thread" << (t > 1 ? "s" : "") << ": " << seconds[t - 1]
-                << "\n";
-    }
-    std::cout << "speed-up 2 threads / 1 thread: " << seconds[0] / seconds[1] << "\n";
+    const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
+      particles, [&](vtkLevelSetIsosurface* timed) { Configure(timed, *c, o); });
+    std::cout << "seconds with 1 thread: " << seconds[0] << "\nseconds with 2 threads: "
+              << seconds[1] << "\nspeed-up 2 threads / 1 thread: " << seconds[0] / seconds[1]
+              << "\n";
   }
 
   int failures = 0;

@@ -6,6 +6,7 @@
 //
 //   LevelSetCompare --case one-component|multi-component|adaptive-noisy [--samples N]
 //     [--methods a,b,...] [--threads T] [--json FILE] [--compare-threads]
+#include "BenchmarkSupport.h"
 #include "GridRoute.h"
 #include "PeakMemory.h"
 #include "SurfaceMetrics.h"
@@ -58,14 +59,6 @@ struct MethodResult
   SurfaceMetrics Metrics;
 };
 
-std::unique_ptr<Case> MakeCase(const std::string& name)
-{
-  if (name == "one-component") return std::unique_ptr<Case>(new OneComponentCase);
-  if (name == "multi-component") return std::unique_ptr<Case>(new MultiComponentCase);
-  if (name == "adaptive-noisy") return std::unique_ptr<Case>(new AdaptiveNoisyCase);
-  return nullptr;
-}
-
 bool Parse(int argc, char* argv[], Options& o)
 {
   for (int i = 1; i < argc; ++i)
@@ -98,22 +91,9 @@ bool Parse(int argc, char* argv[], Options& o)
   return true;
 }
 
-double Seconds(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void Configure(vtkLevelSetIsosurface* filter, const Case& c, int threads)
 {
-  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
-  filter->SetIsoValue(c.IsoValue);
-  filter->SetSeedCenter(c.Seeds[0].Center.data());
-  filter->SetSeedRadius(c.Seeds[0].Radius);
-  for (std::size_t s = 1; s < c.Seeds.size(); ++s)
-  {
-    const Sphere3& seed = c.Seeds[s];
-    filter->AddAdditionalSeed(seed.Center.x(), seed.Center.y(), seed.Center.z(), seed.Radius);
-  }
+  SetCaseInputs(filter, c);
   filter->SetNumberOfThreads(threads);
 }
 
@@ -140,7 +120,7 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
   lsi::ResetPeakMemory();
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
-  r.Seconds = Seconds(start);
+  r.Seconds = SecondsSince(start);
   r.PeakBytes = lsi::PeakMemoryBytes();
   r.Iterations = filter->GetNumberOfIterationsPerformed();
   r.Converged = filter->GetConverged();
@@ -157,14 +137,8 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
   {
     r.IterationSeconds.push_back(table->GetValueByName(row, "Seconds").ToDouble());
   }
-  vtkPolyData* isopoints = filter->GetOutput(0);
-  std::vector<double> points(3 * isopoints->GetNumberOfPoints()), normals(points.size());
-  vtkDataArray* n = isopoints->GetPointData()->GetArray("Normals");
-  for (vtkIdType i = 0; i < isopoints->GetNumberOfPoints(); ++i)
-  {
-    isopoints->GetPoint(i, &points[3 * i]);
-    n->GetTuple(i, &normals[3 * i]);
-  }
+  std::vector<double> points, normals;
+  IsopointArrays(filter->GetOutput(0), points, normals);
   r.Metrics = MeasureSurface(c, points, normals, samples, spacing);
   return r;
 }
@@ -272,8 +246,8 @@ int main(int argc, char* argv[])
       results.push_back(RunGrid(particles, *c, samples, spacing, o.Threads));
     }
     else if (method == "level-set" || method == "level-set-seed-spheres" ||
-      method == "level-set-unrefined" ||
-      method == "rosenthal-linsen" || method == "rosenthal-linsen-seed-spheres")
+      method == "level-set-unrefined" || method == "rosenthal-linsen" ||
+      method == "rosenthal-linsen-seed-spheres" || method == "rosenthal-linsen-unrefined")
     {
       results.push_back(RunFilter(method, particles, *c, samples, spacing, o.Threads));
     }
@@ -332,16 +306,8 @@ int main(int argc, char* argv[])
   }
   if (o.CompareThreads)
   {
-    double seconds[2];
-    for (int t = 1; t <= 2; ++t)
-    {
-      vtkNew<vtkLevelSetIsosurface> timed;
-      timed->SetInputData(particles);
-      Configure(timed, *c, t);
-      const auto s = std::chrono::steady_clock::now();
-      timed->Update();
-      seconds[t - 1] = Seconds(s);
-    }
+    const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
+      particles, [&](vtkLevelSetIsosurface* timed) { SetCaseInputs(timed, *c); });
     std::cout << "\nwhole filter, 1 thread: " << seconds[0] << " s, 2 threads: " << seconds[1]
               << " s, speed-up " << seconds[0] / seconds[1] << "\n";
   }
