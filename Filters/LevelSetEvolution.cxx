@@ -145,24 +145,23 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
         Eigen::Vector3d(&this->Gradient[3 * i]).norm(), target, settings.RelaxationRate,
         settings.MaximumStep);
     });
-    for (std::size_t k = 0; k < this->Band.size(); ++k)
-    {
-      this->Phi[this->Band[k]] = this->NewValues[k];
-    }
-    return;
   }
-  ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
-    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    const float* stencil = this->Geometry.StencilOf(i);
-    const double curvature = c.CurvatureWeight != 0.0
-      ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return unitNormal(ids[m]); })
-      : 0.0;
-    const double regularization = regularize
-      ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return distanceFlux(ids[m]); })
-      : 0.0;
-    this->NewValues[k] =
-      EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);
-  });
+  else
+  {
+    ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
+      const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+      const float* stencil = this->Geometry.StencilOf(i);
+      const double curvature = c.CurvatureWeight != 0.0
+        ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return unitNormal(ids[m]); })
+        : 0.0;
+      const double regularization = regularize
+        ? ApplyDivergenceStencil(
+            stencil, stride, [&](std::size_t m) { return distanceFlux(ids[m]); })
+        : 0.0;
+      this->NewValues[k] =
+        EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);
+    });
+  }
 
   for (std::size_t k = 0; k < this->Band.size(); ++k)
   {

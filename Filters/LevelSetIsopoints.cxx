@@ -31,7 +31,7 @@ MLSEvaluator::MLSEvaluator(
 bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
 {
   this->Gather(p);
-  return this->FitGathered(p, value, gradient);
+  return this->Fit(p, this->GatherRadius, value, gradient);
 }
 
 void MLSEvaluator::Gather(const Eigen::Vector3d& p)
@@ -50,7 +50,13 @@ bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::V
   {
     h2 = std::max(h2, (Eigen::Vector3d(this->Geometry.Position(this->Ids[j])) - p).squaredNorm());
   }
-  const double h = std::max(this->GatherRadius, std::sqrt(h2));
+  return this->Fit(p, std::max(this->GatherRadius, std::sqrt(h2)), value, gradient);
+}
+
+bool MLSEvaluator::Fit(
+  const Eigen::Vector3d& p, double h, double& value, Eigen::Vector3d& gradient)
+{
+  const std::size_t k = this->Found;
   if (!BuildLinearStencil(p.data(), k,
         [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
         LinearStencilView{ this->GradientCoefficients.data(), this->ValueCoefficients.data() }))

@@ -66,6 +66,9 @@ public:
   bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
 
 private:
+  // The fit of the gathered samples at p with support radius h.
+  bool Fit(const Eigen::Vector3d& p, double h, double& value, Eigen::Vector3d& gradient);
+
   std::size_t Found = 0;
   double GatherRadius = 0.0;
   const Neighborhoods& Geometry;

@@ -1,6 +1,5 @@
 #include "LevelSetNeighborhoods.h"
 
-#include "AutomaticParameters.h"
 #include "MovingLeastSquares.h"
 #include "SpatialOrder.h"
 
@@ -222,7 +221,6 @@ bool BuildNeighborhoods(
     sumRadius += out.Radius[i];
   }
   out.MeanRadius = n ? sumRadius / n : 0.0;
-  out.MeanSpacing = SpacingFromNeighborhoodRadius(out.MeanRadius, numberOfNeighbors);
   return true;
 }
 

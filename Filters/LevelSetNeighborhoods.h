@@ -37,7 +37,6 @@ struct Neighborhoods
   mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
   mutable std::size_t ComputedStencils = 0;
 
-  double MeanSpacing = 0.0;     // mean of the local spacings (AutomaticParameters.h)
   double MeanRadius = 0.0;      // mean h_i
 
   // Seconds spent on each part of the build.
