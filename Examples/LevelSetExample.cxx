@@ -46,6 +46,7 @@ int main(int argc, char* argv[])
   isosurface->SetIsoValue(0.0);
   isosurface->SetSeedCenter(50, 50, 50);
   isosurface->SetSeedRadius(10);
+  isosurface->SetOutputTypeToIsopoints(); // the points themselves, to measure them
   isosurface->Update();
   vtkPolyData* isopoints = isosurface->GetOutput(0);
 

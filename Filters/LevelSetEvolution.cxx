@@ -336,7 +336,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   }
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {
-    if (aborted && aborted())
+    if (Aborted(aborted))
     {
       return false;
     }

@@ -14,7 +14,7 @@ namespace
 {
 // Breadth-first flood from the seed samples through neighbours with f > f_iso.
 std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& values,
-  const std::vector<char>& inSeed, FloodResult& result)
+  const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
@@ -29,7 +29,7 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
     }
   }
   result.SeedSamples = queue.size();
-  for (std::size_t head = 0; head < queue.size(); ++head)
+  for (std::size_t head = 0; head < queue.size() && !stop.Stop(); ++head)
   {
     const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
     for (int m = 1; m < stride; ++m)
@@ -48,14 +48,14 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
 // Outside pockets next to the inside with fewer than `bubbleSize` samples become inside.
 // Each search stops as soon as its pocket proves large, so the cost stays near the front.
 void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vector<char>& inside,
-  FloodResult& result)
+  FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
   std::vector<char> large(n, 0); // outside samples known to belong to a large pocket
   std::vector<std::uint32_t> pocket;
   std::vector<char> visited(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
   {
     if (!inside[i])
     {
@@ -111,11 +111,12 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
 
 FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  double halfWidth, std::vector<double>& phi)
+  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted)
 {
   FloodResult result;
-  std::vector<char> inside = Flood(geometry, values, inSeed, result);
-  FillBubbles(geometry, bubbleSize, inside, result);
+  SerialAbortCheck stop(aborted);
+  std::vector<char> inside = Flood(geometry, values, inSeed, result, stop);
+  FillBubbles(geometry, bubbleSize, inside, result, stop);
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
   // carries the crossing nearest to it found so far and offers it to its neighbours.
@@ -125,7 +126,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
   {
     const Eigen::Vector3d xi(geometry.Position(i));
     const std::uint32_t* ids = geometry.NeighborsOf(i);
@@ -157,7 +158,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       heap.push({ distance[i], static_cast<std::uint32_t>(i) });
     }
   }
-  while (!heap.empty())
+  while (!heap.empty() && !stop.Stop())
   {
     const Entry top = heap.top();
     heap.pop();
@@ -179,6 +180,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       }
     }
   }
+  result.Aborted = stop.WasStopped();
   phi.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

@@ -20,6 +20,7 @@ struct FloodResult
   std::size_t InsideSamples = 0;  // samples reached by the flood
   std::size_t FilledBubbles = 0;  // samples of small outside pockets taken as inside
   std::size_t SeedSamples = 0;    // seed samples with f > f_iso (the flood's sources)
+  bool Aborted = false;           // stopped on request; phi is then incomplete
 };
 
 /// `values`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
@@ -29,7 +30,7 @@ struct FloodResult
 /// and clamped to +-halfWidth beyond.
 FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  double halfWidth, std::vector<double>& phi);
+  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted);
 
 } // namespace lsi
 

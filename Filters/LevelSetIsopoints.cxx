@@ -418,7 +418,7 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   {
     valid[k] = 1;
   }
-  if (aborted && aborted())
+  if (Aborted(aborted))
   {
     return false;
   }
@@ -433,7 +433,7 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   }
   if (settings.Completion && !out.Points.empty())
   {
-    if (aborted && aborted())
+    if (Aborted(aborted))
     {
       return false;
     }
@@ -441,7 +441,7 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   }
   if (settings.RefineOnData && !out.Points.empty())
   {
-    if (aborted && aborted())
+    if (Aborted(aborted))
     {
       return false;
     }

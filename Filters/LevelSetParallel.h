@@ -12,8 +12,41 @@
 namespace lsi
 {
 
-/// Returns true when the caller asked to stop.
-using AbortCheck = std::function<bool()>;
+/// Called between blocks of work with the fraction of the current loop done (negative when
+/// unknown), so that the caller can report progress; returns true when the caller asked to stop.
+using AbortCheck = std::function<bool(double done)>;
+
+inline bool Aborted(const AbortCheck& aborted, double done = -1.0)
+{
+  return aborted && aborted(done);
+}
+
+/// For serial loops: Stop() asks `aborted` once every `period` calls, and stays true once it
+/// said yes.
+class SerialAbortCheck
+{
+public:
+  explicit SerialAbortCheck(const AbortCheck& aborted, std::size_t period = 65536)
+    : Check(aborted)
+    , Period(period)
+  {
+  }
+  bool Stop()
+  {
+    if (!this->Stopped && ++this->Calls % this->Period == 0)
+    {
+      this->Stopped = Aborted(this->Check);
+    }
+    return this->Stopped;
+  }
+  bool WasStopped() const { return this->Stopped; }
+
+private:
+  const AbortCheck& Check;
+  std::size_t Period;
+  std::size_t Calls = 0;
+  bool Stopped = false;
+};
 
 /// Runs body(begin, end) over [0, count) with vtkSMPTools::For, in blocks of `block` items.
 /// Returns false if `aborted()` said so between two blocks.
@@ -23,7 +56,7 @@ bool ParallelForInBlocks(
 {
   for (std::size_t start = 0; start < count; start += block)
   {
-    if (aborted && aborted())
+    if (Aborted(aborted, static_cast<double>(start) / static_cast<double>(count)))
     {
       return false;
     }

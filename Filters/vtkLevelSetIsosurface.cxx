@@ -4,7 +4,10 @@
 #include "LevelSetEvolution.h"
 #include "LevelSetInitialization.h"
 #include "LevelSetIsopoints.h"
+#include "LevelSetNeighborCache.h"
 #include "LevelSetNeighborhoods.h"
+#include "LevelSetSplatOutput.h"
+#include "LevelSetSurfaceAttributes.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -20,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -113,19 +117,7 @@ double DistanceInsideBox(const double x[3], const double bounds[6])
 
 struct vtkLevelSetIsosurface::Internals
 {
-  lsi::Neighborhoods Geometry;
-  // What the cached neighbourhoods were built from.
-  vtkPoints* Points = nullptr;
-  vtkMTimeType PointsTime = 0;
-  vtkIdType NumberOfPoints = -1;
-  int NumberOfNeighbors = -1;
-
-  bool CacheMatches(vtkPoints* points, int neighbors) const
-  {
-    return points == this->Points && points->GetMTime() == this->PointsTime &&
-      points->GetNumberOfPoints() == this->NumberOfPoints &&
-      neighbors == this->NumberOfNeighbors;
-  }
+  lsi::NeighborCache Cache;
 };
 
 vtkLevelSetIsosurface::vtkLevelSetIsosurface()
@@ -203,7 +195,13 @@ int vtkLevelSetIsosurface::RequestData(
 bool vtkLevelSetIsosurface::Execute(
   vtkPointSet* input, vtkPolyData* isopointOutput, vtkPolyData* particleOutput, vtkTable* table)
 {
-  const lsi::AbortCheck aborted = [this]() { return this->CheckAbort(); };
+  // Each stage reports its progress over its own part of [0, 1] and checks for abort between
+  // blocks of work (every few tens of milliseconds).
+  auto stage = [this](double from, double to) -> lsi::AbortCheck {
+    return [this, from, to](double done) {
+      return this->ProgressOrAbort(done >= 0.0 ? from + (to - from) * done : -1.0);
+    };
+  };
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
 
@@ -284,27 +282,27 @@ bool vtkLevelSetIsosurface::Execute(
   }
 
   // --- Neighbourhoods: built once per geometry, kept while only parameters change ------
-  this->UpdateProgress(0.0);
-  auto start = Clock::now();
-  Internals& cache = *this->Internal;
-  vtkPoints* points = input->GetPoints();
-  if (!cache.CacheMatches(points, this->NumberOfNeighbors))
+  if (this->ProgressOrAbort(0.02))
   {
-    cache.Points = nullptr;
-    if (!lsi::BuildNeighborhoods(points, this->NumberOfNeighbors, cache.Geometry, aborted))
+    return false;
+  }
+  auto start = Clock::now();
+  vtkPoints* points = input->GetPoints();
+  const lsi::Neighborhoods* cached = this->Internal->Cache.Find(points, this->NumberOfNeighbors);
+  if (!cached)
+  {
+    cached = this->Internal->Cache.Build(points, this->NumberOfNeighbors,
+      static_cast<std::size_t>(this->NeighborCacheSize), stage(0.02, 0.35));
+    if (!cached)
     {
       return false;
     }
     ++this->NeighborSearchCount;
-    cache.Points = points;
-    cache.PointsTime = points->GetMTime();
-    cache.NumberOfPoints = n;
-    cache.NumberOfNeighbors = this->NumberOfNeighbors;
     this->NeighborSearchSeconds = SecondsSince(start);
-    this->SpatialSortSeconds = cache.Geometry.SortSeconds;
-    this->NearestNeighborSeconds = cache.Geometry.SearchSeconds;
+    this->SpatialSortSeconds = cached->SortSeconds;
+    this->NearestNeighborSeconds = cached->SearchSeconds;
   }
-  const lsi::Neighborhoods& geometry = cache.Geometry;
+  const lsi::Neighborhoods& geometry = *cached;
   if (geometry.DuplicateSamples > 0)
   {
     vtkErrorMacro("The input has " << geometry.DuplicateSamples
@@ -319,7 +317,10 @@ bool vtkLevelSetIsosurface::Execute(
                   "everywhere: the method needs volume (3D) samples.");
     return false;
   }
-  this->UpdateProgress(0.2);
+  if (this->ProgressOrAbort(0.35))
+  {
+    return false;
+  }
 
   // --- The data in Morton order, and the sampling scale where the surface is -------------
   std::vector<double> offsets(n), dataSign(n); // f - f_iso and its sign
@@ -418,7 +419,11 @@ bool vtkLevelSetIsosurface::Execute(
     }
     const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, offsets, inSeed,
       static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings),
-      phi);
+      phi, stage(0.35, 0.45));
+    if (flood.Aborted)
+    {
+      return false;
+    }
     if (flood.SeedSamples == 0)
     {
       vtkErrorMacro("No sample inside the seed sphere(s) has a value above IsoValue "
@@ -432,23 +437,25 @@ bool vtkLevelSetIsosurface::Execute(
   start = Clock::now();
   vtkNew<vtkTable> rows = EmptyConvergenceTable();
   lsi::LevelSetEvolution evolution(geometry, dataSign, phi, &offsets);
-  const int maximum = std::max(1, this->MaximumNumberOfIterations);
   const bool finished = evolution.Run(
     settings,
     [&](const lsi::IterationRecord& record) {
       AppendRow(rows, record);
       this->NumberOfIterationsPerformed = record.Iteration;
-      this->UpdateProgress(0.2 + 0.65 * record.Iteration / maximum);
-      return !this->CheckAbort();
+      // The number of iterations is not known in advance: approach 0.8 (half way after 3).
+      return !this->ProgressOrAbort(0.45 + 0.35 * record.Iteration / (record.Iteration + 3.0));
     },
-    aborted);
+    stage(0.45, 0.45));
   this->EvolutionSeconds = SecondsSince(start);
   if (!finished)
   {
     return false;
   }
   this->Converged = evolution.Converged();
-  this->UpdateProgress(0.85);
+  if (this->ProgressOrAbort(0.8))
+  {
+    return false;
+  }
 
   // --- Isopoints --------------------------------------------------------------------------
   start = Clock::now();
@@ -460,7 +467,8 @@ bool vtkLevelSetIsosurface::Execute(
   lsi::IsopointSet isopoints;
   isopointSettings.RefineOnData = this->DataRefinement;
   isopointSettings.DataMaximumMove = 0.5 * spacing;
-  if (!lsi::ExtractIsopoints(geometry, phi, offsets, isopointSettings, isopoints, aborted))
+  if (!lsi::ExtractIsopoints(
+        geometry, phi, offsets, isopointSettings, isopoints, stage(0.8, 0.92)))
   {
     return false;
   }
@@ -476,22 +484,25 @@ bool vtkLevelSetIsosurface::Execute(
   }
 
   // --- Outputs ----------------------------------------------------------------------------
-  const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
-  vtkNew<vtkPoints> isopointCoordinates;
-  isopointCoordinates->SetDataTypeToDouble();
-  isopointCoordinates->SetNumberOfPoints(m);
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(m);
-  for (vtkIdType i = 0; i < m; ++i)
+  start = Clock::now();
+  vtkNew<vtkPolyData> surface;
+  if (!this->SurfaceOutput(input, geometry, isopoints, surface, stage(0.92, 0.98)))
   {
-    isopointCoordinates->SetPoint(i, &isopoints.Points[3 * i]);
-    normals->SetTuple(i, &isopoints.Normals[3 * i]);
+    return false;
   }
-  isopointOutput->SetPoints(isopointCoordinates);
-  isopointOutput->SetVerts(VertexCells(m));
-  isopointOutput->GetPointData()->SetNormals(normals);
+  this->NumberOfIsopoints = surface->GetNumberOfPoints();
+  if (this->OutputType == SPLATS)
+  {
+    if (!lsi::MakeSplatPolygons(surface, this->SplatSides, isopointOutput, stage(0.98, 1.0)))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    isopointOutput->ShallowCopy(surface);
+  }
+  this->OutputSeconds = SecondsSince(start);
 
   particleOutput->SetPoints(points);
   particleOutput->SetVerts(VertexCells(n));
@@ -507,6 +518,108 @@ bool vtkLevelSetIsosurface::Execute(
 
   table->ShallowCopy(rows);
   this->UpdateProgress(1.0);
+  return true;
+}
+
+bool vtkLevelSetIsosurface::ProgressOrAbort(double progress)
+{
+  if (progress >= 0.0)
+  {
+    this->UpdateProgress(progress);
+  }
+  return this->CheckAbort();
+}
+
+bool vtkLevelSetIsosurface::SurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+  const lsi::IsopointSet& isopoints, vtkPolyData* surface, const lsi::AbortCheck& aborted)
+{
+  const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
+  vtkNew<vtkPoints> coordinates;
+  coordinates->SetDataTypeToDouble();
+  coordinates->SetNumberOfPoints(m);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    coordinates->SetPoint(i, &isopoints.Points[3 * i]);
+    normals->SetTuple(i, &isopoints.Normals[3 * i]);
+  }
+  surface->SetPoints(coordinates);
+  surface->SetVerts(VertexCells(m));
+  surface->GetPointData()->SetNormals(normals);
+
+  std::vector<double> radii;
+  if (!lsi::SplatRadii(isopoints.Points, 6, this->SplatScale, radii, aborted))
+  {
+    return false;
+  }
+  vtkNew<vtkFloatArray> radius;
+  radius->SetName("SplatRadius");
+  radius->SetNumberOfValues(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    radius->SetValue(i, static_cast<float>(radii[i]));
+  }
+  surface->GetPointData()->AddArray(radius);
+
+  if (!this->InterpolateArrays)
+  {
+    return true;
+  }
+  // Every numeric point array of the input, except names the filter itself produces.
+  std::vector<vtkSmartPointer<vtkDataArray>> sources, targets;
+  vtkPointData* inputData = input->GetPointData();
+  for (int a = 0; a < inputData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = inputData->GetArray(a);
+    if (!array || !array->GetName() || array->GetDataType() == VTK_BIT ||
+      surface->GetPointData()->GetArray(array->GetName()))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> source = array;
+    if (!array->HasStandardMemoryLayout())
+    {
+      // Read from many threads: only arrays with plain memory are safe for that.
+      source = vtkSmartPointer<vtkDoubleArray>::New();
+      source->DeepCopy(array);
+    }
+    vtkSmartPointer<vtkDataArray> target;
+    if (array->GetDataType() == VTK_FLOAT)
+    {
+      target = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    else
+    {
+      target = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    target->SetName(array->GetName());
+    target->SetNumberOfComponents(array->GetNumberOfComponents());
+    target->SetNumberOfTuples(m);
+    sources.push_back(source);
+    targets.push_back(target);
+  }
+  std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
+  std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
+  const std::size_t fitCount = 2 * static_cast<std::size_t>(geometry.Stride);
+  if (!lsi::InterpolatePointArrays(
+        geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
+  {
+    return false;
+  }
+  for (vtkDataArray* target : targetList)
+  {
+    surface->GetPointData()->AddArray(target);
+  }
+  // Colour by the isosurface's own scalar by default, as Contour does.
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  if (scalars && scalars->GetName() && surface->GetPointData()->GetArray(scalars->GetName()))
+  {
+    surface->GetPointData()->SetActiveScalars(scalars->GetName());
+  }
   return true;
 }
 
@@ -532,6 +645,11 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Initialization: " << this->Initialization << "\n";
   os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "OutputType: " << this->OutputType << "\n";
+  os << indent << "SplatScale: " << this->SplatScale << "\n";
+  os << indent << "SplatSides: " << this->SplatSides << "\n";
+  os << indent << "InterpolateArrays: " << (this->InterpolateArrays ? "On" : "Off") << "\n";
+  os << indent << "NeighborCacheSize: " << this->NeighborCacheSize << "\n";
   os << indent << "NeighborSearchCount: " << this->NeighborSearchCount << "\n";
   os << indent << "NumberOfIterationsPerformed: " << this->NumberOfIterationsPerformed << "\n";
   os << indent << "Converged: " << this->Converged << "\n";

@@ -15,13 +15,20 @@
  * crossings between neighbours, refined by Newton's method on the MLS approximation and completed
  * on tangent planes so that the set renders without holes.
  *
- * Outputs: port 0, the isopoints (one vertex per point) with unit "Normals" pointing out of the
- * region where f > IsoValue; port 1, the input samples as vertices with their point data and a
+ * Outputs: port 0, the surface: by default oriented splats (one small polygon per isopoint in
+ * its tangent plane, so that the default Surface representation shows a closed shaded surface),
+ * or the isopoints themselves (one vertex per point, for the Points or Point Gaussian
+ * representation). Both carry unit "Normals" pointing out of the region where f > IsoValue, a
+ * "SplatRadius" (the local isopoint spacing, for Point Gaussian's scale array) and, unless
+ * InterpolateArrays is off, every point array of the input interpolated by an MLS linear fit
+ * (a linear field is reproduced exactly). Port 1, the input samples as vertices with their point data and a
  * "LevelSet" array (the final phi); port 2, a vtkTable with one row per iteration (Iteration,
  * SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds).
  *
  * The neighbourhoods (and MLS stencils) depend only on the points: they are kept across
- * re-executions while the input's points and NumberOfNeighbors are unchanged.
+ * re-executions for the last NeighborCacheSize point sets (recognised by their coordinates), so
+ * on a time series each time step keeps its own, and changing the isovalue or the seed, or
+ * returning to a time step, does not search again.
  *
  * Threads: loops run in vtkSMPTools with the STDThread backend on NumberOfThreads threads
  * (0: all cores), whatever the global backend is.
@@ -34,11 +41,17 @@
 #include "LevelSetIsosurfaceFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 #include <vector> // for std::vector
 
 class vtkPointSet;
 class vtkTable;
+namespace lsi
+{
+struct Neighborhoods;
+struct IsopointSet;
+}
 
 class LEVELSETISOSURFACEFILTERS_EXPORT vtkLevelSetIsosurface : public vtkPolyDataAlgorithm
 {
@@ -190,6 +203,49 @@ public:
   vtkGetMacro(Initialization, int);
   ///@}
 
+  enum OutputTypes
+  {
+    ISOPOINTS = 0, // one vertex per isopoint
+    SPLATS = 1     // one oriented polygon per isopoint (default)
+  };
+  ///@{
+  /** What port 0 holds: SPLATS (default), a closed surface of small oriented polygons that any
+   * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). */
+  vtkSetClampMacro(OutputType, int, ISOPOINTS, SPLATS);
+  vtkGetMacro(OutputType, int);
+  void SetOutputTypeToIsopoints() { this->SetOutputType(ISOPOINTS); }
+  void SetOutputTypeToSplats() { this->SetOutputType(SPLATS); }
+  ///@}
+
+  ///@{
+  /** Splat radius (the "SplatRadius" array, and the size of the polygons) relative to the
+   * distance from each isopoint to its 6th nearest isopoint. Default 1. */
+  vtkSetClampMacro(SplatScale, double, 0.01, 100.0);
+  vtkGetMacro(SplatScale, double);
+  ///@}
+
+  ///@{
+  /** Corners of each splat polygon. Default 8. */
+  vtkSetClampMacro(SplatSides, int, 3, 64);
+  vtkGetMacro(SplatSides, int);
+  ///@}
+
+  ///@{
+  /** Interpolate every point array of the input onto the surface (MLS linear fit over the
+   * 2 (NumberOfNeighbors + 1) nearest particles), so it can be coloured by any particle
+   * quantity. Default on. */
+  vtkSetMacro(InterpolateArrays, bool);
+  vtkGetMacro(InterpolateArrays, bool);
+  vtkBooleanMacro(InterpolateArrays, bool);
+  ///@}
+
+  ///@{
+  /** How many particle geometries (e.g. time steps) keep their neighbourhoods for reuse.
+   * Each costs about (12 NumberOfNeighbors + 100) bytes per particle. Default 4. */
+  vtkSetClampMacro(NeighborCacheSize, int, 1, 1000);
+  vtkGetMacro(NeighborCacheSize, int);
+  ///@}
+
   ///@{
   /** Threads for the parallel loops; 0 (default) uses all cores. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -199,6 +255,7 @@ public:
   ///@{
   /** Read-only results of the last execution. */
   vtkGetMacro(NeighborSearchCount, int);  // how many times the neighbourhoods were built
+  vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);
   vtkGetMacro(MeanSampleSpacing, double);
@@ -214,6 +271,7 @@ public:
   vtkGetMacro(IsopointSeconds, double); // includes the completion
   vtkGetMacro(CompletionSeconds, double);
   vtkGetMacro(DataRefinementSeconds, double); // included in IsopointSeconds
+  vtkGetMacro(OutputSeconds, double);         // splat radii, interpolated arrays, polygons
   ///@}
 
 protected:
@@ -242,8 +300,14 @@ protected:
   int Initialization = FLOOD;
   bool DataRefinement = true;
   int NumberOfThreads = 0;
+  int OutputType = SPLATS;
+  double SplatScale = 1.0;
+  int SplatSides = 8;
+  bool InterpolateArrays = true;
+  int NeighborCacheSize = 4;
 
   int NeighborSearchCount = 0;
+  vtkIdType NumberOfIsopoints = 0;
   int NumberOfIterationsPerformed = 0;
   bool Converged = false;
   double MeanSampleSpacing = 0.0;
@@ -259,6 +323,7 @@ protected:
   double IsopointSeconds = 0.0;
   double CompletionSeconds = 0.0;
   double DataRefinementSeconds = 0.0;
+  double OutputSeconds = 0.0;
 
 private:
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
@@ -266,6 +331,12 @@ private:
 
   bool Execute(vtkPointSet* input, vtkPolyData* isopoints, vtkPolyData* particles,
     vtkTable* convergence);
+  // Isopoints as vertices with normals, splat radii and the interpolated input arrays.
+  bool SurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const lsi::IsopointSet& isopoints, vtkPolyData* surface,
+    const std::function<bool(double)>& aborted);
+  // Reports progress (if not negative) and returns whether the user asked to abort.
+  bool ProgressOrAbort(double progress);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

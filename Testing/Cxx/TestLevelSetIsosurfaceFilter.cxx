@@ -77,6 +77,7 @@ vtkNew<vtkPolyData> Ball(vtkIdType count, int components = 1)
 void Configure(vtkLevelSetIsosurface* filter, vtkPolyData* input)
 {
   filter->SetInputData(input);
+  filter->SetOutputTypeToIsopoints();
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
   filter->SetIsoValue(0.0);
   filter->SetSeedCenter(30, 30, 30);
@@ -119,9 +120,20 @@ void TestReuseOfNeighbours()
   filter->SetNumberOfNeighbors(20);
   filter->Update();
   Check(filter->GetNeighborSearchCount() == 2, "NumberOfNeighbors change rebuilds them");
+  data->GetPoints()->Modified(); // touched, same coordinates: recognised by its fingerprint
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 2, "unchanged coordinates reuse them");
+  double first0[3];
+  data->GetPoint(0, first0);
+  data->GetPoints()->SetPoint(0, first0[0] + 0.01, first0[1], first0[2]);
   data->GetPoints()->Modified();
   filter->Update();
   Check(filter->GetNeighborSearchCount() == 3, "moved points rebuild them");
+  data->GetPoints()->SetPoint(0, first0);
+  data->GetPoints()->Modified();
+  filter->Update();
+  Check(filter->GetNeighborSearchCount() == 3,
+    "returning to earlier coordinates (an earlier time step) reuses their neighbours");
   // The other outputs: LevelSet on the particles, one table row per iteration.
   Check(filter->GetOutput(1)->GetPointData()->GetArray("LevelSet") != nullptr, "LevelSet array");
   vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));

@@ -81,6 +81,7 @@ inline std::array<double, 2> SecondsWithOneAndTwoThreads(
   {
     vtkNew<vtkLevelSetIsosurface> filter;
     filter->SetInputData(particles);
+    filter->SetOutputTypeToIsopoints();
     configure(filter);
     filter->SetNumberOfThreads(threads);
     const auto start = std::chrono::steady_clock::now();

@@ -1,0 +1,51 @@
+// Neighbourhoods depend only on the particle positions, and searching them is the most
+// expensive stage. This keeps the last few (one per time step on a time series), recognised by
+// a fingerprint of the coordinates, so that changing the isovalue or the seed, or returning to a
+// time step, reuses them.
+#ifndef LevelSetNeighborCache_h
+#define LevelSetNeighborCache_h
+
+#include "LevelSetNeighborhoods.h"
+
+#include "vtkType.h"
+
+#include <cstdint>
+#include <list>
+#include <memory>
+
+class vtkPoints;
+
+namespace lsi
+{
+
+/// A 64-bit hash of the point coordinates (bit patterns, in order).
+std::uint64_t CoordinateFingerprint(vtkPoints* points);
+
+class NeighborCache
+{
+public:
+  /// The neighbourhoods of `points` with `neighbors` neighbours if cached (and marks them most
+  /// recently used), else null.
+  const Neighborhoods* Find(vtkPoints* points, int neighbors);
+  /// Builds and stores the neighbourhoods of `points`, dropping the least recently used entries
+  /// beyond `capacity`. Returns null when aborted.
+  const Neighborhoods* Build(
+    vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted);
+  std::size_t Size() const { return this->Entries.size(); }
+
+private:
+  struct Entry
+  {
+    Neighborhoods Geometry;
+    vtkPoints* Points = nullptr; // quick match: same object, unmodified since
+    vtkMTimeType PointsTime = 0;
+    vtkIdType NumberOfPoints = 0;
+    int NumberOfNeighbors = 0;
+    std::uint64_t Fingerprint = 0;
+  };
+  std::list<std::unique_ptr<Entry>> Entries; // most recently used first
+};
+
+} // namespace lsi
+
+#endif

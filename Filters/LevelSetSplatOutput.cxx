@@ -1,0 +1,89 @@
+#include "LevelSetSplatOutput.h"
+
+#include "Splats.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+namespace lsi
+{
+
+bool MakeSplatPolygons(
+  vtkPolyData* isopoints, int sides, vtkPolyData* splats, const AbortCheck& aborted)
+{
+  const vtkIdType count = isopoints->GetNumberOfPoints();
+  vtkPointData* pointData = isopoints->GetPointData();
+  vtkDataArray* normals = pointData->GetArray("Normals");
+  vtkDataArray* radii = pointData->GetArray("SplatRadius");
+  const vtkIdType corners = count * sides;
+
+  vtkNew<vtkPoints> cornerPoints;
+  cornerPoints->SetDataTypeToDouble();
+  cornerPoints->SetNumberOfPoints(corners);
+  double* xyz = static_cast<double*>(cornerPoints->GetData()->GetVoidPointer(0));
+  const bool completed = ParallelForInBlocks(
+    static_cast<std::size_t>(count),
+    [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        double c[3], n[3];
+        isopoints->GetPoint(static_cast<vtkIdType>(i), c);
+        normals->GetTuple(static_cast<vtkIdType>(i), n);
+        DiskCorners(Eigen::Vector3d(c), Eigen::Vector3d(n).normalized(),
+          radii->GetComponent(static_cast<vtkIdType>(i), 0), sides, &xyz[3 * i * sides]);
+      }
+    },
+    aborted);
+  if (!completed)
+  {
+    return false;
+  }
+
+  // Polygon p uses corners p * sides ... p * sides + sides - 1.
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(corners);
+  vtkNew<vtkIdList> owner; // the isopoint each corner comes from
+  owner->SetNumberOfIds(corners);
+  for (vtkIdType p = 0; p <= count; ++p)
+  {
+    offsets->SetValue(p, p * sides);
+  }
+  for (vtkIdType k = 0; k < corners; ++k)
+  {
+    connectivity->SetValue(k, k);
+    owner->SetId(k, k / sides);
+  }
+  vtkNew<vtkCellArray> polygons;
+  polygons->SetData(offsets, connectivity);
+
+  splats->Initialize();
+  splats->SetPoints(cornerPoints);
+  splats->SetPolys(polygons);
+  vtkPointData* cornerData = splats->GetPointData();
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* source = pointData->GetArray(a);
+    if (!source)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(source->NewInstance());
+    copy->SetName(source->GetName());
+    copy->SetNumberOfComponents(source->GetNumberOfComponents());
+    copy->SetNumberOfTuples(corners);
+    source->GetTuples(owner, copy);
+    cornerData->AddArray(copy);
+  }
+  cornerData->SetActiveNormals("Normals");
+  return true;
+}
+
+} // namespace lsi

@@ -1,0 +1,22 @@
+// Turns isopoints with "Normals" and "SplatRadius" into oriented splats: one regular polygon per
+// isopoint in its tangent plane, as ordinary polygons that any VTK renderer or exporter draws
+// (a closed, shaded surface with the default Surface representation).
+#ifndef LevelSetSplatOutput_h
+#define LevelSetSplatOutput_h
+
+#include "LevelSetParallel.h"
+
+class vtkPolyData;
+
+namespace lsi
+{
+
+/// Fills `splats` with `sides` corners per point of `isopoints` and one polygon per point; every
+/// point array of `isopoints` (normals, radius, interpolated data) is copied to the corners of
+/// its polygon. Returns false only when aborted.
+bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, vtkPolyData* splats,
+  const AbortCheck& aborted);
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,285 @@
+// What the surface output carries and how it follows time:
+// - every input point array interpolated onto the isopoints reproduces a linear field exactly;
+// - the splat polygons lie in the tangent planes, one per isopoint, with the splat radius;
+// - on a time series the filter runs per time step, and each step keeps its neighbourhoods.
+#include "vtkLevelSetIsosurface.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+double Linear(const double x[3]) { return 3.0 * x[0] - 2.0 * x[1] + 0.5 * x[2] + 7.0; }
+
+// `count` random particles in [0, 60]^3 (seeded by `seed`): f = radius - |x - 30| and, to
+// interpolate, "linear" (a scalar), "velocity" (a linear vector field) and "temperature" (float).
+vtkSmartPointer<vtkPolyData> Ball(int count, double radius, int seed)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(seed);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> f, linear, velocity;
+  vtkNew<vtkFloatArray> temperature;
+  f->SetName("f");
+  linear->SetName("linear");
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  temperature->SetName("temperature");
+  for (int i = 0; i < count; ++i)
+  {
+    double x[3];
+    for (double& v : x)
+    {
+      random->Next();
+      v = 60.0 * random->GetValue();
+    }
+    points->InsertNextPoint(x);
+    f->InsertNextValue(
+      radius - std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30)));
+    linear->InsertNextValue(Linear(x));
+    velocity->InsertNextTuple3(x[1], -x[0], 2.0 * x[2] - 1.0);
+    temperature->InsertNextValue(static_cast<float>(100.0 + x[2]));
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->GetPointData()->AddArray(f);
+  data->GetPointData()->AddArray(linear);
+  data->GetPointData()->AddArray(velocity);
+  data->GetPointData()->AddArray(temperature);
+  return data;
+}
+
+void Configure(vtkLevelSetIsosurface* filter)
+{
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
+  filter->SetIsoValue(0.0);
+  filter->SetSeedCenter(30, 30, 30);
+  filter->SetSeedRadius(5);
+}
+
+void TestInterpolatedArrays()
+{
+  vtkSmartPointer<vtkPolyData> data = Ball(30000, 18.0, 3);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(data);
+  Configure(filter);
+  filter->SetOutputTypeToIsopoints();
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput(0);
+  vtkPointData* pd = out->GetPointData();
+  vtkDataArray* linear = pd->GetArray("linear");
+  vtkDataArray* velocity = pd->GetArray("velocity");
+  vtkDataArray* temperature = pd->GetArray("temperature");
+  Check(out->GetNumberOfPoints() > 1000, "isopoints produced");
+  Check(linear && velocity && temperature && pd->GetArray("f"), "every input array is interpolated");
+  if (!(linear && velocity && temperature))
+  {
+    return;
+  }
+  Check(velocity->GetNumberOfComponents() == 3, "vector keeps its 3 components");
+  Check(temperature->GetDataType() == VTK_FLOAT, "float array stays float");
+  double worstScalar = 0.0, worstVector = 0.0, worstFloat = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3], v[3];
+    out->GetPoint(i, x);
+    worstScalar = std::max(worstScalar, std::abs(linear->GetComponent(i, 0) - Linear(x)));
+    velocity->GetTuple(i, v);
+    worstVector = std::max({ worstVector, std::abs(v[0] - x[1]), std::abs(v[1] + x[0]),
+      std::abs(v[2] - (2.0 * x[2] - 1.0)) });
+    worstFloat = std::max(worstFloat, std::abs(temperature->GetComponent(i, 0) - (100.0 + x[2])));
+  }
+  std::cout << out->GetNumberOfPoints() << " isopoints; largest error of the interpolated linear "
+            << "scalar " << worstScalar << ", vector " << worstVector << ", float " << worstFloat
+            << "\n";
+  // Values are O(100): rounding of a 54-term weighted sum stays near 1e-12.
+  Check(worstScalar < 1e-9, "linear scalar reproduced to rounding");
+  Check(worstVector < 1e-9, "linear vector reproduced to rounding");
+  Check(worstFloat < 1e-4, "float array reproduced to float rounding");
+
+  filter->InterpolateArraysOff();
+  filter->Update();
+  Check(!filter->GetOutput(0)->GetPointData()->GetArray("linear") &&
+      filter->GetOutput(0)->GetPointData()->GetArray("SplatRadius"),
+    "InterpolateArrays off: no input arrays, still normals and splat radius");
+}
+
+void TestSplats()
+{
+  vtkSmartPointer<vtkPolyData> data = Ball(30000, 18.0, 4);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(data);
+  Configure(filter);
+  filter->Update(); // default: splats
+  vtkPolyData* splats = filter->GetOutput(0);
+  const vtkIdType isopoints = filter->GetNumberOfIsopoints();
+  const int sides = filter->GetSplatSides();
+  Check(splats->GetNumberOfPolys() == isopoints && splats->GetNumberOfVerts() == 0,
+    "splats: one polygon per isopoint");
+  Check(splats->GetNumberOfPoints() == isopoints * sides, "splats: `sides` corners each");
+  vtkDataArray* normals = splats->GetPointData()->GetArray("Normals");
+  vtkDataArray* radius = splats->GetPointData()->GetArray("SplatRadius");
+  Check(normals && radius && splats->GetPointData()->GetArray("linear"),
+    "splat corners carry normals, radius and the interpolated arrays");
+  if (!normals || !radius || isopoints == 0)
+  {
+    return;
+  }
+  // Each polygon: corners at the splat radius from their centre, in the plane normal to n.
+  double worstPlane = 0.0, worstRadius = 0.0, meanRadius = 0.0;
+  for (vtkIdType p = 0; p < isopoints; ++p)
+  {
+    double c[3] = { 0, 0, 0 };
+    for (int s = 0; s < sides; ++s)
+    {
+      double x[3];
+      splats->GetPoint(p * sides + s, x);
+      for (int d = 0; d < 3; ++d)
+      {
+        c[d] += x[d] / sides;
+      }
+    }
+    double n[3];
+    normals->GetTuple(p * sides, n);
+    const double r = radius->GetComponent(p * sides, 0);
+    meanRadius += r / isopoints;
+    for (int s = 0; s < sides; ++s)
+    {
+      double x[3];
+      splats->GetPoint(p * sides + s, x);
+      const double e[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+      worstPlane = std::max(worstPlane, std::abs(e[0] * n[0] + e[1] * n[1] + e[2] * n[2]) / r);
+      worstRadius =
+        std::max(worstRadius, std::abs(std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) - r) / r);
+    }
+  }
+  const double spacing = filter->GetMeanSampleSpacing();
+  std::cout << isopoints << " splats; mean radius " << meanRadius << " (sample spacing " << spacing
+            << "), worst out-of-plane " << worstPlane << ", worst radius error " << worstRadius
+            << " (relative)\n";
+  Check(worstPlane < 1e-5 && worstRadius < 1e-5, "splat corners on their tangent circle");
+  Check(meanRadius > 0.2 * spacing && meanRadius < 3.0 * spacing,
+    "splat radius of the order of the sample spacing");
+}
+
+// A particle time series: at time t the particles (fresh positions each step) sample a ball
+// of radius 14 + 2 t.
+class BallSeries : public vtkPolyDataAlgorithm
+{
+public:
+  static BallSeries* New();
+  vtkTypeMacro(BallSeries, vtkPolyDataAlgorithm);
+  int Executions = 0;
+
+protected:
+  BallSeries() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    const double steps[3] = { 0.0, 1.0, 2.0 }, range[2] = { 0.0, 2.0 };
+    vtkInformation* info = out->GetInformationObject(0);
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps, 3);
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    return 1;
+  }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkInformation* info = out->GetInformationObject(0);
+    const double t = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      : 0.0;
+    vtkPolyData* output = vtkPolyData::GetData(out);
+    output->ShallowCopy(Ball(20000, 14.0 + 2.0 * t, 10 + static_cast<int>(t)));
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+    ++this->Executions;
+    return 1;
+  }
+};
+vtkStandardNewMacro(BallSeries);
+
+double MeanRadius(vtkPolyData* points)
+{
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    sum += std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
+  }
+  return points->GetNumberOfPoints() ? sum / points->GetNumberOfPoints() : 0.0;
+}
+
+void TestTimeSeries()
+{
+  vtkNew<BallSeries> series;
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputConnection(series->GetOutputPort());
+  Configure(filter);
+  filter->SetOutputTypeToIsopoints();
+  filter->UpdateInformation();
+  vtkInformation* outInfo = filter->GetOutputInformation(0);
+  Check(outInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == 3,
+    "the output advertises the input's time steps");
+  int expectedSearches = 0;
+  for (double t : { 0.0, 1.0, 2.0, 1.0, 0.0, 2.0 })
+  {
+    filter->UpdateTimeStep(t);
+    const bool firstVisit = t == 0.0 ? expectedSearches < 1 : t == 1.0 ? expectedSearches < 2 : expectedSearches < 3;
+    expectedSearches += firstVisit ? 1 : 0;
+    vtkPolyData* out = filter->GetOutput(0);
+    const double r = MeanRadius(out);
+    const double dataTime = out->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+      ? out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+      : -1.0;
+    std::cout << "time " << t << ": " << out->GetNumberOfPoints() << " isopoints, mean radius "
+              << r << " (exact " << 14.0 + 2.0 * t << "), neighbour searches so far "
+              << filter->GetNeighborSearchCount() << "\n";
+    // Steps differ by 2; the surface sits within a fraction of the spacing (2.2) of the exact one.
+    Check(std::abs(r - (14.0 + 2.0 * t)) < 0.5, "time " + std::to_string(t) + ": the surface of that step");
+    Check(dataTime == t, "time " + std::to_string(t) + ": output stamped with its time");
+    Check(filter->GetNeighborSearchCount() == expectedSearches,
+      "time " + std::to_string(t) + ": neighbours searched once per time step");
+  }
+  // Changing the isovalue at a step reuses that step's neighbourhoods.
+  filter->SetIsoValue(-2.0);
+  filter->UpdateTimeStep(2.0);
+  Check(filter->GetNeighborSearchCount() == expectedSearches, "isovalue change reuses the step's neighbours");
+  Check(std::abs(MeanRadius(filter->GetOutput(0)) - 16.0) < 0.5, "new isovalue at time 2");
+}
+} // namespace
+
+int main()
+{
+  TestInterpolatedArrays();
+  TestSplats();
+  TestTimeSeries();
+  std::cout << (failures ? "surface output tests FAILED\n" : "surface output tests passed\n");
+  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}
