@@ -241,7 +241,7 @@ public:
 
   ///@{
   /** How many particle geometries (e.g. time steps) keep their neighbourhoods for reuse.
-   * Each costs about (12 NumberOfNeighbors + 100) bytes per particle. Default 4. */
+   * Each costs roughly 200 bytes per particle with 26 neighbours (neighbour lists, positions, kd-tree, and MLS stencils where the surface passed). Default 4. */
   vtkSetClampMacro(NeighborCacheSize, int, 1, 1000);
   vtkGetMacro(NeighborCacheSize, int);
   ///@}

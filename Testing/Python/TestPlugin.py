@@ -25,13 +25,23 @@ data.GetPointData().AddArray(array)
 source = TrivialProducer()
 source.GetClientSideObject().SetOutput(data)
 
-# IsoValue given as a keyword must survive (no reset to the range when Scalars is set).
+# Keywords must survive (no reset to the domain defaults when Input or Scalars is set). The
+# seed centre is off the bounds' centre (30, 30, 30) on purpose.
 surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
-                             SeedCenter=[30, 30, 30], SeedRadius=6.0, AdditionalSeeds=[])
+                             SeedCenter=[33, 29, 31], SeedRadius=6.0, AdditionalSeeds=[],
+                             OutputType="Isopoints")
 surface.UpdatePipeline()
 failures = []
 if surface.IsoValue != 0.0:
     failures.append("IsoValue keyword was overridden: %s" % surface.IsoValue)
+if list(surface.SeedCenter) != [33, 29, 31] or surface.SeedRadius != 6.0:
+    failures.append("seed keywords were overridden: %s %s" % (surface.SeedCenter, surface.SeedRadius))
+# Without seed keywords the seed sphere sits in the middle of the data, a tenth of its extent.
+placed = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0)
+center, seed_radius = list(placed.SeedCenter), placed.SeedRadius
+print("default seed: centre %s radius %.3f" % (center, seed_radius))
+if max(abs(c - 30.0) for c in center) > 0.5 or not 5.0 < seed_radius < 7.0:
+    failures.append("default seed not on the data: centre %s radius %s" % (center, seed_radius))
 
 algorithm = surface.GetClientSideObject()
 isopoints = algorithm.GetOutputDataObject(0)
@@ -69,6 +79,62 @@ else:
     last = mismatch.GetValue(table.GetNumberOfRows() - 1)
     if not last < 0.01:
         failures.append("SignMismatch %g at the end (>= 0.01)" % last)
+
+# Default output: splat polygons carrying the normals, the splat radius and the particle arrays.
+splats = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                            SeedCenter=[30, 30, 30], SeedRadius=6.0)
+splats.UpdatePipeline()
+mesh = splats.GetClientSideObject().GetOutputDataObject(0)
+arrays = [mesh.GetPointData().GetArrayName(i) for i in range(mesh.GetPointData().GetNumberOfArrays())]
+print("splats: %d polygons, %d corners, arrays %s" % (mesh.GetNumberOfPolys(), mesh.GetNumberOfPoints(), arrays))
+if mesh.GetNumberOfPolys() != len(p) or mesh.GetNumberOfPoints() != 8 * len(p):
+    failures.append("splats: expected one 8-corner polygon per isopoint")
+for name in ("Normals", "SplatRadius", "density"):
+    if name not in arrays:
+        failures.append("splats lack the array %s" % name)
+
+# A particle file series (a ball growing by 2 per step, fresh particles each step): the filter
+# follows the time steps, and each step keeps its neighbourhoods.
+import os
+import tempfile
+from paraview.simple import GetAnimationScene, XMLPolyDataReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+folder = tempfile.mkdtemp()
+files = []
+for step in range(3):
+    xs = np.random.default_rng(100 + step).uniform(0.0, 60.0, (20000, 3))
+    ball = vtkPolyData()
+    ball_points = vtkPoints()
+    ball_points.SetData(numpy_to_vtk(xs, deep=1))
+    ball.SetPoints(ball_points)
+    values = numpy_to_vtk(14.0 + 2.0 * step - np.linalg.norm(xs - 30.0, axis=1), deep=1)
+    values.SetName("density")
+    ball.GetPointData().AddArray(values)
+    files.append(os.path.join(folder, "ball_%d.vtp" % step))
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(ball)
+    writer.SetDataModeToBinary()  # ParaView 5.11 on Debian 12 cannot read appended mode
+    writer.SetFileName(files[-1])
+    writer.Write()
+reader = XMLPolyDataReader(FileName=files)
+timed = LevelSetIsosurface(Input=reader, Scalars=["POINTS", "density"], IsoValue=0.0,
+                           SeedCenter=[30, 30, 30], SeedRadius=5.0, OutputType="Isopoints")
+scene = GetAnimationScene()
+scene.UpdateAnimationUsingDataTimeSteps()
+print("time steps:", list(reader.TimestepValues))
+for t in [0.0, 1.0, 2.0, 0.0]:
+    scene.AnimationTime = t  # what the GUI's animation does
+    timed.UpdatePipeline(t)
+    out = timed.GetClientSideObject().GetOutputDataObject(0)
+    r = np.linalg.norm(vtk_to_numpy(out.GetPoints().GetData()) - 30.0, axis=1).mean()
+    timed.UpdatePropertyInformation()
+    searches = timed.GetPropertyValue("NeighborSearchCount")
+    print("time %.0f: mean radius %.3f (exact %.0f), neighbour searches %d" % (t, r, 14 + 2 * t, searches))
+    if abs(r - (14.0 + 2.0 * t)) > 0.5:
+        failures.append("time %g: surface of radius %.3f, not %g" % (t, r, 14 + 2 * t))
+if searches != 3:
+    failures.append("expected one neighbour search per time step (3), got %d" % searches)
 
 for failure in failures:
     print("FAILED:", failure)
