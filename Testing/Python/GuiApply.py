@@ -1,0 +1,104 @@
+"""Run inside the ParaView GUI: paraview --script=GuiApply.py (under xvfb-run), with
+LSI_PLUGIN, LSI_GLASS (the Evrard glass Tipsy file), LSI_SCREENSHOT and LSI_STATUS in the
+environment.
+
+Opens the real particles with the plugin's Tipsy reader, adds their analytic density, creates
+Level-Set Isosurface with its default seed, makes it the active source (its properties panel
+then shows the seed's sphere widget) and applies it the way the Apply button does: each output
+port goes to the view its XML hints prefer. Checks that the sphere widget is visible on the data,
+that the convergence table opened in a line chart view, that the particles output was not shown
+and that the surface is in the 3D view; saves a screenshot of the whole layout; writes
+"passed" to LSI_STATUS only if every check held.
+
+The checks run from a one-shot timer of the view's interactor, that is from the GUI's event
+loop once the script has returned: the properties panel creates the sphere widget only when it
+processes the active-source change. The timer callback then quits the application."""
+import math
+import os
+
+from paraview import servermanager
+from paraview.simple import (AssignViewToLayout, Calculator, GetDisplayProperties, GetActiveViewOrCreate, GetLayout, GetViews, LoadPlugin,
+                             Render, ResetCamera, SaveScreenshot, SetActiveSource, SetActiveView,
+                             ShowInteractiveWidgets)
+
+failures = []
+LoadPlugin(os.environ["LSI_PLUGIN"], ns=globals())
+glass = TipsyParticleReader(FileNames=[os.environ["LSI_GLASS"]])
+density = Calculator(Input=glass, ResultArrayName="density",
+                     Function="1 / (2 * %.17g * mag(coords))" % math.pi)
+density.UpdatePipeline()  # as after Apply on the reader: the seed's default comes from the bounds
+surface = LevelSetIsosurface(Input=density, Scalars=["POINTS", "density"])
+surface.IsoValue = 1.0 / math.pi  # the sphere r = 0.5
+render_view = GetActiveViewOrCreate("RenderView")
+SetActiveSource(surface)
+
+# What Apply does (pqApplyBehavior::showData): every port in its preferred view.
+controller = servermanager.ParaViewPipelineController()
+for port in range(3):
+    controller.ShowInPreferredView(surface, port, render_view)
+# Apply also puts a newly created view into the layout, beside the 3D view.
+layout = GetLayout(render_view)
+for view in GetViews():
+    if GetLayout(view) is None:
+        AssignViewToLayout(view=view, layout=layout, hint=0)
+# The chart view, just created, is now the active view; the sphere widget lives in the active
+# render view, so come back to the 3D view as a user does by clicking in it.
+SetActiveView(render_view)
+ShowInteractiveWidgets(proxy=surface)
+ResetCamera(render_view)
+# Half transparent in the screenshot, so that the seed sphere inside the surface shows.
+GetDisplayProperties(surface, render_view).Opacity = 0.5
+Render(render_view)
+
+
+
+def check(caller, event):
+    if checked:
+        return  # the interactor's other timers fire TimerEvent too
+    checked.append(True)
+    print("seed: centre %s radius %.3f" % (list(surface.SeedCenter), surface.SeedRadius))
+    if max(abs(c) for c in surface.SeedCenter) > 0.05 or not 0.1 < surface.SeedRadius < 0.3:
+        failures.append("the default seed is not placed on the data's centre")
+
+    # The sphere widget: a visible SphereWidgetRepresentation in the render view.
+    hidden = render_view.GetProperty("HiddenRepresentations")
+    widgets = [hidden[i] for i in range(len(hidden))
+               if hidden[i].GetXMLName() == "SphereWidgetRepresentation"]
+    visible = [w for w in widgets if w.GetPropertyValue("Visibility")]
+    print("sphere widgets in the render view: %d, visible: %d" % (len(widgets), len(visible)))
+    if not visible:
+        failures.append("no visible sphere widget")
+
+    chart_views = [v for v in GetViews() if v.GetXMLName() == "XYChartView"]
+    shown_in_chart = [v for v in chart_views
+                      if any(r.Input.SMProxy == surface.SMProxy and r.Visibility
+                             for r in v.Representations if hasattr(r, "Input"))]
+    print("views: %s" % [v.GetXMLName() for v in GetViews()])
+    if not shown_in_chart:
+        failures.append("the convergence table is not shown in a line chart view")
+    ports_in_render = sorted({r.Input.Port if hasattr(r.Input, "Port") else 0
+                              for r in render_view.Representations
+                              if hasattr(r, "Input") and r.Input.SMProxy == surface.SMProxy and r.Visibility})
+    print("surface ports shown in the render view: %s" % ports_in_render)
+    if ports_in_render != [0]:
+        failures.append("expected only the surface (port 0) in the 3D view, got %s" % ports_in_render)
+
+    splats = surface.GetClientSideObject().GetOutputDataObject(0)
+    print("splat polygons: %d" % splats.GetNumberOfPolys())
+    if splats.GetNumberOfPolys() < 1000:
+        failures.append("too few splats")
+
+    if not chart_views or GetLayout(chart_views[0]) is None:
+        failures.append("the chart view is not in the layout beside the 3D view")
+    SaveScreenshot(os.environ["LSI_SCREENSHOT"], layout, ImageResolution=[1200, 600])
+    for failure in failures:
+        print("FAILED:", failure)
+    with open(os.environ["LSI_STATUS"], "w") as status:
+        status.write("failed\n" if failures else "passed\n")
+    os._exit(0)
+
+
+checked = []
+interactor = render_view.GetRenderWindow().GetInteractor()
+interactor.AddObserver("TimerEvent", check)
+interactor.CreateOneShotTimer(2000)
