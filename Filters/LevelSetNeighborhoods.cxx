@@ -161,6 +161,10 @@ bool BuildNeighborhoods(
   auto start = std::chrono::steady_clock::now();
   SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
+  if (Aborted(aborted, 0.0)) // the kd-tree build below cannot stop half way
+  {
+    return false;
+  }
 
   // Nearest neighbours, queried in Morton order (consecutive queries walk the same tree nodes).
   start = std::chrono::steady_clock::now();
