@@ -132,7 +132,8 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
     { "isopoints", filter->GetIsopointSeconds() - filter->GetCompletionSeconds() -
         filter->GetDataRefinementSeconds() },
     { "completion", filter->GetCompletionSeconds() },
-    { "data-refinement", filter->GetDataRefinementSeconds() } };
+    { "data-refinement", filter->GetDataRefinementSeconds() },
+    { "output", filter->GetOutputSeconds() } };
   vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   for (vtkIdType row = 0; table && row < table->GetNumberOfRows(); ++row)
   {
