@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: install, build, then run Level-Set Isosurface in pvbatch on the paper's
-# one-component case (200,000 samples), writing Results/one_component_isopoints.vtp (binary
-# XML, readable by this ParaView) and Results/one_component_isopoints.png.
+# one-component case (200,000 samples), writing Results/one_component_surface.vtp (binary
+# XML, readable by this ParaView) and Results/one_component_surface.png.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/Scripts/setup-debian12.sh"
@@ -9,4 +9,4 @@ mkdir -p "$here/Results"
 "$here/build/bin/LevelSetGenerateData" one-component 200000 "$here/Results/one_component_samples.vtp"
 xvfb-run -a pvbatch "$here/Scripts/main_job.py" \
   "$here/build/lib/paraview-5.11/plugins/LevelSetIsosurface/LevelSetIsosurface.so" \
-  "$here/Results/one_component_samples.vtp" "$here/Results/one_component_isopoints"
+  "$here/Results/one_component_samples.vtp" "$here/Results/one_component_surface"
