@@ -2,6 +2,8 @@
 // and empty outputs, never a crash or hang).
 #include "vtkLevelSetIsosurface.h"
 
+#include "TestCheck.h"
+
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkDoubleArray.h"
@@ -20,15 +22,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
+using lsi::test::Check;
 
 // Counts error events so that tests can require a message without printing it.
 class ErrorCounter : public vtkCommand
@@ -255,6 +249,6 @@ int main()
 {
   TestReuseOfNeighbours();
   TestBadInput();
-  std::cout << (failures ? "filter tests FAILED\n" : "filter tests passed\n");
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  std::cout << (lsi::test::Failures() ? "filter tests FAILED\n" : "filter tests passed\n");
+  return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -4,6 +4,8 @@
 // - on a time series the filter runs per time step, and each step keeps its neighbourhoods.
 #include "vtkLevelSetIsosurface.h"
 
+#include "TestCheck.h"
+
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -26,15 +28,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
+using lsi::test::Check;
 
 double Linear(const double x[3]) { return 3.0 * x[0] - 2.0 * x[1] + 0.5 * x[2] + 7.0; }
 
@@ -280,6 +274,6 @@ int main()
   TestInterpolatedArrays();
   TestSplats();
   TestTimeSeries();
-  std::cout << (failures ? "surface output tests FAILED\n" : "surface output tests passed\n");
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  std::cout << (lsi::test::Failures() ? "surface output tests FAILED\n" : "surface output tests passed\n");
+  return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
