@@ -517,8 +517,8 @@ bool vtkLevelSetIsosurface::Execute(
   particleOutput->GetPointData()->AddArray(levelSet);
 
   table->ShallowCopy(rows);
-  this->UpdateProgress(1.0);
-  return true;
+  // An abort that arrived during the last stage still empties the outputs.
+  return !this->ProgressOrAbort(1.0);
 }
 
 bool vtkLevelSetIsosurface::ProgressOrAbort(double progress)
