@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <thread>
 #include <chrono>
 #include <cmath>
 
@@ -150,6 +151,43 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace
+{
+// nanoflann's tree build cannot stop half way (about 0.6 s at 2M points): it runs on a worker
+// thread while this one keeps checking for abort. An abandoned build finishes on its own and
+// frees its memory, which it owns through the shared pointer.
+struct TreeBuild
+{
+  std::vector<double> Positions;
+  std::unique_ptr<PointCloudIndex> Index;
+  std::atomic<bool> Done{ false };
+};
+
+bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
+{
+  auto build = std::make_shared<TreeBuild>();
+  build->Positions = std::move(out.Positions); // the buffer moves, the index will point into it
+  const std::size_t n = out.NumberOfSamples;
+  std::thread worker([build, n]() {
+    build->Index.reset(new PointCloudIndex(build->Positions.data(), n));
+    build->Done = true;
+  });
+  while (!build->Done)
+  {
+    if (Aborted(aborted, 0.0))
+    {
+      worker.detach();
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  worker.join();
+  out.Positions = std::move(build->Positions);
+  out.Index = std::move(build->Index);
+  return true;
+}
+} // namespace
+
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted)
 {
@@ -161,14 +199,13 @@ bool BuildNeighborhoods(
   auto start = std::chrono::steady_clock::now();
   SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
-  if (Aborted(aborted, 0.0)) // the kd-tree build below cannot stop half way
-  {
-    return false;
-  }
 
   // Nearest neighbours, queried in Morton order (consecutive queries walk the same tree nodes).
   start = std::chrono::steady_clock::now();
-  out.Index.reset(new PointCloudIndex(out.Positions.data(), n));
+  if (!BuildTree(out, aborted))
+  {
+    return false;
+  }
   out.Ids.resize(n * stride);
   out.Radius.resize(n);
   std::atomic<std::size_t> duplicates(0);
