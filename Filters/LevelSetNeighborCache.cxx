@@ -2,6 +2,7 @@
 
 #include "vtkPoints.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace lsi
@@ -39,11 +40,23 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points)
   return h;
 }
 
-const Neighborhoods* NeighborCache::Find(vtkPoints* points, int neighbors)
+const Neighborhoods* NeighborCache::Get(vtkPoints* points, int neighbors, std::size_t capacity,
+  const AbortCheck& aborted, bool& built)
 {
+  built = false;
   const vtkIdType n = points->GetNumberOfPoints();
+  // Hashing the coordinates takes a pass over them: at most once per call, and only when an
+  // entry of the same size is not the very same unmodified points object.
   std::uint64_t fingerprint = 0;
   bool fingerprinted = false;
+  auto fingerprintOnce = [&]() {
+    if (!fingerprinted)
+    {
+      fingerprint = CoordinateFingerprint(points);
+      fingerprinted = true;
+    }
+    return fingerprint;
+  };
   for (auto it = this->Entries.begin(); it != this->Entries.end(); ++it)
   {
     Entry& e = **it;
@@ -51,17 +64,8 @@ const Neighborhoods* NeighborCache::Find(vtkPoints* points, int neighbors)
     {
       continue;
     }
-    bool same = e.Points == points && e.PointsTime == points->GetMTime();
-    if (!same)
-    {
-      if (!fingerprinted)
-      {
-        fingerprint = CoordinateFingerprint(points);
-        fingerprinted = true;
-      }
-      same = e.Fingerprint == fingerprint;
-    }
-    if (same)
+    if ((e.Points == points && e.PointsTime == points->GetMTime()) ||
+      e.Fingerprint == fingerprintOnce())
     {
       e.Points = points;
       e.PointsTime = points->GetMTime();
@@ -69,12 +73,7 @@ const Neighborhoods* NeighborCache::Find(vtkPoints* points, int neighbors)
       return &e.Geometry;
     }
   }
-  return nullptr;
-}
 
-const Neighborhoods* NeighborCache::Build(
-  vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted)
-{
   // Make room first: the old entries' memory is freed before the new one is allocated.
   while (!this->Entries.empty() && this->Entries.size() >= std::max<std::size_t>(1, capacity))
   {
@@ -87,10 +86,11 @@ const Neighborhoods* NeighborCache::Build(
   }
   entry->Points = points;
   entry->PointsTime = points->GetMTime();
-  entry->NumberOfPoints = points->GetNumberOfPoints();
+  entry->NumberOfPoints = n;
   entry->NumberOfNeighbors = neighbors;
-  entry->Fingerprint = CoordinateFingerprint(points);
+  entry->Fingerprint = fingerprintOnce();
   this->Entries.push_front(std::move(entry));
+  built = true;
   return &this->Entries.front()->Geometry;
 }
 

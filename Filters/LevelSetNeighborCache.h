@@ -24,14 +24,11 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points);
 class NeighborCache
 {
 public:
-  /// The neighbourhoods of `points` with `neighbors` neighbours if cached (and marks them most
-  /// recently used), else null.
-  const Neighborhoods* Find(vtkPoints* points, int neighbors);
-  /// Builds and stores the neighbourhoods of `points`, dropping the least recently used entries
-  /// beyond `capacity`. Returns null when aborted.
-  const Neighborhoods* Build(
-    vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted);
-  std::size_t Size() const { return this->Entries.size(); }
+  /// The neighbourhoods of `points` with `neighbors` neighbours: the cached ones (marked most
+  /// recently used), or newly built ones, stored after dropping the least recently used entries
+  /// beyond `capacity`; `built` tells which. Returns null when aborted.
+  const Neighborhoods* Get(vtkPoints* points, int neighbors, std::size_t capacity,
+    const AbortCheck& aborted, bool& built);
 
 private:
   struct Entry

@@ -288,15 +288,15 @@ bool vtkLevelSetIsosurface::Execute(
   }
   auto start = Clock::now();
   vtkPoints* points = input->GetPoints();
-  const lsi::Neighborhoods* cached = this->Internal->Cache.Find(points, this->NumberOfNeighbors);
+  bool searched = false;
+  const lsi::Neighborhoods* cached = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
+    static_cast<std::size_t>(this->NeighborCacheSize), stage(0.02, 0.35), searched);
   if (!cached)
   {
-    cached = this->Internal->Cache.Build(points, this->NumberOfNeighbors,
-      static_cast<std::size_t>(this->NeighborCacheSize), stage(0.02, 0.35));
-    if (!cached)
-    {
-      return false;
-    }
+    return false;
+  }
+  if (searched)
+  {
     ++this->NeighborSearchCount;
     this->NeighborSearchSeconds = SecondsSince(start);
     this->SpatialSortSeconds = cached->SortSeconds;
@@ -445,7 +445,7 @@ bool vtkLevelSetIsosurface::Execute(
       // The number of iterations is not known in advance: approach 0.8 (half way after 3).
       return !this->ProgressOrAbort(0.45 + 0.35 * record.Iteration / (record.Iteration + 3.0));
     },
-    stage(0.45, 0.45));
+    [this](double) { return this->CheckAbort(); }); // progress comes from the callback above
   this->EvolutionSeconds = SecondsSince(start);
   if (!finished)
   {
