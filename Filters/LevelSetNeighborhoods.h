@@ -40,7 +40,8 @@ struct Neighborhoods
   double MeanRadius = 0.0;      // mean h_i
 
   // Seconds spent on each part of the build.
-  double SortSeconds = 0.0, SearchSeconds = 0.0;
+  double SortSeconds = 0.0, SearchSeconds = 0.0; // SearchSeconds includes TreeSeconds
+  double TreeSeconds = 0.0;
   mutable double StencilSeconds = 0.0; // accumulated over EnsureStencils calls
 
   // Problems found while building (sample ids are input point ids); the filter turns them into error messages.

@@ -301,6 +301,7 @@ bool vtkLevelSetIsosurface::Execute(
     this->NeighborSearchSeconds = SecondsSince(start);
     this->SpatialSortSeconds = cached->SortSeconds;
     this->NearestNeighborSeconds = cached->SearchSeconds;
+    this->TreeBuildSeconds = cached->TreeSeconds;
   }
   const lsi::Neighborhoods& geometry = *cached;
   if (geometry.DuplicateSamples > 0)

@@ -264,7 +264,8 @@ public:
   vtkGetMacro(EffectiveTimeStep, double);
   vtkGetMacro(NeighborSearchSeconds, double); // spatial sort + nearest neighbours
   vtkGetMacro(SpatialSortSeconds, double);
-  vtkGetMacro(NearestNeighborSeconds, double);
+  vtkGetMacro(NearestNeighborSeconds, double); // kd-tree build + queries
+  vtkGetMacro(TreeBuildSeconds, double);
   vtkGetMacro(StencilSeconds, double); // MLS stencils, computed on demand (all runs so far)
   vtkGetMacro(InitializationSeconds, double);
   vtkGetMacro(EvolutionSeconds, double);
@@ -317,6 +318,7 @@ protected:
   double NeighborSearchSeconds = 0.0;
   double SpatialSortSeconds = 0.0;
   double NearestNeighborSeconds = 0.0;
+  double TreeBuildSeconds = 0.0;
   double StencilSeconds = 0.0;
   double InitializationSeconds = 0.0;
   double EvolutionSeconds = 0.0;

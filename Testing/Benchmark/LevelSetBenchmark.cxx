@@ -166,7 +166,8 @@ int main(int argc, char* argv[])
             << "\niterations: " << iterations << (filter->GetConverged() ? " (converged)" : " (limit)")
             << "\nseconds total: " << total << "\nseconds neighbours: "
             << filter->GetNeighborSearchSeconds() << " (sort " << filter->GetSpatialSortSeconds()
-            << ", nearest " << filter->GetNearestNeighborSeconds() << ", stencils "
+            << ", nearest " << filter->GetNearestNeighborSeconds() << " of which tree "
+            << filter->GetTreeBuildSeconds() << ", stencils "
             << filter->GetStencilSeconds() << ")\nseconds initialisation: "
             << filter->GetInitializationSeconds() << "\nseconds evolution: "
             << filter->GetEvolutionSeconds() << "\nseconds per iteration: "

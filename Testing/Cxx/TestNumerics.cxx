@@ -4,12 +4,15 @@
 #include "LevelSetSplines.h"
 #include "LevelSetUpdate.h"
 #include "MovingLeastSquares.h"
+#include "NearestNeighbors.h"
 #include "SpatialOrder.h"
 #include "TangentPlaneCompletion.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <string>
 #include <iostream>
 #include <random>
 #include <vector>
@@ -321,6 +324,77 @@ void TestSpatialOrder()
   Check(contiguous, "Morton order keeps octants contiguous");
 }
 
+// The kd-tree built in joined pieces answers like brute force, on a uniform cloud, a clustered
+// one and one where a quarter of the points share one x (so some median cuts cannot separate);
+// the reordered points and oldIndex describe the same cloud.
+void TestJoinedTree()
+{
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  auto runInTurn = [](std::vector<std::function<void()>>& tasks) {
+    for (auto& task : tasks)
+    {
+      task();
+    }
+  };
+  for (int cloud = 0; cloud < 3; ++cloud)
+  {
+    const std::size_t n = 5000;
+    std::vector<double> original(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        original[3 * i + a] = cloud == 1 ? std::pow(unit(random), 3.0) * normal(random) : unit(random);
+      }
+      if (cloud == 2 && i % 4 == 0)
+      {
+        original[3 * i] = 0.5;
+      }
+    }
+    for (int levels = 0; levels <= 3; ++levels)
+    {
+      std::vector<double> xyz = original;
+      std::vector<std::uint32_t> oldIndex;
+      const lsi::PointCloudIndex index(xyz.data(), n, oldIndex, levels, runInTurn);
+      bool samePoints = oldIndex.size() == n;
+      std::vector<char> seen(n, 0);
+      for (std::size_t i = 0; samePoints && i < n; ++i)
+      {
+        samePoints = !seen[oldIndex[i]] &&
+          std::equal(&xyz[3 * i], &xyz[3 * i] + 3, &original[3 * oldIndex[i]]);
+        seen[oldIndex[i]] = 1;
+      }
+      Check(samePoints, "joined tree: points moved, none lost");
+      bool sameAnswers = true;
+      const std::size_t k = 28;
+      std::vector<std::uint32_t> ids(k);
+      std::vector<double> d2(k), all(n);
+      for (int q = 0; q < 300; ++q)
+      {
+        const double query[3] = { unit(random), unit(random), unit(random) };
+        for (std::size_t j = 0; j < n; ++j)
+        {
+          all[j] = 0.0;
+          for (int a = 0; a < 3; ++a)
+          {
+            all[j] += (xyz[3 * j + a] - query[a]) * (xyz[3 * j + a] - query[a]);
+          }
+        }
+        std::nth_element(all.begin(), all.begin() + (k - 1), all.end());
+        const bool found = index.Nearest(query, k, ids.data(), d2.data()) == k &&
+          d2[k - 1] == all[k - 1];
+        const bool within = index.NearestWithin(query, k, 1.01 * all[k - 1], ids.data(), d2.data()) == k;
+        sameAnswers = sameAnswers && found && within && d2[k - 1] == all[k - 1];
+      }
+      const std::string what = "joined tree (" + std::to_string(levels) + " levels, cloud " +
+        std::to_string(cloud) + "): k-th nearest distance equals brute force";
+      Check(sameAnswers, what.c_str());
+    }
+  }
+}
+
 void TestRosenthalLinsen()
 {
   // phi relaxes towards g by the rate, and never by more than the step bound.
@@ -372,6 +446,7 @@ void TestSlideOntoDataLevel()
 int main()
 {
   TestSpatialOrder();
+  TestJoinedTree();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
   TestSplines();
