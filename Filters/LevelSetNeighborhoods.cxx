@@ -3,6 +3,8 @@
 #include "MovingLeastSquares.h"
 #include "SpatialOrder.h"
 
+#include "vtkArrayDispatch.h"
+#include "vtkDataArrayRange.h"
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -67,28 +69,48 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
   {
     size[k] = std::max(bounds[2 * k + 1] - bounds[2 * k], 1e-300);
   }
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      double x[3];
-      points->GetPoint(i, x);
-      keys[i] = { MortonKey(x, lower, size), static_cast<std::uint32_t>(i) };
-    }
-  });
+  // Coordinates are read through vtkArrayDispatch's typed ranges: no virtual call per point.
+  vtkDataArray* coordinates = points->GetData();
+  std::vector<std::uint64_t> words(n);
+  auto makeKeys = [&](auto* array) {
+    const auto xyz = vtk::DataArrayTupleRange<3>(array);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double x[3] = { static_cast<double>(xyz[i][0]), static_cast<double>(xyz[i][1]),
+          static_cast<double>(xyz[i][2]) };
+        words[i] = PackedMortonKey(x, lower, size, static_cast<std::uint32_t>(i));
+      }
+    });
+  };
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, makeKeys))
   {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> scratch;
-    RadixSortByKey(keys, scratch);
+    makeKeys(coordinates);
+  }
+  {
+    std::vector<std::uint64_t> scratch;
+    RadixSortPacked(words, scratch);
   }
   out.Order.resize(n);
   out.Positions.resize(3 * n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      out.Order[i] = keys[i].second;
-      points->GetPoint(keys[i].second, &out.Positions[3 * i]);
-    }
-  });
+  auto gather = [&](auto* array) {
+    const auto xyz = vtk::DataArrayTupleRange<3>(array);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const std::uint32_t id = static_cast<std::uint32_t>(words[i]); // the low 32 bits
+        out.Order[i] = id;
+        for (int k = 0; k < 3; ++k)
+        {
+          out.Positions[3 * i + k] = static_cast<double>(xyz[id][k]);
+        }
+      }
+    });
+  };
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, gather))
+  {
+    gather(coordinates);
+  }
 }
 // Whether all positions lie on one plane or line (up to rounding): the smallest eigenvalue of
 // their covariance is negligible against the largest.

@@ -38,21 +38,29 @@ inline std::uint64_t MortonKey(const double x[3], const double lower[3], const d
   return key;
 }
 
-/// Sorts (key, id) pairs by key, stably, with a least-significant-digit radix sort on 16-bit
-/// digits (four passes for 63-bit keys): linear time, several times faster than std::sort on
-/// tens of millions of keys. `scratch` is resized to the same length.
-template <typename Id>
-void RadixSortByKey(std::vector<std::pair<std::uint64_t, Id>>& items,
-  std::vector<std::pair<std::uint64_t, Id>>& scratch)
+/// A sample's place in Morton order and its id in one word: the top 30 bits of its Morton key
+/// (1024 cells per axis) above the 32-bit id. Sorting the words sorts samples into Morton order
+/// at that resolution, which is all the later kd-tree build needs from it.
+inline std::uint64_t PackedMortonKey(
+  const double x[3], const double lower[3], const double size[3], std::uint32_t id)
 {
-  scratch.resize(items.size());
-  std::vector<std::size_t> offsets(1 << 16);
-  for (int shift = 0; shift < 64; shift += 16)
+  return (MortonKey(x, lower, size) >> 33) << 32 | id;
+}
+
+/// Sorts words made by PackedMortonKey: a least-significant-digit radix sort over the key bits
+/// (three passes of 10-bit digits; 1024 buckets keep each pass's writes in cache). Stable, so
+/// ids given in increasing order stay so within a cell and the words end fully sorted.
+/// `scratch` is resized to the same length.
+inline void RadixSortPacked(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch)
+{
+  scratch.resize(words.size());
+  std::vector<std::size_t> offsets(1 << 10);
+  for (int shift = 32; shift < 62; shift += 10)
   {
     std::fill(offsets.begin(), offsets.end(), 0);
-    for (const auto& item : items)
+    for (const std::uint64_t word : words)
     {
-      ++offsets[(item.first >> shift) & 0xffff];
+      ++offsets[(word >> shift) & 0x3ff];
     }
     std::size_t total = 0;
     for (std::size_t& offset : offsets)
@@ -61,11 +69,11 @@ void RadixSortByKey(std::vector<std::pair<std::uint64_t, Id>>& items,
       offset = total;
       total += count;
     }
-    for (const auto& item : items)
+    for (const std::uint64_t word : words)
     {
-      scratch[offsets[(item.first >> shift) & 0xffff]++] = item;
+      scratch[offsets[(word >> shift) & 0x3ff]++] = word;
     }
-    items.swap(scratch);
+    words.swap(scratch);
   }
 }
 

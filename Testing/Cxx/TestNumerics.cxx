@@ -299,27 +299,26 @@ void TestSpatialOrder()
   Check(lsi::MortonKey(a, lower, size) < lsi::MortonKey(b, lower, size) &&
       lsi::MortonKey(b, lower, size) < lsi::MortonKey(c, lower, size),
     "Morton order: x varies fastest, z slowest");
-  // Points of one octant are contiguous in Morton order.
+  // Points of one octant are contiguous in Morton order; the packed words sort fully.
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<std::pair<std::uint64_t, int>> keys;
-  for (int i = 0; i < 1000; ++i)
+  std::vector<std::uint64_t> words;
+  std::vector<int> octantOf;
+  for (int i = 0; i < 100000; ++i)
   {
     const double x[3] = { unit(random), unit(random), unit(random) };
-    const int octant = (x[0] >= 0.5) + 2 * (x[1] >= 0.5) + 4 * (x[2] >= 0.5);
-    keys.push_back({ lsi::MortonKey(x, lower, size), octant });
+    octantOf.push_back((x[0] >= 0.5) + 2 * (x[1] >= 0.5) + 4 * (x[2] >= 0.5));
+    words.push_back(lsi::PackedMortonKey(x, lower, size, static_cast<std::uint32_t>(i)));
   }
-  std::vector<std::pair<std::uint64_t, int>> sorted = keys, scratch;
-  lsi::RadixSortByKey(sorted, scratch);
-  std::stable_sort(keys.begin(), keys.end(),
-    [](const std::pair<std::uint64_t, int>& a, const std::pair<std::uint64_t, int>& b) {
-      return a.first < b.first;
-    });
-  Check(sorted == keys, "radix sort = stable sort by key");
+  std::vector<std::uint64_t> sorted = words, scratch;
+  lsi::RadixSortPacked(sorted, scratch);
+  std::sort(words.begin(), words.end());
+  Check(sorted == words, "radix sort of packed words = std::sort");
   bool contiguous = true;
-  for (std::size_t i = 1; i < keys.size(); ++i)
+  for (std::size_t i = 1; i < sorted.size(); ++i)
   {
-    contiguous = contiguous && keys[i].second >= keys[i - 1].second;
+    contiguous = contiguous &&
+      octantOf[static_cast<std::uint32_t>(sorted[i])] >= octantOf[static_cast<std::uint32_t>(sorted[i - 1])];
   }
   Check(contiguous, "Morton order keeps octants contiguous");
 }
