@@ -224,9 +224,9 @@ bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
   build->Positions = std::move(out.Positions); // the buffer moves, the index will point into it
   const std::size_t n = out.NumberOfSamples;
   const int splitLevels = TreeSplitLevels();
-  std::thread worker([build, n, splitLevels]() {
-    build->Index.reset(new PointCloudIndex(
-      build->Positions.data(), n, build->TreeOrder, splitLevels, RunOnThreads));
+  std::thread worker([build, splitLevels]() {
+    build->Index.reset(
+      new PointCloudIndex(build->Positions, build->TreeOrder, splitLevels, RunOnThreads));
     build->Done = true;
   });
   while (!build->Done)
@@ -244,10 +244,12 @@ bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
   // The build moved the samples into the tree's leaf order (a spatial order, like the Morton
   // order it refines): map each back to its input point id.
   std::vector<std::uint32_t> order(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    order[i] = out.Order[build->TreeOrder[i]];
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      order[i] = out.Order[build->TreeOrder[i]];
+    }
+  });
   out.Order.swap(order);
   return true;
 }

@@ -10,12 +10,41 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 class vtkPoints;
 
 namespace lsi
 {
+
+/// A std::vector allocator that leaves new elements uninitialised: resizing a multi-gigabyte
+/// array then costs nothing up front, and its pages are zeroed by the kernel on first touch,
+/// inside the parallel loop that fills them, instead of by one thread in resize().
+template <typename T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&)
+  {
+  }
+  template <typename U>
+  void construct(U* p)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
 
 struct Neighborhoods
 {
@@ -26,7 +55,7 @@ struct Neighborhoods
   // Every index below is an index in that order; Order maps it back to the input point id.
   std::vector<std::uint32_t> Order;
   std::vector<double> Positions;        // 3 per sample
-  std::vector<std::uint32_t> Ids;       // Stride per sample
+  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride per sample
   std::vector<double> Radius;           // h_i: distance to the farthest neighbour
   std::unique_ptr<PointCloudIndex> Index;
 

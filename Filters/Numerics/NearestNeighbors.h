@@ -32,9 +32,10 @@ public:
   /// 2^splitLevels pieces whose subtrees `run` builds (concurrently, given a runner that uses
   /// threads); the subtrees are then joined under the cutting planes, giving an ordinary
   /// kd-tree whose top splits are medians instead of nanoflann's midpoints.
-  /// The points in `xyz` are moved into the tree's leaf order, so that each leaf's points lie
-  /// together in memory; `oldIndex[i]` receives the original position of what is now point i.
-  PointCloudIndex(double* xyz, std::size_t count, std::vector<std::uint32_t>& oldIndex,
+  /// The points in `xyz` (3 per point) are moved into the tree's leaf order, so that each
+  /// leaf's points lie together in memory; `oldIndex[i]` receives the original position of
+  /// what is now point i. `xyz` must outlive the index and keep its buffer.
+  PointCloudIndex(std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex,
     int splitLevels, const TaskRunner& run);
 
   /// The k points nearest to `query`, closest first: indices and squared distances.
@@ -90,7 +91,21 @@ private:
     const double* xyz, std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, int& axis);
   Node* Join(std::size_t begin, std::size_t end, const std::vector<std::size_t>& pieceStart,
     const std::vector<Cut>& cuts, Box& box);
-  void MoveIntoLeafOrder(double* xyz, std::vector<std::uint32_t>& oldIndex);
+  void MoveIntoLeafOrder(
+    std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, const TaskRunner& run);
+
+  // Runs body(begin, end) over [0, count) in `chunks` tasks given to `run`.
+  template <typename Body>
+  static void InChunks(std::size_t count, std::size_t chunks, const TaskRunner& run, Body&& body)
+  {
+    std::vector<std::function<void()>> tasks;
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      const std::size_t begin = count * c / chunks, end = count * (c + 1) / chunks;
+      tasks.push_back([&body, begin, end]() { body(begin, end); });
+    }
+    run(tasks);
+  }
 
   Adaptor Cloud;
   Tree3D Tree;
@@ -139,13 +154,14 @@ inline std::size_t PointCloudIndex::CutAtMedian(
   return static_cast<std::size_t>(middle - ids.begin());
 }
 
-inline PointCloudIndex::PointCloudIndex(double* xyz, std::size_t count,
+inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
   std::vector<std::uint32_t>& oldIndex, int splitLevels, const TaskRunner& run)
-  : Cloud{ xyz, count }
+  : Cloud{ xyz.data(), xyz.size() / 3 }
   , Tree(3, Cloud,
       nanoflann::KDTreeSingleIndexAdaptorParams(
         LeafSize, nanoflann::KDTreeSingleIndexAdaptorFlags::SkipInitialBuildIndex))
 {
+  const std::size_t count = xyz.size() / 3;
   oldIndex.resize(count);
   for (std::size_t i = 0; i < count; ++i)
   {
@@ -162,7 +178,7 @@ inline PointCloudIndex::PointCloudIndex(double* xyz, std::size_t count,
       const std::size_t begin = pieceStart[p], end = pieceStart[p + 1];
       int axis = 0;
       const std::size_t middle = end - begin > 4 * LeafSize
-        ? CutAtMedian(xyz, oldIndex, begin, end, axis)
+        ? CutAtMedian(xyz.data(), oldIndex, begin, end, axis)
         : begin;
       if (middle > begin && middle < end)
       {
@@ -173,21 +189,24 @@ inline PointCloudIndex::PointCloudIndex(double* xyz, std::size_t count,
     }
     pieceStart.swap(next);
   }
+  const std::size_t pieces = pieceStart.size() - 1;
   {
     std::vector<double> moved(3 * count);
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      std::copy(xyz + 3 * oldIndex[i], xyz + 3 * oldIndex[i] + 3, &moved[3 * i]);
-    }
-    std::copy(moved.begin(), moved.end(), xyz);
+    InChunks(count, pieces, run, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        std::copy(&xyz[3 * oldIndex[i]], &xyz[3 * oldIndex[i]] + 3, &moved[3 * i]);
+      }
+    });
+    xyz.swap(moved);
+    this->Cloud.Points = xyz.data();
   }
 
-  const std::size_t pieces = pieceStart.size() - 1;
   std::vector<std::function<void()>> tasks;
   for (std::size_t p = 0; p < pieces; ++p)
   {
     this->PieceClouds.emplace_back(
-      new Adaptor{ xyz + 3 * pieceStart[p], pieceStart[p + 1] - pieceStart[p] });
+      new Adaptor{ xyz.data() + 3 * pieceStart[p], pieceStart[p + 1] - pieceStart[p] });
     this->PieceTrees.emplace_back(nullptr);
   }
   for (std::size_t p = 0; p < pieces; ++p)
@@ -216,7 +235,7 @@ inline PointCloudIndex::PointCloudIndex(double* xyz, std::size_t count,
   {
     this->Tree.root_node = this->Join(0, count, pieceStart, cuts, this->Tree.root_bbox);
   }
-  this->MoveIntoLeafOrder(xyz, oldIndex);
+  this->MoveIntoLeafOrder(xyz, oldIndex, run);
 }
 
 // The node over the points [begin, end): a piece's root (its leaf ranges shifted by the
@@ -266,20 +285,28 @@ inline PointCloudIndex::Node* PointCloudIndex::Join(std::size_t begin, std::size
   return piece.root_node;
 }
 
-inline void PointCloudIndex::MoveIntoLeafOrder(double* xyz, std::vector<std::uint32_t>& oldIndex)
+inline void PointCloudIndex::MoveIntoLeafOrder(
+  std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, const TaskRunner& run)
 {
   std::vector<std::uint32_t>& leafOrder = this->Tree.vAcc;
   const std::size_t count = leafOrder.size();
   std::vector<double> moved(3 * count);
   std::vector<std::uint32_t> movedIndex(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    std::copy(xyz + 3 * leafOrder[i], xyz + 3 * leafOrder[i] + 3, &moved[3 * i]);
-    movedIndex[i] = oldIndex[leafOrder[i]];
-    leafOrder[i] = static_cast<std::uint32_t>(i); // leaf ranges now index xyz directly
-  }
-  std::copy(moved.begin(), moved.end(), xyz);
+  InChunks(count, this->PieceTrees.size(), run, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      std::copy(&xyz[3 * leafOrder[i]], &xyz[3 * leafOrder[i]] + 3, &moved[3 * i]);
+      movedIndex[i] = oldIndex[leafOrder[i]];
+      leafOrder[i] = static_cast<std::uint32_t>(i); // leaf ranges now index xyz directly
+    }
+  });
+  xyz.swap(moved);
   oldIndex.swap(movedIndex);
+  this->Cloud.Points = xyz.data();
+  for (auto& piece : this->PieceClouds)
+  {
+    piece->Points = nullptr; // their trees are built; only their nodes are still in use
+  }
 }
 
 } // namespace lsi

@@ -356,7 +356,7 @@ void TestJoinedTree()
     {
       std::vector<double> xyz = original;
       std::vector<std::uint32_t> oldIndex;
-      const lsi::PointCloudIndex index(xyz.data(), n, oldIndex, levels, runInTurn);
+      const lsi::PointCloudIndex index(xyz, oldIndex, levels, runInTurn);
       bool samePoints = oldIndex.size() == n;
       std::vector<char> seen(n, 0);
       for (std::size_t i = 0; samePoints && i < n; ++i)
