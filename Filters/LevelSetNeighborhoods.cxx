@@ -57,6 +57,17 @@ double SecondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Calls f with the coordinate array as its concrete type (no virtual call per value), or as a
+// plain vtkDataArray for types outside vtkArrayDispatch's reals.
+template <typename F>
+void WithTypedCoordinates(vtkDataArray* coordinates, F&& f)
+{
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, f))
+  {
+    f(coordinates);
+  }
+}
+
 // Fills out.Order and out.Positions: the points sorted by Morton key over their bounding box.
 void SortSpatially(vtkPoints* points, Neighborhoods& out)
 {
@@ -69,7 +80,6 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
   {
     size[k] = std::max(bounds[2 * k + 1] - bounds[2 * k], 1e-300);
   }
-  // Coordinates are read through vtkArrayDispatch's typed ranges: no virtual call per point.
   vtkDataArray* coordinates = points->GetData();
   std::vector<std::uint64_t> words(n);
   auto makeKeys = [&](auto* array) {
@@ -83,10 +93,7 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
       }
     });
   };
-  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, makeKeys))
-  {
-    makeKeys(coordinates);
-  }
+  WithTypedCoordinates(coordinates, makeKeys);
   {
     std::vector<std::uint64_t> scratch;
     RadixSortPacked(words, scratch);
@@ -107,10 +114,7 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
       }
     });
   };
-  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, gather))
-  {
-    gather(coordinates);
-  }
+  WithTypedCoordinates(coordinates, gather);
 }
 // Whether all positions lie on one plane or line (up to rounding): the smallest eigenvalue of
 // their covariance is negligible against the largest.
