@@ -271,7 +271,7 @@ bool BuildNeighborhoods(
   SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
 
-  // Nearest neighbours, queried in Morton order (consecutive queries walk the same tree nodes).
+  // Nearest neighbours, queried in storage (leaf) order: consecutive queries walk the same nodes.
   start = std::chrono::steady_clock::now();
   if (!BuildTree(out, aborted))
   {
@@ -298,7 +298,7 @@ bool BuildNeighborhoods(
       for (std::size_t i = begin; i < end; ++i)
       {
         std::uint32_t* ids = &out.Ids[i * stride];
-        // The previous sample (its Morton neighbour) has about the same radius: search within
+        // The previous sample (its spatial neighbour) has about the same radius: search within
         // a slightly larger one first, and without a bound only if that misses some.
         const double bound = 1.44 * previousRadius * previousRadius;
         if (!(bound > 0.0) ||

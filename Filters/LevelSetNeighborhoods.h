@@ -51,7 +51,8 @@ struct Neighborhoods
   std::size_t NumberOfSamples = 0;
   int Stride = 0; // entries per sample: the sample itself (slot 0) and its n neighbours
 
-  // Samples are stored in Morton order (SpatialOrder.h), so that neighbours are near in memory.
+  // Samples are stored in the kd-tree's leaf order (after a Morton sort, SpatialOrder.h), so
+  // that neighbours are near in memory.
   // Every index below is an index in that order; Order maps it back to the input point id.
   std::vector<std::uint32_t> Order;
   std::vector<double> Positions;        // 3 per sample

@@ -323,7 +323,7 @@ bool vtkLevelSetIsosurface::Execute(
     return false;
   }
 
-  // --- The data in Morton order, and the sampling scale where the surface is -------------
+  // --- The data in storage (spatial) order, and the sampling scale where the surface is --
   std::vector<double> offsets(n), dataSign(n); // f - f_iso and its sign
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -513,7 +513,7 @@ bool vtkLevelSetIsosurface::Execute(
   levelSet->SetNumberOfValues(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    levelSet->SetValue(geometry.Order[i], phi[i]); // back from Morton order to input order
+    levelSet->SetValue(geometry.Order[i], phi[i]); // back from storage order to input order
   }
   particleOutput->GetPointData()->AddArray(levelSet);
 
