@@ -6,7 +6,8 @@ Opens the real particles with the plugin's Tipsy reader, adds their analytic den
 Level-Set Isosurface with its default seed, makes it the active source (its properties panel
 then shows the seed's sphere widget) and applies it the way the Apply button does: each output
 port goes to the view its XML hints prefer. Checks that the sphere widget is visible on the data,
-that the convergence table opened in a line chart view, that the particles output was not shown
+that the convergence table opened in a line chart view (against Iteration, with the band size on
+the right axis), that the particles output was not shown
 and that the surface is in the 3D view; saves a screenshot of the whole layout; writes
 "passed" to LSI_STATUS only if every check held.
 
@@ -76,6 +77,21 @@ def check(caller, event):
     print("views: %s" % [v.GetXMLName() for v in GetViews()])
     if not shown_in_chart:
         failures.append("the convergence table is not shown in a line chart view")
+    else:
+        # The plugin's GUI part plots it against Iteration, band size on the right axis.
+        chart = [r for r in shown_in_chart[0].Representations
+                 if hasattr(r, "Input") and r.Input.SMProxy == surface.SMProxy][0]
+        corners = dict(zip(chart.SeriesPlotCorner[::2], chart.SeriesPlotCorner[1::2]))
+        shown = list(chart.SeriesVisibility)  # the names of the visible series
+        print("chart: x %s (index %d), corners %s, visible %s"
+              % (chart.XArrayName, chart.UseIndexForXAxis, corners, shown))
+        if chart.UseIndexForXAxis or chart.XArrayName != "Iteration":
+            failures.append("the chart is not plotted against Iteration")
+        if corners.get("BandSize") != "1" or corners.get("SignMismatch") != "0":
+            failures.append("the band size is not on the right axis")
+        if sorted(shown) != ["BandSize", "MaxGradientDeviation", "MeanGradientDeviation",
+                             "SignMismatch"]:
+            failures.append("wrong series shown")
     ports_in_render = sorted({r.Input.Port if hasattr(r.Input, "Port") else 0
                               for r in render_view.Representations
                               if hasattr(r, "Input") and r.Input.SMProxy == surface.SMProxy and r.Visibility})
