@@ -21,6 +21,14 @@ inline bool Aborted(const AbortCheck& aborted, double done = -1.0)
   return aborted && aborted(done);
 }
 
+/// The part [from, to] of a stage whose progress `aborted` reports over [0, 1].
+inline AbortCheck SubRange(const AbortCheck& aborted, double from, double to)
+{
+  return [aborted, from, to](double done) {
+    return Aborted(aborted, done >= 0.0 ? from + (to - from) * done : -1.0);
+  };
+}
+
 /// For serial loops: Stop() asks `aborted` once every `period` calls, and stays true once it
 /// said yes.
 class SerialAbortCheck

@@ -172,7 +172,10 @@ int main(int argc, char* argv[])
             << filter->GetInitializationSeconds() << "\nseconds evolution: "
             << filter->GetEvolutionSeconds() << "\nseconds per iteration: "
             << (iterations ? filter->GetEvolutionSeconds() / iterations : 0.0)
-            << "\nseconds isopoints: " << filter->GetIsopointSeconds()
+            << "\nseconds isopoints: " << filter->GetIsopointSeconds() << " (completion "
+            << filter->GetCompletionSeconds() << ", refinement on the data "
+            << filter->GetDataRefinementSeconds() << ")\nseconds outputs: "
+            << filter->GetOutputSeconds()
             << "\nisopoints: " << m.Isopoints << "\nmean distance L: " << m.MeanDistance
             << "\n99th percentile distance: " << m.Percentile99Distance
             << "\nmean normal angle error (deg): " << m.MeanNormalAngleDegrees

@@ -1,5 +1,5 @@
-// Filter-level tests: neighbour reuse across parameter changes, and bad input (a clear error
-// and empty outputs, never a crash or hang).
+// Filter-level tests: neighbour reuse across parameter changes, progress through every stage,
+// and bad input (a clear error and empty outputs, never a crash or hang).
 #include "vtkLevelSetIsosurface.h"
 
 #include "TestCheck.h"
@@ -18,7 +18,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -36,6 +38,18 @@ public:
   }
   int Count = 0;
   std::string Last;
+};
+
+// Records every progress value the filter reports.
+class ProgressLog : public vtkCommand
+{
+public:
+  static ProgressLog* New() { return new ProgressLog; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Values.push_back(*static_cast<double*>(data));
+  }
+  std::vector<double> Values;
 };
 
 // Random samples in [0, 60]^3 of f = 20 - |x - (30, 30, 30)|, optionally with extra tweaks.
@@ -134,6 +148,43 @@ void TestReuseOfNeighbours()
   Check(table && table->GetNumberOfRows() == filter->GetNumberOfIterationsPerformed() &&
       table->GetColumnByName("SignMismatch") && table->GetColumnByName("BandSize"),
     "convergence table");
+}
+
+// Progress rises from 0 to 1 and moves within each stage, not only between them (ranges of
+// vtkLevelSetIsosurface::Execute: neighbours below 0.35, isopoints 0.8 to 0.92).
+void TestProgressThroughStages()
+{
+  vtkNew<vtkPolyData> data = Ball(200000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  vtkNew<ProgressLog> log;
+  filter->AddObserver(vtkCommand::ProgressEvent, log);
+  filter->Update();
+  const std::vector<double>& v = log->Values;
+  bool rising = !v.empty();
+  for (std::size_t i = 1; i < v.size(); ++i)
+  {
+    rising = rising && v[i] >= v[i - 1];
+  }
+  Check(rising, "progress never goes back (" + std::to_string(v.size()) + " reports)");
+  Check(!v.empty() && v.back() == 1.0, "progress ends at 1");
+  auto distinctWithin = [&v](double from, double to) {
+    std::set<double> inside;
+    for (double p : v)
+    {
+      if (p > from && p < to)
+      {
+        inside.insert(p);
+      }
+    }
+    return inside.size();
+  };
+  const std::size_t neighbours = distinctWithin(0.0, 0.35);
+  const std::size_t isopoints = distinctWithin(0.8, 0.92);
+  Check(neighbours >= 3, "progress moves during the neighbour search (" +
+      std::to_string(neighbours) + " values)");
+  Check(isopoints >= 3,
+    "progress moves during the isopoint stage (" + std::to_string(isopoints) + " values)");
 }
 
 void TestBadInput()
@@ -248,6 +299,7 @@ void TestBadInput()
 int main()
 {
   TestReuseOfNeighbours();
+  TestProgressThroughStages();
   TestBadInput();
   std::cout << (lsi::test::Failures() ? "filter tests FAILED\n" : "filter tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
