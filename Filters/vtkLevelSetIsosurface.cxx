@@ -366,19 +366,22 @@ bool vtkLevelSetIsosurface::Execute(
 
   // --- Initial level set: signed distance to the union of the seed spheres, cut to the data's
   // bounding box (grown by half a spacing) so that a seed larger than the data still has a
-  // front. SeedRadius 0 seeds the whole box.
+  // front. SeedRadius 0 seeds the whole box; a negative one means a tenth of the largest extent.
   double bounds[6];
   input->GetBounds(bounds);
+  const double seedRadius = this->SeedRadius >= 0.0
+    ? this->SeedRadius
+    : 0.1 * std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   for (int k = 0; k < 3; ++k)
   {
     bounds[2 * k] -= 0.5 * spacing;
     bounds[2 * k + 1] += 0.5 * spacing;
   }
   std::vector<double> spheres;
-  if (this->SeedRadius > 0.0)
+  if (seedRadius > 0.0)
   {
     spheres.insert(spheres.end(),
-      { this->SeedCenter[0], this->SeedCenter[1], this->SeedCenter[2], this->SeedRadius });
+      { this->SeedCenter[0], this->SeedCenter[1], this->SeedCenter[2], seedRadius });
     spheres.insert(spheres.end(), this->AdditionalSeeds.begin(), this->AdditionalSeeds.end());
   }
   start = Clock::now();
@@ -407,7 +410,9 @@ bool vtkLevelSetIsosurface::Execute(
       vtkErrorMacro("Seed sphere " << s << (s == 0 ? " (the main seed)" : " (additional)")
                                    << " at (" << spheres[4 * s] << ", " << spheres[4 * s + 1]
                                    << ", " << spheres[4 * s + 2] << ") with radius "
-                                   << spheres[4 * s + 3] << " contains no sample.");
+                                   << spheres[4 * s + 3]
+                                   << " contains no sample. (In a script, update the input "
+                                      "before creating the filter, or set SeedCenter.)");
       return false;
     }
   }

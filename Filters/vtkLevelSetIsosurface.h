@@ -75,10 +75,12 @@ public:
 
   ///@{
   /** Centre and radius of the main seed sphere. A radius of 0 (the default) seeds the whole
-   * data set (its bounding box), so every component is extracted. Default centre (0, 0, 0). */
+   * data set (its bounding box), so every component is extracted. A negative radius means a
+   * tenth of the data's largest extent (ParaView's default: a script that creates the filter
+   * before its input has bounds gets -0.2 from the bounds domain). Default centre (0, 0, 0). */
   vtkSetVector3Macro(SeedCenter, double);
   vtkGetVector3Macro(SeedCenter, double);
-  vtkSetClampMacro(SeedRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(SeedRadius, double);
   vtkGetMacro(SeedRadius, double);
   ///@}
 

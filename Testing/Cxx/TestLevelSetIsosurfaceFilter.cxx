@@ -14,6 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -187,6 +188,58 @@ void TestProgressThroughStages()
     "progress moves during the isopoint stage (" + std::to_string(isopoints) + " values)");
 }
 
+// Two balls of radius 8, at the centre of the box and near a corner.
+vtkNew<vtkPolyData> TwoBalls(vtkIdType count)
+{
+  vtkNew<vtkPolyData> data = Ball(count);
+  vtkDataArray* f = data->GetPointData()->GetArray("f");
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double x[3];
+    data->GetPoint(i, x);
+    auto ball = [&x](double c) {
+      return 8.0 - std::sqrt((x[0] - c) * (x[0] - c) + (x[1] - c) * (x[1] - c) +
+                     (x[2] - c) * (x[2] - c));
+    };
+    f->SetComponent(i, 0, std::max(ball(30.0), ball(12.0)));
+  }
+  return data;
+}
+
+// Farthest isopoint from the centre ball's centre (30, 30, 30).
+double FarthestFromCentre(vtkPolyData* isopoints)
+{
+  double farthest = 0.0;
+  for (vtkIdType i = 0; i < isopoints->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    isopoints->GetPoint(i, x);
+    farthest = std::max(farthest,
+      std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30)));
+  }
+  return farthest;
+}
+
+// SeedRadius 0 seeds everything; a negative radius (what ParaView's bounds domain gives a
+// script whose input has no bounds yet) means a tenth of the extent, not everything.
+void TestSeedRadiusMeanings()
+{
+  vtkNew<vtkPolyData> data = TwoBalls(100000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  filter->SetSeedRadius(-0.2);
+  filter->Update();
+  const double seeded = FarthestFromCentre(filter->GetOutput(0));
+  Check(filter->GetOutput(0)->GetNumberOfPoints() > 300 && seeded < 10.0,
+    "a negative SeedRadius extracts only the ball at the seed (farthest isopoint " +
+      std::to_string(seeded) + " from its centre)");
+  filter->SetSeedRadius(0.0);
+  filter->Update();
+  const double all = FarthestFromCentre(filter->GetOutput(0));
+  Check(all > 25.0, "SeedRadius 0 extracts both balls (farthest isopoint " +
+      std::to_string(all) + " from the centre ball)");
+}
+
 void TestBadInput()
 {
   {
@@ -300,6 +353,7 @@ int main()
 {
   TestReuseOfNeighbours();
   TestProgressThroughStages();
+  TestSeedRadiusMeanings();
   TestBadInput();
   std::cout << (lsi::test::Failures() ? "filter tests FAILED\n" : "filter tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
