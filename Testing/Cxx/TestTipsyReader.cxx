@@ -1,0 +1,241 @@
+// The Tipsy reader: writes small Tipsy standard files with known particles (big- and
+// little-endian, with dark and star particles after the gas) and checks what comes back, then
+// bad files (a clear error, an empty output). With a file argument, also reads that real file
+// and checks its particle count and array ranges against its header.
+#include "vtkTipsyParticleReader.h"
+
+#include "TestCheck.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using lsi::test::Check;
+
+// Writes values in a chosen byte order.
+class TipsyWriter
+{
+public:
+  TipsyWriter(const std::string& path, bool bigEndian)
+    : File(path, std::ios::binary)
+    , BigEndian(bigEndian)
+  {
+  }
+  template <typename T>
+  void Put(T value)
+  {
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    const std::uint16_t probe = 1;
+    const bool hostLittle = *reinterpret_cast<const char*>(&probe) == 1;
+    if (this->BigEndian == hostLittle)
+    {
+      for (std::size_t i = 0; i < sizeof(T) / 2; ++i)
+      {
+        std::swap(bytes[i], bytes[sizeof(T) - 1 - i]);
+      }
+    }
+    this->File.write(bytes, sizeof(T));
+  }
+
+private:
+  std::ofstream File;
+  bool BigEndian;
+};
+
+// Gas particle i: mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi.
+float GasValue(int i, int column)
+{
+  return static_cast<float>(i + 1) * 10.0f + static_cast<float>(column) * 0.5f;
+}
+
+constexpr int GasCount = 3, DarkCount = 2, StarCount = 1;
+constexpr double FileTime = 0.75;
+
+void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
+{
+  {
+    TipsyWriter w(path, bigEndian);
+    w.Put<double>(FileTime);
+    w.Put<std::int32_t>(GasCount + DarkCount + StarCount);
+    w.Put<std::int32_t>(3);
+    w.Put<std::int32_t>(GasCount);
+    w.Put<std::int32_t>(DarkCount);
+    w.Put<std::int32_t>(StarCount);
+    w.Put<std::int32_t>(0); // pad
+    for (int i = 0; i < GasCount; ++i)
+    {
+      for (int c = 0; c < 12; ++c)
+      {
+        w.Put<float>(GasValue(i, c));
+      }
+    }
+    for (int i = 0; i < 9 * DarkCount + 11 * StarCount; ++i)
+    {
+      w.Put<float>(-1.0f); // dark and star particles, which the reader skips
+    }
+  }
+  if (droppedBytes > 0)
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    all.resize(all.size() - static_cast<std::size_t>(droppedBytes));
+    std::ofstream(path, std::ios::binary).write(all.data(), static_cast<std::streamsize>(all.size()));
+  }
+}
+
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = static_cast<const char*>(data);
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+void TestKnownParticles(bool bigEndian)
+{
+  const std::string order = bigEndian ? "big-endian" : "little-endian";
+  const std::string path = "tipsy_test_" + order + ".std";
+  WriteTipsy(path, bigEndian);
+  Check(vtkTipsyParticleReader::CanReadFile(path.c_str()), order + ": CanReadFile");
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<MessageCounter> warnings;
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->Update();
+  vtkPolyData* out = reader->GetOutput();
+  Check(out->GetNumberOfPoints() == GasCount, order + ": only the gas particles are read");
+  Check(out->GetNumberOfVerts() == GasCount, order + ": one vertex per particle");
+  Check(warnings->Count == 1 && warnings->Last.find("skipped 2 dark and 1 star") != std::string::npos,
+    order + ": a warning names the skipped particles (got: " + warnings->Last + ")");
+  Check(std::abs(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) - FileTime) < 1e-12,
+    order + ": the file's time");
+  double worst = 0.0;
+  const char* names[] = { "mass", "rho", "temp", "hsmooth", "metals", "phi" };
+  const int columns[] = { 0, 7, 8, 9, 10, 11 };
+  for (int i = 0; i < GasCount; ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    double v[3];
+    vtkDataArray* velocity = out->GetPointData()->GetArray("velocity");
+    Check(velocity != nullptr, order + ": velocity array");
+    if (!velocity)
+    {
+      return;
+    }
+    velocity->GetTuple(i, v);
+    for (int d = 0; d < 3; ++d)
+    {
+      worst = std::max(worst, std::abs(x[d] - GasValue(i, 1 + d)));
+      worst = std::max(worst, std::abs(v[d] - GasValue(i, 4 + d)));
+    }
+    for (int a = 0; a < 6; ++a)
+    {
+      vtkDataArray* array = out->GetPointData()->GetArray(names[a]);
+      Check(array != nullptr, order + ": array " + names[a]);
+      if (array)
+      {
+        worst = std::max(worst, std::abs(array->GetTuple1(i) - GasValue(i, columns[a])));
+      }
+    }
+  }
+  Check(worst == 0.0, order + ": every value read back exactly (worst error " +
+      std::to_string(worst) + ")");
+  Check(out->GetPointData()->GetScalars() &&
+      std::string(out->GetPointData()->GetScalars()->GetName()) == "rho",
+    order + ": rho is the active scalar");
+  std::remove(path.c_str());
+}
+
+void TestBadFiles()
+{
+  struct Case
+  {
+    std::string What;
+    std::string Path;
+    std::string Expected;
+  };
+  const std::string truncated = "tipsy_test_truncated.std";
+  WriteTipsy(truncated, true, 8); // the last star particle is cut short
+  const std::string text = "tipsy_test_text.std";
+  std::ofstream(text) << "this is not a Tipsy file, only a line of text that is long enough\n";
+  const Case cases[] = {
+    { "missing file", "no_such_file.std", "Cannot open" },
+    { "truncated file", truncated, "not a Tipsy standard file" },
+    { "text file", text, "not a Tipsy standard file" },
+  };
+  for (const Case& c : cases)
+  {
+    Check(!vtkTipsyParticleReader::CanReadFile(c.Path.c_str()), c.What + ": CanReadFile is false");
+    vtkNew<vtkTipsyParticleReader> reader;
+    reader->SetFileName(c.Path.c_str());
+    vtkNew<MessageCounter> errors;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->Update();
+    Check(errors->Count > 0 && errors->Last.find(c.Expected) != std::string::npos,
+      c.What + ": error mentions '" + c.Expected + "' (got: " + errors->Last + ")");
+    Check(reader->GetOutput()->GetNumberOfPoints() == 0, c.What + ": empty output");
+  }
+  std::remove(truncated.c_str());
+  std::remove(text.c_str());
+}
+
+// A real file: as many points as its header's gas count, finite coordinates inside the
+// expected box.
+void TestRealFile(const std::string& path, vtkIdType expectedGas, double halfExtent)
+{
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* out = reader->GetOutput();
+  Check(out->GetNumberOfPoints() == expectedGas,
+    path + ": " + std::to_string(out->GetNumberOfPoints()) + " gas particles, expected " +
+      std::to_string(expectedGas));
+  double bounds[6];
+  out->GetBounds(bounds);
+  bool inside = true;
+  for (double b : bounds)
+  {
+    inside = inside && std::isfinite(b) && std::abs(b) <= halfExtent;
+  }
+  Check(inside, path + ": coordinates within +-" + std::to_string(halfExtent));
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  TestKnownParticles(true);
+  TestKnownParticles(false);
+  TestBadFiles();
+  // Optional: the real files of ../shared/data (see its README): the Evrard glass (28,721 gas
+  // particles in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).
+  if (argc > 2)
+  {
+    TestRealFile(argv[1], 28721, 1.0 + 1e-6);
+    TestRealFile(argv[2], 20000, 1.0 + 1e-6);
+  }
+  std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n" : "Tipsy reader tests passed\n");
+  return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
