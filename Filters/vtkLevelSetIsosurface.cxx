@@ -507,6 +507,7 @@ bool vtkLevelSetIsosurface::Execute(
   else
   {
     isopointOutput->ShallowCopy(surface);
+    isopointOutput->SetVerts(VertexCells(surface->GetNumberOfPoints()));
   }
   this->OutputSeconds = SecondsSince(start);
 
@@ -553,7 +554,6 @@ bool vtkLevelSetIsosurface::SurfaceOutput(vtkPointSet* input, const lsi::Neighbo
     normals->SetTuple(i, &isopoints.Normals[3 * i]);
   }
   surface->SetPoints(coordinates);
-  surface->SetVerts(VertexCells(m));
   surface->GetPointData()->SetNormals(normals);
 
   std::vector<double> radii;
