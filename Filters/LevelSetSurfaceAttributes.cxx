@@ -1,13 +1,15 @@
 #include "LevelSetSurfaceAttributes.h"
 
-#include "MovingLeastSquares.h"
+#include "LevelSetIsopoints.h"
 #include "NearestNeighbors.h"
 #include "Splats.h"
 
 #include "vtkDataArray.h"
+#include "vtkSMPThreadLocal.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace lsi
 {
@@ -43,36 +45,34 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted)
 {
   const std::size_t count = points.size() / 3;
-  const std::size_t k = std::min(fitCount, geometry.NumberOfSamples);
+  vtkSMPThreadLocal<std::shared_ptr<MLSStencil>> stencils;
   return ParallelForInBlocks(
     count,
     [&](std::size_t begin, std::size_t end) {
-      std::vector<std::uint32_t> ids(k);
-      std::vector<double> d2(k), gradient(3 * k), weights(k);
+      std::shared_ptr<MLSStencil>& stencil = stencils.Local();
+      if (!stencil)
+      {
+        stencil.reset(new MLSStencil(geometry, fitCount));
+      }
       for (std::size_t i = begin; i < end; ++i)
       {
-        const double* p = &points[3 * i];
-        const std::size_t found = geometry.Index->Nearest(p, k, ids.data(), d2.data());
-        const double h = std::sqrt(*std::max_element(d2.begin(), d2.begin() + found));
-        const bool fitted = BuildLinearStencil(p, found,
-          [&](std::size_t j) { return geometry.Position(ids[j]); }, h,
-          LinearStencilView{ gradient.data(), weights.data() });
-        if (!fitted)
-        {
-          std::fill(weights.begin(), weights.end(), 0.0);
-          weights[0] = 1.0; // the nearest sample
-        }
+        const Eigen::Vector3d p(&points[3 * i]);
+        stencil->Gather(p);
+        // A singular fit (samples on a plane or line) takes the nearest sample's value.
+        const bool fitted = stencil->Build(p);
+        const std::size_t used = fitted ? stencil->Found() : 1;
         for (std::size_t a = 0; a < sources.size(); ++a)
         {
           const int components = sources[a]->GetNumberOfComponents();
           for (int c = 0; c < components; ++c)
           {
             double value = 0.0;
-            for (std::size_t j = 0; j < found; ++j)
+            for (std::size_t j = 0; j < used; ++j)
             {
-              if (weights[j] != 0.0)
+              const double w = fitted ? stencil->ValueWeight(j) : 1.0;
+              if (w != 0.0)
               {
-                value += weights[j] * sources[a]->GetComponent(geometry.Order[ids[j]], c);
+                value += w * sources[a]->GetComponent(geometry.Order[stencil->Sample(j)], c);
               }
             }
             targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);
