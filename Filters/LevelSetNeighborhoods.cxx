@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <functional>
+#include <mutex>
 #include <thread>
 #include <chrono>
 #include <cmath>
@@ -191,6 +192,42 @@ struct TreeBuild
   std::atomic<bool> Done{ false };
 };
 
+// The threads of abandoned builds. Each is joined when the next one is abandoned after it has
+// finished, and the rest at exit, so that no build is still running when the program ends.
+class AbandonedBuilds
+{
+public:
+  static void Add(std::thread worker, std::shared_ptr<TreeBuild> build)
+  {
+    static AbandonedBuilds all;
+    std::lock_guard<std::mutex> lock(all.Mutex);
+    for (std::size_t i = 0; i < all.Builds.size();)
+    {
+      if (all.Builds[i].second->Done)
+      {
+        all.Builds[i].first.join();
+        all.Builds.erase(all.Builds.begin() + static_cast<std::ptrdiff_t>(i));
+      }
+      else
+      {
+        ++i;
+      }
+    }
+    all.Builds.emplace_back(std::move(worker), std::move(build));
+  }
+  ~AbandonedBuilds()
+  {
+    for (auto& entry : this->Builds)
+    {
+      entry.first.join();
+    }
+  }
+
+private:
+  std::mutex Mutex;
+  std::vector<std::pair<std::thread, std::shared_ptr<TreeBuild>>> Builds;
+};
+
 // Runs the tasks on threads of their own and the last one on the calling thread.
 void RunOnThreads(std::vector<std::function<void()>>& tasks)
 {
@@ -237,7 +274,7 @@ bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
   {
     if (Aborted(aborted, 0.0))
     {
-      worker.detach();
+      AbandonedBuilds::Add(std::move(worker), build);
       return false;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
