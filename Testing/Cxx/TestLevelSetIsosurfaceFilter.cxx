@@ -2,6 +2,7 @@
 // and bad input (a clear error and empty outputs, never a crash or hang).
 #include "vtkLevelSetIsosurface.h"
 
+#include "MessageCounter.h"
 #include "TestCheck.h"
 
 #include "vtkCommand.h"
@@ -26,20 +27,7 @@
 namespace
 {
 using lsi::test::Check;
-
-// Counts error events so that tests can require a message without printing it.
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    this->Last = static_cast<const char*>(data);
-  }
-  int Count = 0;
-  std::string Last;
-};
+using lsi::test::MessageCounter;
 
 // Records every progress value the filter reports.
 class ProgressLog : public vtkCommand
@@ -96,7 +84,7 @@ void Configure(vtkLevelSetIsosurface* filter, vtkPolyData* input)
 // Runs a filter expected to fail: an error message naming the problem, empty outputs.
 void ExpectError(vtkLevelSetIsosurface* filter, const std::string& expected, const char* what)
 {
-  vtkNew<ErrorCounter> errors;
+  vtkNew<MessageCounter> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   filter->Update();
   Check(errors->Count > 0, std::string(what) + ": an error is reported");

@@ -4,6 +4,7 @@
 // and checks its particle count and array ranges against its header.
 #include "vtkTipsyParticleReader.h"
 
+#include "MessageCounter.h"
 #include "TestCheck.h"
 
 #include "vtkCommand.h"
@@ -27,6 +28,7 @@
 namespace
 {
 using lsi::test::Check;
+using lsi::test::MessageCounter;
 
 // Writes values in a chosen byte order.
 class TipsyWriter
@@ -99,19 +101,6 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
     std::ofstream(path, std::ios::binary).write(all.data(), static_cast<std::streamsize>(all.size()));
   }
 }
-
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    this->Last = static_cast<const char*>(data);
-  }
-  int Count = 0;
-  std::string Last;
-};
 
 void TestKnownParticles(bool bigEndian)
 {

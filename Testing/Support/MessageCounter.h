@@ -1,0 +1,31 @@
+// Counts the error or warning events of a VTK object and keeps the last message, so that tests
+// can require a message without printing it:
+//   vtkNew<lsi::test::MessageCounter> errors;
+//   algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
+#ifndef MessageCounter_h
+#define MessageCounter_h
+
+#include "vtkCommand.h"
+
+#include <string>
+
+namespace lsi
+{
+namespace test
+{
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = static_cast<const char*>(data);
+  }
+  int Count = 0;
+  std::string Last;
+};
+} // namespace test
+} // namespace lsi
+
+#endif
