@@ -197,10 +197,9 @@ bool vtkLevelSetIsosurface::Execute(
 {
   // Each stage reports its progress over its own part of [0, 1] and checks for abort between
   // blocks of work (every few tens of milliseconds).
-  auto stage = [this](double from, double to) -> lsi::AbortCheck {
-    return [this, from, to](double done) {
-      return this->ProgressOrAbort(done >= 0.0 ? from + (to - from) * done : -1.0);
-    };
+  const lsi::AbortCheck progressOrAbort = [this](double p) { return this->ProgressOrAbort(p); };
+  auto stage = [&progressOrAbort](double from, double to) {
+    return lsi::SubRange(progressOrAbort, from, to);
   };
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
