@@ -8,12 +8,11 @@
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetSplatOutput.h"
 #include "LevelSetSurfaceAttributes.h"
+#include "LevelSetVertexCells.h"
 
-#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -39,23 +38,6 @@ using Clock = std::chrono::steady_clock;
 double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Vertex cells 0..count-1, one per point.
-vtkNew<vtkCellArray> VertexCells(vtkIdType count)
-{
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(count + 1);
-  connectivity->SetNumberOfValues(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
-  offsets->SetValue(count, count);
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-  return cells;
 }
 
 vtkNew<vtkTable> EmptyConvergenceTable()
@@ -506,12 +488,12 @@ bool vtkLevelSetIsosurface::Execute(
   else
   {
     isopointOutput->ShallowCopy(surface);
-    isopointOutput->SetVerts(VertexCells(surface->GetNumberOfPoints()));
+    isopointOutput->SetVerts(lsi::VertexCells(surface->GetNumberOfPoints()));
   }
   this->OutputSeconds = SecondsSince(start);
 
   particleOutput->SetPoints(points);
-  particleOutput->SetVerts(VertexCells(n));
+  particleOutput->SetVerts(lsi::VertexCells(n));
   particleOutput->GetPointData()->PassData(input->GetPointData());
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");

@@ -1,8 +1,8 @@
 #include "vtkTipsyParticleReader.h"
 
-#include "vtkCellArray.h"
+#include "LevelSetVertexCells.h"
+
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -187,21 +187,8 @@ int vtkTipsyParticleReader::RequestData(
       scalars[a]->SetValue(i, v[columns[a]]);
     }
   }
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(n + 1);
-  connectivity->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i <= n; ++i)
-  {
-    offsets->SetValue(i, i);
-    if (i < n)
-    {
-      connectivity->SetValue(i, i);
-    }
-  }
-  vtkNew<vtkCellArray> vertices;
-  vertices->SetData(offsets, connectivity);
   output->SetPoints(points);
-  output->SetVerts(vertices);
+  output->SetVerts(lsi::VertexCells(n));
   for (auto& array : scalars)
   {
     output->GetPointData()->AddArray(array);
