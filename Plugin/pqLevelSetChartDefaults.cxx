@@ -44,15 +44,15 @@ bool IsConvergenceChart(pqDataRepresentation* representation)
     std::strcmp(port->getSource()->getProxy()->GetXMLName(), "LevelSetIsosurface") == 0;
 }
 
-void SetPairs(vtkSMProxy* proxy, const char* property, int field)
+// Sets a per-series property as (column, value) pairs, the value taken from `field`.
+void SetPairs(vtkSMProxy* proxy, const char* property, const char* SeriesStyle::*field)
 {
   vtkSMPropertyHelper helper(proxy, property);
   unsigned int index = 0;
   for (const SeriesStyle& series : ConvergenceSeries)
   {
-    const char* value = field == 0 ? series.Label : field == 1 ? series.Visible : series.Corner;
     helper.Set(index++, series.Column);
-    helper.Set(index++, value);
+    helper.Set(index++, series.*field);
   }
   helper.SetNumberOfElements(index);
 }
@@ -62,9 +62,9 @@ void ApplyChartDefaults(pqDataRepresentation* representation)
   vtkSMProxy* proxy = representation->getProxy();
   vtkSMPropertyHelper(proxy, "UseIndexForXAxis").Set(0);
   vtkSMPropertyHelper(proxy, "XArrayName").Set("Iteration");
-  SetPairs(proxy, "SeriesLabel", 0);
-  SetPairs(proxy, "SeriesVisibility", 1);
-  SetPairs(proxy, "SeriesPlotCorner", 2);
+  SetPairs(proxy, "SeriesLabel", &SeriesStyle::Label);
+  SetPairs(proxy, "SeriesVisibility", &SeriesStyle::Visible);
+  SetPairs(proxy, "SeriesPlotCorner", &SeriesStyle::Corner);
   proxy->UpdateVTKObjects();
 
   if (pqView* view = representation->getView())
