@@ -1,12 +1,12 @@
 #include "LevelSetEvolution.h"
 
+#include "LevelSetTiming.h"
 #include "MovingLeastSquares.h"
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace lsi
@@ -340,7 +340,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     {
       return false;
     }
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     IterationRecord record;
     record.Iteration = iteration;
     this->Evolve(settings);
@@ -361,8 +361,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
         }
       }
     }
-    record.Seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.Seconds = SecondsSince(start);
     this->Measure(settings, record); // statistics are reported, not timed as part of the iteration
     if (onIteration && !onIteration(record))
     {

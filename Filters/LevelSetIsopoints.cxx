@@ -1,5 +1,6 @@
 #include "LevelSetIsopoints.h"
 
+#include "LevelSetTiming.h"
 #include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
 #include "TangentPlaneCompletion.h"
@@ -8,7 +9,6 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -454,13 +454,12 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   }
   if (settings.RefineOnData && !out.Points.empty())
   {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     if (!RefineOnData(geometry, dataOffsets, settings, out, SubRange(aborted, 0.76, 1.0)))
     {
       return false;
     }
-    out.DataRefinementSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.DataRefinementSeconds = SecondsSince(start);
   }
   return !Aborted(aborted, 1.0);
 }
@@ -470,7 +469,7 @@ namespace
 bool Complete(const Neighborhoods& geometry, const std::vector<double>& phi,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
 {
-  const auto completionStart = std::chrono::steady_clock::now();
+  const auto completionStart = Clock::now();
   std::vector<double> candidates, candidateNormals;
   std::vector<char> candidateValid;
   CompletionCandidates(out, settings, candidates, candidateValid);
@@ -492,8 +491,7 @@ bool Complete(const Neighborhoods& geometry, const std::vector<double>& phi,
   result.RoughCount = out.RoughCount;
   AppendSelected(all.Points, all.Normals, kept, result);
   result.CompletedCount = result.Points.size() / 3 - std::min(before, result.Points.size() / 3);
-  result.CompletionSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - completionStart).count();
+  result.CompletionSeconds = SecondsSince(completionStart);
   out = std::move(result);
   return true;
 }

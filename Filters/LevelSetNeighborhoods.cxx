@@ -1,5 +1,6 @@
 #include "LevelSetNeighborhoods.h"
 
+#include "LevelSetTiming.h"
 #include "MovingLeastSquares.h"
 #include "SpatialOrder.h"
 
@@ -53,11 +54,6 @@ bool ArrangeRow(std::uint32_t self, std::uint32_t* ids, double* d2, int stride)
 
 namespace
 {
-double SecondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Calls f with the coordinate array as its concrete type (no virtual call per value), or as a
 // plain vtkDataArray for types outside vtkArrayDispatch's reals.
 template <typename F>
@@ -143,7 +139,7 @@ bool IsFlat(const std::vector<double>& positions)
 
 void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count) const
 {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   std::vector<std::size_t> missing;
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -175,8 +171,7 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
     this->SingularSamples += s;
   }
   this->ComputedStencils += missing.size();
-  this->StencilSeconds +=
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->StencilSeconds += SecondsSince(start);
 }
 
 namespace
@@ -304,12 +299,12 @@ bool BuildNeighborhoods(
   out = Neighborhoods();
   out.NumberOfSamples = n;
   out.Stride = stride;
-  auto start = std::chrono::steady_clock::now();
+  auto start = Clock::now();
   SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
 
   // Nearest neighbours, queried in storage (leaf) order: consecutive queries walk the same nodes.
-  start = std::chrono::steady_clock::now();
+  start = Clock::now();
   if (!BuildTree(out, aborted))
   {
     return false;

@@ -8,6 +8,7 @@
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetSplatOutput.h"
 #include "LevelSetSurfaceAttributes.h"
+#include "LevelSetTiming.h"
 #include "LevelSetVertexCells.h"
 
 #include "vtkDataArray.h"
@@ -26,7 +27,6 @@
 #include "vtkTable.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -34,11 +34,8 @@ vtkStandardNewMacro(vtkLevelSetIsosurface);
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using lsi::Clock;
+using lsi::SecondsSince;
 
 vtkNew<vtkTable> EmptyConvergenceTable()
 {
