@@ -1,7 +1,7 @@
 """Rendering test (pvbatch under xvfb-run): the surface is shaded by its normals, in both output
 types, as ParaView draws them by default (the Surface representation).
 
-  pvbatch TestShading.py PLUGIN TIPSY_FILE OUT_DIR
+  pvbatch TestShading.py PLUGIN TIPSY_FILE OUT_DIR [POINT_SIZE_FACTOR]
 
 The Evrard collapse glass (../shared/data) has density rho(r) = 1 / (2 pi r), so the isosurface
 rho = 1 / pi is the sphere r = 0.5. Seen along -z with a parallel camera and a single white
@@ -9,8 +9,9 @@ headlight, a white, purely diffuse (Lambert) sphere has brightness n_z = sqrt(1 
 R^2) at screen position (x, y). The test compares every pixel within 0.9 R of the centre with
 that value:
 - splats (the default output);
-- isopoints, drawn as lit points whose Point Size is 1.3 times the mean SplatRadius in pixels
-  (points much smaller leave holes, much larger show their flat squares: 1.15 to 1.5 pass).
+- isopoints, drawn as lit points whose Point Size is POINT_SIZE_FACTOR (default 1.3) times the
+  mean SplatRadius in pixels (points much smaller leave holes, much larger show their flat
+  squares: 1.15 to 1.5 pass, 1.0 and 1.8 fail).
 At least 99% of the pixels must lie within 0.1 of n_z. Unlit points (all one brightness),
 inward normals (black) or holes (black background) fail it.
 
@@ -27,6 +28,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 plugin, tipsy_file, out_dir = sys.argv[1:4]
+point_size_factor = float(sys.argv[4]) if len(sys.argv) > 4 else 1.3
 LoadPlugin(plugin, ns=globals())
 RADIUS = 0.5
 HALF_WIDTH = 0.6  # world units from the image centre to its edge
@@ -76,7 +78,7 @@ for output_type in ("Splats", "Isopoints"):
         radii = surface.GetClientSideObject().GetOutputDataObject(0).GetPointData().GetArray(
             "SplatRadius")
         mean_radius = float(vtk_to_numpy(radii).mean())
-        display.PointSize = 1.3 * mean_radius * PIXELS / (2 * HALF_WIDTH)
+        display.PointSize = point_size_factor * mean_radius * PIXELS / (2 * HALF_WIDTH)
         print("isopoints: point size %.1f pixels" % display.PointSize)
     Render(view)
     view.CameraParallelProjection = 1
