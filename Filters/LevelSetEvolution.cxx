@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetEvolution.h"
 
 #include "LevelSetTiming.h"
@@ -18,70 +20,19 @@ bool Positive(double phi)
 {
   return phi > 0.0;
 }
-
-// Runs body(i) for every index in `where`, in parallel.
-template <typename Body>
-void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
-{
-  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      body(static_cast<std::size_t>(k), where[static_cast<std::size_t>(k)]);
-    }
-  });
-}
 } // namespace
 
-double ReinitializationHalfWidth(const EvolutionSettings& settings)
-{
-  const EvolutionCoefficients& c = settings.Coefficients;
-  return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * settings.NeighborhoodRadius;
-}
-
 LevelSetEvolution::LevelSetEvolution(const Neighborhoods& geometry,
-  const std::vector<double>& dataSign, std::vector<double>& phi,
-  const std::vector<double>* dataOffsets)
+  const std::vector<double>& dataSign, const std::vector<double>& dataOffsets,
+  std::vector<double>& phi)
   : Geometry(geometry)
   , DataSign(dataSign)
   , DataOffsets(dataOffsets)
   , Phi(phi)
   , Gradient(3 * geometry.NumberOfSamples, 0.0)
-  , Stamp(geometry.NumberOfSamples, 0)
+  , Collector(geometry)
+  , Reinitializer(geometry, Collector)
 {
-}
-
-void LevelSetEvolution::CollectWhere(double halfWidth, std::vector<std::size_t>& out) const
-{
-  // A sequential scan: O(N) cheap memory traffic, and a deterministic order.
-  out.clear();
-  const std::size_t n = this->Geometry.NumberOfSamples;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (std::abs(this->Phi[i]) < halfWidth)
-    {
-      out.push_back(i);
-    }
-  }
-}
-
-void LevelSetEvolution::CollectWithNeighbors(
-  const std::vector<std::size_t>& core, std::vector<std::size_t>& out)
-{
-  ++this->CurrentStamp;
-  out.clear();
-  const int stride = this->Geometry.Stride;
-  for (std::size_t i : core)
-  {
-    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    for (int k = 0; k < stride; ++k)
-    {
-      if (this->Stamp[ids[k]] != this->CurrentStamp)
-      {
-        this->Stamp[ids[k]] = this->CurrentStamp;
-        out.push_back(ids[k]);
-      }
-    }
-  }
 }
 
 void LevelSetEvolution::ComputeGradients(
@@ -113,9 +64,9 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   {
     halfWidth += 2.0 * settings.NeighborhoodRadius;
   }
-  this->CollectWhere(halfWidth, this->Band);
+  this->Collector.Where(this->Phi, halfWidth, this->Band);
   // Curvature needs unit normals on the band and on its neighbours.
-  this->CollectWithNeighbors(this->Band, this->Region);
+  this->Collector.WithNeighbors(this->Band, this->Region);
   this->ComputeGradients(this->Region, this->Phi);
 
   auto unitNormal = [&](std::uint32_t j) {
@@ -135,7 +86,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
     const double limit = ReinitializationHalfWidth(settings);
     ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const std::vector<double>& f = *this->DataOffsets;
+      const std::vector<double>& f = this->DataOffsets;
       const double slope = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
         [&](std::size_t m) { return f[ids[m]]; })
                              .norm();
@@ -169,81 +120,6 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   }
 }
 
-void LevelSetEvolution::Reinitialize(const EvolutionSettings& settings)
-{
-  const EvolutionCoefficients& c = settings.Coefficients;
-  // Only where it matters: the band plus a margin, so that samples about to enter the band
-  // already hold a distance; plus one ring of neighbours, so that clamped (stale) values next
-  // to the region are repaired as the front approaches them.
-  this->CollectWhere(ReinitializationHalfWidth(settings), this->Scratch);
-  this->CollectWithNeighbors(this->Scratch, this->Region);
-  this->Geometry.EnsureStencils(this->Region);
-  const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
-  this->NewValues.resize(this->Region.size());
-  std::vector<double> initial(this->Region.size());
-  for (std::size_t k = 0; k < this->Region.size(); ++k)
-  {
-    initial[k] = this->Phi[this->Region[k]];
-  }
-  auto distance = [&](std::size_t i, std::uint32_t j) {
-    return (Eigen::Vector3d(this->Geometry.Position(i)) -
-      Eigen::Vector3d(this->Geometry.Position(j)))
-      .norm();
-  };
-  // Samples with a neighbour of the other sign hold the interface: fix them at their
-  // first-order distance; the others are updated by upwind steps.
-  std::vector<char> atInterface(this->Region.size(), 0);
-  ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
-    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    double opposite = HUGE_VAL;
-    for (std::size_t m = 1; m < stride; ++m)
-    {
-      if (Positive(this->Phi[ids[m]]) != Positive(this->Phi[i]))
-      {
-        opposite = std::min(opposite, distance(i, ids[m]));
-      }
-    }
-    if (opposite < HUGE_VAL)
-    {
-      atInterface[k] = 1;
-      const double norm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
-        [&](std::size_t m) { return this->Phi[ids[m]]; })
-                            .norm();
-      this->NewValues[k] = InterfaceDistance(this->Phi[i], norm, opposite);
-    }
-  });
-  for (std::size_t k = 0; k < this->Region.size(); ++k)
-  {
-    if (atInterface[k])
-    {
-      this->Phi[this->Region[k]] = this->NewValues[k];
-    }
-  }
-  for (int step = 0; step < settings.ReinitializationSteps; ++step)
-  {
-    ForEachIn(this->Region, [&](std::size_t k, std::size_t i) {
-      if (atInterface[k])
-      {
-        this->NewValues[k] = this->Phi[i];
-        return;
-      }
-      const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const UpwindSlope slope = SteepestUpwindSlope(
-        this->Phi[i], stride, [&](std::size_t m, double& value, double& length) {
-          value = this->Phi[ids[m]];
-          length = distance(i, ids[m]);
-        });
-      this->NewValues[k] = ReinitializedValue(
-        this->Phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
-    });
-    for (std::size_t k = 0; k < this->Region.size(); ++k)
-    {
-      this->Phi[this->Region[k]] = this->NewValues[k];
-    }
-  }
-
-}
-
 void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationRecord& record)
 {
   const std::size_t n = this->Geometry.NumberOfSamples;
@@ -267,9 +143,9 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
   // MG and AG over the zero crossings between neighbours (the rough isopoints), with the
   // gradient interpolated linearly along each crossing segment.
   const double h = settings.NeighborhoodRadius;
-  this->CollectWhere(2.0 * h, this->Scratch);
+  this->Collector.Where(this->Phi, 2.0 * h, this->Scratch);
   this->ComputeGradients(this->Scratch, this->Phi);
-  this->CollectWhere(1.0 * h, this->Front);
+  this->Collector.Where(this->Phi, 1.0 * h, this->Front);
   struct Stats
   {
     double Max = 0.0, Sum = 0.0;
@@ -316,7 +192,7 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
 }
 
 bool LevelSetEvolution::Run(const EvolutionSettings& settings,
-  const std::function<bool(const IterationRecord&)>& onIteration, const AbortCheck& aborted)
+  const IterationObserver& observeIteration, const AbortCheck& aborted)
 {
   this->HasConverged = false;
   int stableIterations = 0;
@@ -345,12 +221,18 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     record.Iteration = iteration;
     this->Evolve(settings);
     record.BandSize = this->Band.size();
-    if (settings.Method != Scheme::WithoutReinitialization && settings.ReinitializationSteps > 0)
+    const bool reinitialize =
+      settings.Method != Scheme::WithoutReinitialization && settings.ReinitializationSteps > 0;
+    if (reinitialize)
     {
-      this->Reinitialize(settings);
+      this->Reinitializer.Run(settings, this->Phi);
     }
-    // First-time sign changes: scan the samples that may have changed (band and its region).
-    for (const std::vector<std::size_t>* touched : { &this->Band, &this->Region })
+    // First-time sign changes: scan the samples that may have changed (the band, and the
+    // reinitialised region or else the band's neighbours).
+    const std::vector<std::size_t>& region =
+      reinitialize ? this->Reinitializer.Region() : this->Region;
+    const std::vector<std::size_t>& band = this->Band;
+    for (const std::vector<std::size_t>* touched : { &band, &region })
     {
       for (std::size_t i : *touched)
       {
@@ -363,7 +245,7 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     }
     record.Seconds = SecondsSince(start);
     this->Measure(settings, record); // statistics are reported, not timed as part of the iteration
-    if (onIteration && !onIteration(record))
+    if (observeIteration && observeIteration(record))
     {
       return false;
     }

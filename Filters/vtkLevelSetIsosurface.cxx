@@ -1,34 +1,35 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLevelSetIsosurface.h"
 
-#include "AutomaticParameters.h"
+#include "LevelSetCompletion.h"
+#include "LevelSetConvergenceTable.h"
+#include "LevelSetDataRefinement.h"
 #include "LevelSetEvolution.h"
-#include "LevelSetInitialization.h"
+#include "LevelSetFlood.h"
+#include "LevelSetInput.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborCache.h"
-#include "LevelSetNeighborhoods.h"
+#include "LevelSetParameters.h"
+#include "LevelSetParticleOutput.h"
+#include "LevelSetSeedSpheres.h"
 #include "LevelSetSplatOutput.h"
-#include "LevelSetSurfaceAttributes.h"
+#include "LevelSetSurfaceOutput.h"
 #include "LevelSetTiming.h"
 #include "LevelSetVertexCells.h"
 
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
-#include <algorithm>
-#include <cmath>
-#include <sstream>
+#include <cstdint>
 
 vtkStandardNewMacro(vtkLevelSetIsosurface);
 
@@ -37,61 +38,13 @@ namespace
 using lsi::Clock;
 using lsi::SecondsSince;
 
-vtkNew<vtkTable> EmptyConvergenceTable()
-{
-  vtkNew<vtkTable> table;
-  for (const char* name : { "Iteration", "SignMismatch", "MaxGradientDeviation",
-         "MeanGradientDeviation", "BandSize", "Seconds" })
-  {
-    vtkNew<vtkDoubleArray> column;
-    column->SetName(name);
-    table->AddColumn(column);
-  }
-  return table;
-}
-
-void AppendRow(vtkTable* table, const lsi::IterationRecord& r)
-{
-  const double values[6] = { static_cast<double>(r.Iteration), r.SignMismatch,
-    r.MaxGradientDeviation, r.MeanGradientDeviation, static_cast<double>(r.BandSize), r.Seconds };
-  for (int c = 0; c < 6; ++c)
-  {
-    vtkDoubleArray::SafeDownCast(table->GetColumn(c))->InsertNextValue(values[c]);
-  }
-}
-
-// Mean neighbourhood radius h_i over the samples that have a neighbour on the other side of
-// the isovalue (all samples if there is none).
-double MeanRadiusAtCrossings(const lsi::Neighborhoods& geometry, const std::vector<double>& sign)
-{
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      if (sign[ids[m]] != sign[i])
-      {
-        sum += geometry.Radius[i];
-        ++count;
-        break;
-      }
-    }
-  }
-  return count ? sum / count : geometry.MeanRadius;
-}
-
-// Signed distance to the inside of the axis-aligned box `bounds` (positive inside).
-double DistanceInsideBox(const double x[3], const double bounds[6])
-{
-  double d = VTK_DOUBLE_MAX;
-  for (int k = 0; k < 3; ++k)
-  {
-    d = std::min(d, std::min(x[k] - bounds[2 * k], bounds[2 * k + 1] - x[k]));
-  }
-  return d;
-}
+// Each stage reports its progress over its own part of [0, 1], in proportion to its time.
+constexpr double NeighborStage[2] = { 0.02, 0.35 };
+constexpr double InitializationStage[2] = { 0.35, 0.45 };
+constexpr double EvolutionStage[2] = { 0.45, 0.8 };
+constexpr double IsopointStage[2] = { 0.8, 0.92 };
+constexpr double SurfaceStage[2] = { 0.92, 0.98 };
+constexpr double SplatStage[2] = { 0.98, 1.0 };
 } // namespace
 
 struct vtkLevelSetIsosurface::Internals
@@ -171,239 +124,148 @@ int vtkLevelSetIsosurface::RequestData(
   return 1;
 }
 
-bool vtkLevelSetIsosurface::Execute(
-  vtkPointSet* input, vtkPolyData* isopointOutput, vtkPolyData* particleOutput, vtkTable* table)
+// The method's steps, in the paper's order; each is a function in the file of its step, and
+// each check of the input comes before the work it protects.
+bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutput,
+  vtkPolyData* particleOutput, vtkTable* convergence)
 {
-  // Each stage reports its progress over its own part of [0, 1] and checks for abort between
-  // blocks of work (every few tens of milliseconds).
-  const lsi::AbortCheck progressOrAbort = [this](double p) { return this->ProgressOrAbort(p); };
-  auto stage = [&progressOrAbort](double from, double to) {
-    return lsi::SubRange(progressOrAbort, from, to);
-  };
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
+  std::vector<double> values; // f, in input order
+  if (!this->ValidateInput(input, values))
+  {
+    return false;
+  }
+  const lsi::Neighborhoods* geometry = this->FindNeighborhoods(input->GetPoints());
+  if (!geometry)
+  {
+    return false;
+  }
+  std::vector<double> dataOffsets, dataSign; // f - f_iso and its sign, in storage order
+  lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
+  const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign);
+  const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
+  std::vector<double> phi;
+  if (!this->Initialize(input, *geometry, dataOffsets, settings, phi))
+  {
+    return false;
+  }
+  vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
+  if (!this->Evolve(*geometry, dataSign, dataOffsets, settings, phi, iterations))
+  {
+    return false;
+  }
+  lsi::IsopointSet isopoints;
+  if (!this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, isopoints))
+  {
+    return false;
+  }
+  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, surfaceOutput))
+  {
+    return false;
+  }
+  lsi::MakeParticleOutput(input, *geometry, phi, particleOutput);
+  convergence->ShallowCopy(iterations);
+  // An abort that arrived during the last stage still empties the outputs.
+  return !this->ProgressOrAbort(1.0);
+}
 
-  // --- Validate the input -------------------------------------------------------------
-  const vtkIdType n = input->GetNumberOfPoints();
-  if (n == 0 || !input->GetPoints())
-  {
-    vtkErrorMacro("The input has no points.");
-    return false;
-  }
-  if (n < this->NumberOfNeighbors + 1)
-  {
-    vtkErrorMacro("The input has " << n << " points, fewer than NumberOfNeighbors + 1 = "
-                                   << this->NumberOfNeighbors + 1 << ".");
-    return false;
-  }
-  if (n >= static_cast<vtkIdType>(UINT32_MAX))
-  {
-    vtkErrorMacro("The input has " << n << " points; at most 2^32 - 1 are supported.");
-    return false;
-  }
+bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double>& values)
+{
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
-  if (!scalars)
+  const std::string problem = lsi::CheckInput(input, scalars, association,
+    this->NumberOfNeighbors, this->IsoValue, this->AdditionalSeeds, values);
+  if (!problem.empty())
   {
-    vtkErrorMacro("No input scalars: select a point array with Scalars "
-                  "(SetInputArrayToProcess).");
+    vtkErrorMacro(<< problem);
     return false;
   }
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
-  {
-    vtkErrorMacro("The array '" << (scalars->GetName() ? scalars->GetName() : "")
-                                << "' is not a point array.");
-    return false;
-  }
-  if (scalars->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("The array '" << (scalars->GetName() ? scalars->GetName() : "") << "' has "
-                                << scalars->GetNumberOfComponents()
-                                << " components; a scalar (1 component) is required.");
-    return false;
-  }
-  std::vector<double> values(n);
-  double range[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    values[i] = scalars->GetComponent(i, 0);
-    if (!std::isfinite(values[i]))
-    {
-      vtkErrorMacro("The array '" << scalars->GetName() << "' has a NaN or infinite value at point "
-                                  << i << ".");
-      return false;
-    }
-    range[0] = std::min(range[0], values[i]);
-    range[1] = std::max(range[1], values[i]);
-    double x[3];
-    input->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      vtkErrorMacro("Point " << i << " has a NaN or infinite coordinate.");
-      return false;
-    }
-  }
-  if (!(this->IsoValue > range[0] && this->IsoValue < range[1]))
-  {
-    vtkErrorMacro("IsoValue " << this->IsoValue << " is outside the open range of the data ("
-                              << range[0] << ", " << range[1] << "): no isosurface.");
-    return false;
-  }
-  for (std::size_t s = 0; s < this->AdditionalSeeds.size(); s += 4)
-  {
-    if (!(this->AdditionalSeeds[s + 3] > 0.0))
-    {
-      vtkErrorMacro("Additional seed " << s / 4 << " has radius " << this->AdditionalSeeds[s + 3]
-                                       << "; radii must be positive.");
-      return false;
-    }
-  }
+  return true;
+}
 
-  // --- Neighbourhoods: built once per geometry, kept while only parameters change ------
-  if (this->ProgressOrAbort(0.02))
+const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(vtkPoints* points)
+{
+  if (this->ProgressOrAbort(NeighborStage[0]))
   {
-    return false;
+    return nullptr;
   }
-  auto start = Clock::now();
-  vtkPoints* points = input->GetPoints();
+  const auto start = Clock::now();
   bool searched = false;
-  const lsi::Neighborhoods* cached = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
-    static_cast<std::size_t>(this->NeighborCacheSize), stage(0.02, 0.35), searched);
-  if (!cached)
+  const lsi::Neighborhoods* geometry = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
+    static_cast<std::size_t>(this->NeighborCacheSize), this->Stage(NeighborStage), searched);
+  if (!geometry)
   {
-    return false;
+    return nullptr;
   }
   if (searched)
   {
     ++this->NeighborSearchCount;
     this->NeighborSearchSeconds = SecondsSince(start);
-    this->SpatialSortSeconds = cached->SortSeconds;
-    this->NearestNeighborSeconds = cached->SearchSeconds;
-    this->TreeBuildSeconds = cached->TreeSeconds;
+    this->SpatialSortSeconds = geometry->SortSeconds;
+    this->NearestNeighborSeconds = geometry->SearchSeconds;
+    this->TreeBuildSeconds = geometry->TreeSeconds;
   }
-  const lsi::Neighborhoods& geometry = *cached;
-  if (geometry.DuplicateSamples > 0)
+  const std::string problem = lsi::CheckNeighborhoods(*geometry);
+  if (!problem.empty())
   {
-    vtkErrorMacro("The input has " << geometry.DuplicateSamples
-                                   << " points that coincide with another point (for example point "
-                                   << geometry.FirstDuplicate
-                                   << "). Merge duplicate points first, e.g. with Clean.");
-    return false;
+    vtkErrorMacro(<< problem);
+    return nullptr;
   }
-  if (geometry.Flat)
-  {
-    vtkErrorMacro("All input points lie on one plane or line, so the MLS fit is singular "
-                  "everywhere: the method needs volume (3D) samples.");
-    return false;
-  }
-  if (this->ProgressOrAbort(0.35))
-  {
-    return false;
-  }
+  return this->ProgressOrAbort(NeighborStage[1]) ? nullptr : geometry;
+}
 
-  // --- The data in storage (spatial) order, and the sampling scale where the surface is --
-  std::vector<double> offsets(n), dataSign(n); // f - f_iso and its sign
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    offsets[i] = values[geometry.Order[i]] - this->IsoValue;
-    dataSign[i] = lsi::Sign(offsets[i]);
-  }
-  // Adaptive data (SPH) is sampled far more densely in some places than at the isosurface:
-  // every length scale (eps, time step, band, cells) comes from the samples that straddle it.
-  const double surfaceRadius = MeanRadiusAtCrossings(geometry, dataSign);
-  const double spacing =
-    lsi::SpacingFromNeighborhoodRadius(surfaceRadius, geometry.Stride - 1);
-  this->MeanSampleSpacing = spacing;
-
-  // --- Parameters -------------------------------------------------------------------------
-  const lsi::AutomaticChoice automatic = lsi::ChooseParameters(spacing, this->CurvatureWeight);
-  lsi::EvolutionSettings settings;
-  settings.Coefficients.Epsilon = this->Epsilon > 0.0 ? this->Epsilon : automatic.Epsilon;
-  settings.Coefficients.CurvatureEpsilon =
-    this->CurvatureEpsilon > 0.0 ? this->CurvatureEpsilon : settings.Coefficients.Epsilon;
-  settings.Coefficients.TimeStep = this->TimeStep > 0.0
-    ? this->TimeStep
-    : lsi::AutomaticTimeStep(settings.Coefficients.Epsilon, this->CurvatureWeight);
-  settings.Coefficients.CurvatureWeight = this->CurvatureWeight;
-  settings.Method = this->EvolutionScheme == VARIATIONAL_WITHOUT_REINITIALIZATION
-    ? lsi::Scheme::WithoutReinitialization
-    : this->EvolutionScheme == ROSENTHAL_LINSEN ? lsi::Scheme::RosenthalLinsen
-                                                : lsi::Scheme::WithReinitialization;
-  settings.MaximumStep = 0.5 * spacing;
-  settings.Coefficients.DistanceRegularization =
-    settings.Method == lsi::Scheme::WithoutReinitialization ? this->DistanceRegularization : 0.0;
-  settings.ReinitializationSteps = this->ReinitializationSteps;
-  settings.ReinitializationTimeStep = automatic.ReinitializationTimeStep;
-  settings.Spacing = spacing;
-  settings.NeighborhoodRadius = surfaceRadius;
-  settings.MaximumIterations = this->MaximumNumberOfIterations;
-  settings.ConvergenceTolerance = this->ConvergenceTolerance;
+lsi::EvolutionSettings vtkLevelSetIsosurface::ChooseEvolutionSettings(
+  const lsi::SurfaceScale& scale)
+{
+  const lsi::EvolutionSettings settings =
+    lsi::ChooseEvolutionSettings(this->RequestedParameters(), scale);
+  this->MeanSampleSpacing = scale.Spacing;
   this->EffectiveEpsilon = settings.Coefficients.Epsilon;
   this->EffectiveCurvatureEpsilon = settings.Coefficients.CurvatureEpsilon;
   this->EffectiveTimeStep = settings.Coefficients.TimeStep;
+  return settings;
+}
 
-  // --- Initial level set: signed distance to the union of the seed spheres, cut to the data's
-  // bounding box (grown by half a spacing) so that a seed larger than the data still has a
-  // front. SeedRadius 0 seeds the whole box; a negative one means a tenth of the largest extent.
+lsi::RequestedParameters vtkLevelSetIsosurface::RequestedParameters() const
+{
+  lsi::RequestedParameters requested;
+  requested.Epsilon = this->Epsilon;
+  requested.CurvatureEpsilon = this->CurvatureEpsilon;
+  requested.TimeStep = this->TimeStep;
+  requested.CurvatureWeight = this->CurvatureWeight;
+  requested.DistanceRegularization = this->DistanceRegularization;
+  requested.Method = static_cast<lsi::Scheme>(this->EvolutionScheme);
+  requested.ReinitializationSteps = this->ReinitializationSteps;
+  requested.MaximumIterations = this->MaximumNumberOfIterations;
+  requested.ConvergenceTolerance = this->ConvergenceTolerance;
+  requested.Completion = this->Completion;
+  requested.DataRefinement = this->DataRefinement;
+  return requested;
+}
+
+bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+  std::vector<double>& phi)
+{
+  const auto start = Clock::now();
   double bounds[6];
   input->GetBounds(bounds);
-  const double seedRadius = this->SeedRadius >= 0.0
-    ? this->SeedRadius
-    : 0.1 * std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  for (int k = 0; k < 3; ++k)
+  const std::vector<double> spheres =
+    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
+  const lsi::SeedSphereStart seeds =
+    lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi);
+  const std::string problem = lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere);
+  if (!problem.empty())
   {
-    bounds[2 * k] -= 0.5 * spacing;
-    bounds[2 * k + 1] += 0.5 * spacing;
-  }
-  std::vector<double> spheres;
-  if (seedRadius > 0.0)
-  {
-    spheres.insert(spheres.end(),
-      { this->SeedCenter[0], this->SeedCenter[1], this->SeedCenter[2], seedRadius });
-    spheres.insert(spheres.end(), this->AdditionalSeeds.begin(), this->AdditionalSeeds.end());
-  }
-  start = Clock::now();
-  std::vector<vtkIdType> samplesInSphere(spheres.size() / 4, 0);
-  std::vector<double> phi(n), seedDistance(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double* x = geometry.Position(i);
-    double seed = spheres.empty() ? VTK_DOUBLE_MAX : -VTK_DOUBLE_MAX;
-    for (std::size_t s = 0; s < spheres.size(); s += 4)
-    {
-      const double d = spheres[s + 3] -
-        std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
-          (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
-          (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
-      samplesInSphere[s / 4] += d > 0.0;
-      seed = std::max(seed, d);
-    }
-    seedDistance[i] = seed;
-    phi[i] = std::min(seed, DistanceInsideBox(x, bounds));
-  }
-  for (std::size_t s = 0; s < samplesInSphere.size(); ++s)
-  {
-    if (samplesInSphere[s] == 0)
-    {
-      vtkErrorMacro("Seed sphere " << s << (s == 0 ? " (the main seed)" : " (additional)")
-                                   << " at (" << spheres[4 * s] << ", " << spheres[4 * s + 1]
-                                   << ", " << spheres[4 * s + 2] << ") with radius "
-                                   << spheres[4 * s + 3]
-                                   << " contains no sample. (In a script, update the input "
-                                      "before creating the filter, or set SeedCenter.)");
-      return false;
-    }
+    vtkErrorMacro(<< problem);
+    return false;
   }
   if (this->Initialization == FLOOD)
   {
-    std::vector<char> inSeed(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      inSeed[i] = spheres.empty() || seedDistance[i] > 0.0;
-    }
-    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, offsets, inSeed,
-      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings),
-      phi, stage(0.35, 0.45));
+    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets,
+      seeds.InSeed, static_cast<std::size_t>(geometry.Stride),
+      lsi::ReinitializationHalfWidth(settings), phi, this->Stage(InitializationStage));
     if (flood.Aborted)
     {
       return false;
@@ -416,49 +278,66 @@ bool vtkLevelSetIsosurface::Execute(
     }
   }
   this->InitializationSeconds = SecondsSince(start);
+  return true;
+}
 
-  // --- Evolution --------------------------------------------------------------------------
-  start = Clock::now();
-  vtkNew<vtkTable> rows = EmptyConvergenceTable();
-  lsi::LevelSetEvolution evolution(geometry, dataSign, phi, &offsets);
+bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataSign, const std::vector<double>& dataOffsets,
+  const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations)
+{
+  const auto start = Clock::now();
+  lsi::LevelSetEvolution evolution(geometry, dataSign, dataOffsets, phi);
+  const lsi::AbortCheck progress = this->Stage(EvolutionStage);
   const bool finished = evolution.Run(
     settings,
     [&](const lsi::IterationRecord& record) {
-      AppendRow(rows, record);
+      lsi::AppendIteration(iterations, record);
       this->NumberOfIterationsPerformed = record.Iteration;
-      // The number of iterations is not known in advance: approach 0.8 (half way after 3).
-      return !this->ProgressOrAbort(0.45 + 0.35 * record.Iteration / (record.Iteration + 3.0));
+      // The number of iterations is not known in advance: half way after 3.
+      return progress(record.Iteration / (record.Iteration + 3.0));
     },
-    [this](double) { return this->CheckAbort(); }); // progress comes from the callback above
+    [this](double) { return this->CheckAbort(); }); // progress comes from the observer above
   this->EvolutionSeconds = SecondsSince(start);
   if (!finished)
   {
     return false;
   }
   this->Converged = evolution.Converged();
-  if (this->ProgressOrAbort(0.8))
-  {
-    return false;
-  }
+  return !this->ProgressOrAbort(EvolutionStage[1]);
+}
 
-  // --- Isopoints --------------------------------------------------------------------------
-  start = Clock::now();
-  lsi::IsopointSettings isopointSettings;
-  isopointSettings.Completion = this->Completion;
-  isopointSettings.CellSize = 0.5 * spacing;
-  isopointSettings.Newton.Tolerance = 1e-4 * spacing;
-  isopointSettings.Newton.MaximumDistance = 1.0 * spacing;
-  lsi::IsopointSet isopoints;
-  isopointSettings.RefineOnData = this->DataRefinement;
-  isopointSettings.DataMaximumMove = 0.5 * spacing;
-  if (!lsi::ExtractIsopoints(
-        geometry, phi, offsets, isopointSettings, isopoints, stage(0.8, 0.92)))
+bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<double>& evolvedPhi,
+  const lsi::SurfaceScale& scale, lsi::IsopointSet& isopoints)
+{
+  // Sub-stages in proportion to their times at 2M samples: isopoints 28%, completion 48%,
+  // refinement on the data 24%.
+  const lsi::AbortCheck stage = this->Stage(IsopointStage);
+  const auto start = Clock::now();
+  const lsi::IsopointSettings settings =
+    lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
+  const std::vector<double> phi =
+    lsi::WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
+  if (!lsi::ExtractIsopoints(geometry, phi, settings, isopoints, lsi::SubRange(stage, 0.0, 0.28)))
   {
     return false;
   }
+  auto partStart = Clock::now();
+  if (settings.Completion && !isopoints.Points.empty() &&
+    !lsi::CompleteIsopoints(geometry, phi, settings, isopoints, lsi::SubRange(stage, 0.28, 0.76)))
+  {
+    return false;
+  }
+  this->CompletionSeconds = SecondsSince(partStart);
+  partStart = Clock::now();
+  if (settings.RefineOnData && !isopoints.Points.empty() &&
+    !lsi::RefineIsopointsOnData(
+      geometry, dataOffsets, settings, isopoints, lsi::SubRange(stage, 0.76, 1.0)))
+  {
+    return false;
+  }
+  this->DataRefinementSeconds = SecondsSince(partStart);
   this->IsopointSeconds = SecondsSince(start);
-  this->CompletionSeconds = isopoints.CompletionSeconds;
-  this->DataRefinementSeconds = isopoints.DataRefinementSeconds;
   this->StencilSeconds = geometry.StencilSeconds;
   if (geometry.SingularSamples > 0)
   {
@@ -466,44 +345,43 @@ bool vtkLevelSetIsosurface::Execute(
       << " samples (neighbourhoods on a plane or line); their gradients were taken as zero. "
          "More NumberOfNeighbors may help.");
   }
+  return !this->ProgressOrAbort(IsopointStage[1]);
+}
 
-  // --- Outputs ----------------------------------------------------------------------------
-  start = Clock::now();
+bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
+  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints, vtkPolyData* output)
+{
+  const auto start = Clock::now();
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
   vtkNew<vtkPolyData> surface;
-  if (!this->SurfaceOutput(input, geometry, isopoints, surface, stage(0.92, 0.98)))
+  if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, isopoints, this->SplatScale,
+        this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, surface,
+        this->Stage(SurfaceStage)))
   {
     return false;
   }
   this->NumberOfIsopoints = surface->GetNumberOfPoints();
   if (this->OutputType == SPLATS)
   {
-    if (!lsi::MakeSplatPolygons(surface, this->SplatSides, isopointOutput, stage(0.98, 1.0)))
+    if (!lsi::MakeSplatPolygons(surface, this->SplatSides, output, this->Stage(SplatStage)))
     {
       return false;
     }
   }
   else
   {
-    isopointOutput->ShallowCopy(surface);
-    isopointOutput->SetVerts(lsi::VertexCells(surface->GetNumberOfPoints()));
+    output->ShallowCopy(surface);
+    output->SetVerts(lsi::VertexCells(surface->GetNumberOfPoints()));
   }
   this->OutputSeconds = SecondsSince(start);
+  return true;
+}
 
-  particleOutput->SetPoints(points);
-  particleOutput->SetVerts(lsi::VertexCells(n));
-  particleOutput->GetPointData()->PassData(input->GetPointData());
-  vtkNew<vtkDoubleArray> levelSet;
-  levelSet->SetName("LevelSet");
-  levelSet->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    levelSet->SetValue(geometry.Order[i], phi[i]); // back from storage order to input order
-  }
-  particleOutput->GetPointData()->AddArray(levelSet);
-
-  table->ShallowCopy(rows);
-  // An abort that arrived during the last stage still empties the outputs.
-  return !this->ProgressOrAbort(1.0);
+lsi::AbortCheck vtkLevelSetIsosurface::Stage(const double range[2])
+{
+  return lsi::SubRange(
+    [this](double progress) { return this->ProgressOrAbort(progress); }, range[0], range[1]);
 }
 
 bool vtkLevelSetIsosurface::ProgressOrAbort(double progress)
@@ -513,98 +391,6 @@ bool vtkLevelSetIsosurface::ProgressOrAbort(double progress)
     this->UpdateProgress(progress);
   }
   return this->CheckAbort();
-}
-
-bool vtkLevelSetIsosurface::SurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-  const lsi::IsopointSet& isopoints, vtkPolyData* surface, const lsi::AbortCheck& aborted)
-{
-  const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
-  vtkNew<vtkPoints> coordinates;
-  coordinates->SetDataTypeToDouble();
-  coordinates->SetNumberOfPoints(m);
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(m);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    coordinates->SetPoint(i, &isopoints.Points[3 * i]);
-    normals->SetTuple(i, &isopoints.Normals[3 * i]);
-  }
-  surface->SetPoints(coordinates);
-  surface->GetPointData()->SetNormals(normals);
-
-  std::vector<double> radii;
-  if (!lsi::SplatRadii(isopoints.Points, 6, this->SplatScale, radii, aborted))
-  {
-    return false;
-  }
-  vtkNew<vtkFloatArray> radius;
-  radius->SetName("SplatRadius");
-  radius->SetNumberOfValues(m);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    radius->SetValue(i, static_cast<float>(radii[i]));
-  }
-  surface->GetPointData()->AddArray(radius);
-
-  if (!this->InterpolateArrays)
-  {
-    return true;
-  }
-  // Every numeric point array of the input, except names the filter itself produces.
-  std::vector<vtkSmartPointer<vtkDataArray>> sources, targets;
-  vtkPointData* inputData = input->GetPointData();
-  for (int a = 0; a < inputData->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = inputData->GetArray(a);
-    if (!array || !array->GetName() || array->GetDataType() == VTK_BIT ||
-      surface->GetPointData()->GetArray(array->GetName()))
-    {
-      continue;
-    }
-    vtkSmartPointer<vtkDataArray> source = array;
-    if (!array->HasStandardMemoryLayout())
-    {
-      // Read from many threads: only arrays with plain memory are safe for that.
-      source = vtkSmartPointer<vtkDoubleArray>::New();
-      source->DeepCopy(array);
-    }
-    vtkSmartPointer<vtkDataArray> target;
-    if (array->GetDataType() == VTK_FLOAT)
-    {
-      target = vtkSmartPointer<vtkFloatArray>::New();
-    }
-    else
-    {
-      target = vtkSmartPointer<vtkDoubleArray>::New();
-    }
-    target->SetName(array->GetName());
-    target->SetNumberOfComponents(array->GetNumberOfComponents());
-    target->SetNumberOfTuples(m);
-    sources.push_back(source);
-    targets.push_back(target);
-  }
-  std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
-  std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
-  const std::size_t fitCount = 2 * static_cast<std::size_t>(geometry.Stride);
-  if (!lsi::InterpolatePointArrays(
-        geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
-  {
-    return false;
-  }
-  for (vtkDataArray* target : targetList)
-  {
-    surface->GetPointData()->AddArray(target);
-  }
-  // Colour by the isosurface's own scalar by default, as Contour does.
-  int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
-  if (scalars && scalars->GetName() && surface->GetPointData()->GetArray(scalars->GetName()))
-  {
-    surface->GetPointData()->SetActiveScalars(scalars->GetName());
-  }
-  return true;
 }
 
 void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)

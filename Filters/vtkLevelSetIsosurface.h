@@ -6,14 +6,25 @@
  * scalar f that meet a region of interest given by seed spheres, directly on the scattered
  * samples of any vtkPointSet (no resampling to a grid). It implements Rosenthal, Molchanov,
  * Linsen et al., "Variational Level-Set Detection of Local Isosurfaces from Unstructured
- * Point-based Volume Data": a level-set function phi, initialised as the signed distance to the
- * seed spheres, evolves on the samples by the equation of gradient descent of a functional whose
- * minimum makes {phi > 0} agree with {f > IsoValue} (eq. 9), with MLS estimates of gradient and
- * divergence on each sample's n nearest neighbours, updating only the band around the zero
- * level; a reinitialisation keeps phi a signed distance (or, in the alternative scheme, a
- * distance-regularisation term does). The zero level is then sampled by isopoints: zero
- * crossings between neighbours, refined by Newton's method on the MLS approximation and completed
- * on tangent planes so that the set renders without holes.
+ * Point-based Volume Data". Its steps, each in a file of its own:
+ * 1. neighbourhoods: each sample's n nearest neighbours and MLS stencils
+ *    (LevelSetNeighborhoods), kept across re-executions;
+ * 2. parameters from the mean sample spacing at the isovalue (LevelSetParameters);
+ * 3. the initial level set phi: by default flooded from the seeds through the neighbour graph
+ *    over the samples with f > IsoValue, so phi starts at the signed distance to the surface of
+ *    the seeded components (LevelSetFlood); or, as in the paper, the signed distance to the seed
+ *    spheres (LevelSetSeedSpheres);
+ * 4. the evolution of phi by gradient descent of the paper's functional (eq. 9, or eq. 13, or
+ *    Rosenthal and Linsen's eq. 16) on the band around its zero level, with MLS estimates of
+ *    gradient and divergence (LevelSetEvolution), each step followed by the reinitialisation
+ *    of eq. 10 (LevelSetReinitialization);
+ * 5. isopoints: zero crossings between neighbours projected by Newton's method onto the zero
+ *    level of the MLS approximation (LevelSetIsopoints);
+ * 6. completion on tangent planes, so that the set renders without holes (LevelSetCompletion);
+ * 7. refinement on the data: each isopoint slides to the zero of an MLS fit of f - IsoValue
+ *    (LevelSetDataRefinement);
+ * 8. outputs (LevelSetSurfaceOutput, LevelSetSplatOutput, LevelSetParticleOutput,
+ *    LevelSetConvergenceTable).
  *
  * Outputs: port 0, the surface: by default oriented splats (one small polygon per isopoint in
  * its tangent plane, so that the default Surface representation shows a closed shaded surface),
@@ -43,14 +54,18 @@
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
-#include <vector> // for std::vector
+#include <vector>     // for std::vector
 
+class vtkPoints;
 class vtkPointSet;
 class vtkTable;
 namespace lsi
 {
-struct Neighborhoods;
+struct EvolutionSettings;
 struct IsopointSet;
+struct Neighborhoods;
+struct RequestedParameters;
+struct SurfaceScale;
 }
 
 class LEVELSETISOSURFACEFILTERS_EXPORT vtkLevelSetIsosurface : public vtkPolyDataAlgorithm
@@ -152,6 +167,7 @@ public:
   {
     this->SetEvolutionScheme(VARIATIONAL_WITHOUT_REINITIALIZATION);
   }
+  void SetEvolutionSchemeToRosenthalLinsen() { this->SetEvolutionScheme(ROSENTHAL_LINSEN); }
   ///@}
 
   ///@{
@@ -203,6 +219,8 @@ public:
    */
   vtkSetClampMacro(Initialization, int, SEED_SPHERES, FLOOD);
   vtkGetMacro(Initialization, int);
+  void SetInitializationToSeedSpheres() { this->SetInitialization(SEED_SPHERES); }
+  void SetInitializationToFlood() { this->SetInitialization(FLOOD); }
   ///@}
 
   enum OutputTypes
@@ -333,12 +351,29 @@ private:
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
   void operator=(const vtkLevelSetIsosurface&) = delete;
 
-  bool Execute(vtkPointSet* input, vtkPolyData* isopoints, vtkPolyData* particles,
+  // The method's steps (see the class documentation). Each returns false when the filter must
+  // stop: an error (reported) or an abort.
+  bool Execute(vtkPointSet* input, vtkPolyData* surfaceOutput, vtkPolyData* particleOutput,
     vtkTable* convergence);
-  // Isopoints as vertices with normals, splat radii and the interpolated input arrays.
-  bool SurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const lsi::IsopointSet& isopoints, vtkPolyData* surface,
-    const std::function<bool(double)>& aborted);
+  bool ValidateInput(vtkPointSet* input, std::vector<double>& values);
+  const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points);
+  lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
+  bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+    std::vector<double>& phi);
+  bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataSign,
+    const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+    std::vector<double>& phi, vtkTable* iterations);
+  bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
+    lsi::IsopointSet& isopoints);
+  bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const lsi::IsopointSet& isopoints, vtkPolyData* output);
+
+  // The user's parameters, for the step files.
+  lsi::RequestedParameters RequestedParameters() const;
+  // Progress over the part [range[0], range[1]] of the run, and abort: returns true to stop.
+  std::function<bool(double)> Stage(const double range[2]);
   // Reports progress (if not negative) and returns whether the user asked to abort.
   bool ProgressOrAbort(double progress);
 

@@ -1,5 +1,5 @@
 // Automatic numerical parameters from the local sample spacing (paper §4.4 and appendix).
-// Plain C++: unit-tested in Testing/Cxx/TestLevelSetUpdate.cxx.
+// Plain C++: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef AutomaticParameters_h
 #define AutomaticParameters_h
 

@@ -1,7 +1,7 @@
 // Isopoints (paper §6): zero crossings of phi between neighbouring samples, the angle
 // criterion that keeps only pairs roughly along the gradient, and Newton's projection onto
 // the zero level of a local approximation (eq. 14).
-// Plain C++/Eigen: unit-tested in Testing/Cxx/TestIsopointRefinement.cxx.
+// Plain C++/Eigen: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef IsopointRefinement_h
 #define IsopointRefinement_h
 

@@ -1,5 +1,5 @@
 // Smoothed delta and sign functions of the level-set equation (paper §4.2, corrected in
-// shared/docs/method.md). Plain C++, no VTK: unit-tested in Testing/Cxx/TestLevelSetSplines.cxx.
+// shared/docs/method.md). Plain C++, no VTK: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef LevelSetSplines_h
 #define LevelSetSplines_h
 

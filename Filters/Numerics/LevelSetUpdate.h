@@ -1,5 +1,5 @@
 // Per-sample update formulas of the level-set evolution (paper eq. 9 and 13) and of the
-// reinitialisation (eq. 10). Plain C++: unit-tested in Testing/Cxx/TestLevelSetUpdate.cxx.
+// reinitialisation (eq. 10). Plain C++: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef LevelSetUpdate_h
 #define LevelSetUpdate_h
 

@@ -2,7 +2,7 @@
 // weighted by w(d) = 1 - |d|^2 / h^2 (squared in the least-squares sum). The fit matrix depends
 // only on positions, so it is turned once into a "stencil": per-neighbour coefficients that give
 // the gradient a (and value b) as weighted sums of the neighbours' values.
-// Plain C++/Eigen: unit-tested in Testing/Cxx/TestMovingLeastSquares.cxx.
+// Plain C++/Eigen: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef MovingLeastSquares_h
 #define MovingLeastSquares_h
 

@@ -4,6 +4,8 @@
 #ifndef Splats_h
 #define Splats_h
 
+#include "TangentBasis.h"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -19,24 +21,6 @@ namespace lsi
 inline double SplatRadiusFromNeighbors(const double* squaredDistances, std::size_t count, double factor)
 {
   return count ? factor * std::sqrt(squaredDistances[count - 1]) : 0.0;
-}
-
-/// Two unit vectors u, v that make (u, v, n) a right-handed orthonormal basis. `n` must be unit.
-inline void TangentBasis(const Eigen::Vector3d& n, Eigen::Vector3d& u, Eigen::Vector3d& v)
-{
-  // Cross with the axis least aligned with n: never near-parallel, so never ill-conditioned.
-  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-  int smallest = 0;
-  for (int d = 1; d < 3; ++d)
-  {
-    if (std::abs(n[d]) < std::abs(n[smallest]))
-    {
-      smallest = d;
-    }
-  }
-  axis[smallest] = 1.0;
-  u = n.cross(axis).normalized();
-  v = n.cross(u);
 }
 
 /// Writes the `sides` corners of the regular polygon of circumradius `radius` centred at c in

@@ -1,9 +1,11 @@
 // Point completion (paper §6, Fig. 3): around an isopoint, lay a small grid of cells on the
 // tangent plane, project the neighbouring isopoints onto it, and propose a new point at the
 // centre of every empty cell (to be refined by Newton's method afterwards).
-// Plain C++/Eigen: unit-tested in Testing/Cxx/TestTangentPlaneCompletion.cxx.
+// Plain C++/Eigen: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef TangentPlaneCompletion_h
 #define TangentPlaneCompletion_h
+
+#include "TangentBasis.h"
 
 #include <Eigen/Dense>
 
@@ -13,23 +15,6 @@
 
 namespace lsi
 {
-
-/// Two unit vectors spanning the plane orthogonal to the unit normal n.
-inline void TangentBasis(const Eigen::Vector3d& n, Eigen::Vector3d& e1, Eigen::Vector3d& e2)
-{
-  // Cross with the axis least aligned with n, for a well-conditioned first tangent.
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
-  if (std::abs(n.y()) < std::abs(n.x()) && std::abs(n.y()) <= std::abs(n.z()))
-  {
-    axis = Eigen::Vector3d::UnitY();
-  }
-  else if (std::abs(n.z()) < std::abs(n.x()) && std::abs(n.z()) < std::abs(n.y()))
-  {
-    axis = Eigen::Vector3d::UnitZ();
-  }
-  e1 = n.cross(axis).normalized();
-  e2 = n.cross(e1);
-}
 
 /// Appends to `candidates` the centres of the empty cells of a (2 halfCells + 1)^2 grid of
 /// square cells of side `cell`, centred on p in the plane orthogonal to the unit normal n.

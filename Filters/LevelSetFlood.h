@@ -1,11 +1,14 @@
-// Initial level sets. The paper starts from the seed spheres and lets the front travel to the
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 3 of the method, the initial level set by flooding (the default; ours, not the paper's).
+// The paper starts from the seed spheres (LevelSetSeedSpheres.h) and lets the front travel to the
 // isosurface, which takes tens of iterations. Flooding starts at the answer instead: the
 // samples with f > f_iso that are connected to the seeds through the neighbour graph are the
 // inside, and phi is the signed distance to the crossings between inside and outside samples.
 // The evolution then only has to smooth that front, and it keeps the locality: components
 // the seeds do not touch are never inside.
-#ifndef LevelSetInitialization_h
-#define LevelSetInitialization_h
+#ifndef LevelSetFlood_h
+#define LevelSetFlood_h
 
 #include "LevelSetNeighborhoods.h"
 
@@ -23,13 +26,13 @@ struct FloodResult
   bool Aborted = false;           // stopped on request; phi is then incomplete
 };
 
-/// `values`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
+/// `dataOffsets`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
 /// `inSeed`: whether each sample lies in a seed. Outside pockets of fewer than `bubbleSize`
 /// samples enclosed by the inside are noise below the neighbourhood scale: they are filled.
 /// phi becomes the signed distance (positive inside) to the crossings, up to `halfWidth`
 /// and clamped to +-halfWidth beyond.
 FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
-  const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
   double halfWidth, std::vector<double>& phi, const AbortCheck& aborted);
 
 } // namespace lsi

@@ -13,12 +13,12 @@
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h
 
-#include "LevelSetIsosurfaceFiltersModule.h" // for export macro
+#include "LevelSetIsosurfaceIOModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
 
-class LEVELSETISOSURFACEFILTERS_EXPORT vtkTipsyParticleReader : public vtkPolyDataAlgorithm
+class LEVELSETISOSURFACEIO_EXPORT vtkTipsyParticleReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTipsyParticleReader* New();

@@ -1,4 +1,6 @@
-#include "LevelSetInitialization.h"
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetFlood.h"
 
 #include <Eigen/Dense>
 
@@ -13,7 +15,7 @@ namespace lsi
 namespace
 {
 // Breadth-first flood from the seed samples through neighbours with f > f_iso.
-std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& values,
+std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
@@ -22,7 +24,7 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
   std::vector<std::uint32_t> queue;
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (inSeed[i] && values[i] > 0.0)
+    if (inSeed[i] && dataOffsets[i] > 0.0)
     {
       inside[i] = 1;
       queue.push_back(static_cast<std::uint32_t>(i));
@@ -34,7 +36,7 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
     const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
     for (int m = 1; m < stride; ++m)
     {
-      if (!inside[ids[m]] && values[ids[m]] > 0.0)
+      if (!inside[ids[m]] && dataOffsets[ids[m]] > 0.0)
       {
         inside[ids[m]] = 1;
         queue.push_back(ids[m]);
@@ -110,12 +112,12 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
 } // namespace
 
 FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
-  const std::vector<double>& values, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
   double halfWidth, std::vector<double>& phi, const AbortCheck& aborted)
 {
   FloodResult result;
   SerialAbortCheck stop(aborted);
-  std::vector<char> inside = Flood(geometry, values, inSeed, result, stop);
+  std::vector<char> inside = Flood(geometry, dataOffsets, inSeed, result, stop);
   FillBubbles(geometry, bubbleSize, inside, result, stop);
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
@@ -137,9 +139,9 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       {
         continue;
       }
-      // Where f - f_iso interpolates to zero; the midpoint if the values disagree with the
+      // Where f - f_iso interpolates to zero; the midpoint if the offsets disagree with the
       // classes (a filled bubble).
-      const double vi = values[i], vj = values[j];
+      const double vi = dataOffsets[i], vj = dataOffsets[j];
       double t = vi != vj ? vi / (vi - vj) : 0.5;
       if (!(t >= 0.0 && t <= 1.0))
       {

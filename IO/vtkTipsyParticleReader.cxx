@@ -1,8 +1,8 @@
 #include "vtkTipsyParticleReader.h"
 
-#include "LevelSetVertexCells.h"
-
+#include "vtkCellArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkTipsyParticleReader);
@@ -188,7 +189,13 @@ int vtkTipsyParticleReader::RequestData(
     }
   }
   output->SetPoints(points);
-  output->SetVerts(lsi::VertexCells(n));
+  // One vertex cell per particle, so that ParaView draws them.
+  vtkNew<vtkIdTypeArray> vertexIds;
+  vertexIds->SetNumberOfValues(n);
+  std::iota(vertexIds->Begin(), vertexIds->End(), vtkIdType(0));
+  vtkNew<vtkCellArray> vertices;
+  vertices->SetData(1, vertexIds);
+  output->SetVerts(vertices);
   for (auto& array : scalars)
   {
     output->GetPointData()->AddArray(array);

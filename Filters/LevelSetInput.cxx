@@ -1,0 +1,145 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetInput.h"
+
+#include "LevelSetSplines.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkPointSet.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+
+namespace lsi
+{
+
+std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
+  int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
+  std::vector<double>& values)
+{
+  std::ostringstream problem;
+  const vtkIdType n = input->GetNumberOfPoints();
+  const std::string name = scalars && scalars->GetName() ? scalars->GetName() : "";
+  if (n == 0 || !input->GetPoints())
+  {
+    problem << "The input has no points.";
+  }
+  else if (n < numberOfNeighbors + 1)
+  {
+    problem << "The input has " << n << " points, fewer than NumberOfNeighbors + 1 = "
+            << numberOfNeighbors + 1 << ".";
+  }
+  else if (n >= static_cast<vtkIdType>(UINT32_MAX))
+  {
+    problem << "The input has " << n << " points; at most 2^32 - 1 are supported.";
+  }
+  else if (!scalars)
+  {
+    problem << "No input scalars: select a point array with Scalars (SetInputArrayToProcess).";
+  }
+  else if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    problem << "The array '" << name << "' is not a point array.";
+  }
+  else if (scalars->GetNumberOfComponents() != 1)
+  {
+    problem << "The array '" << name << "' has " << scalars->GetNumberOfComponents()
+            << " components; a scalar (1 component) is required.";
+  }
+  if (!problem.str().empty())
+  {
+    return problem.str();
+  }
+
+  values.resize(n);
+  double range[2] = { DBL_MAX, -DBL_MAX };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    values[i] = scalars->GetComponent(i, 0);
+    if (!std::isfinite(values[i]))
+    {
+      problem << "The array '" << name << "' has a NaN or infinite value at point " << i << ".";
+      return problem.str();
+    }
+    range[0] = std::min(range[0], values[i]);
+    range[1] = std::max(range[1], values[i]);
+    double x[3];
+    input->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      problem << "Point " << i << " has a NaN or infinite coordinate.";
+      return problem.str();
+    }
+  }
+  if (!(isoValue > range[0] && isoValue < range[1]))
+  {
+    problem << "IsoValue " << isoValue << " is outside the open range of the data (" << range[0]
+            << ", " << range[1] << "): no isosurface.";
+    return problem.str();
+  }
+  for (std::size_t s = 0; s < additionalSeeds.size(); s += 4)
+  {
+    if (!(additionalSeeds[s + 3] > 0.0))
+    {
+      problem << "Additional seed " << s / 4 << " has radius " << additionalSeeds[s + 3]
+              << "; radii must be positive.";
+      return problem.str();
+    }
+  }
+  return std::string();
+}
+
+std::string CheckNeighborhoods(const Neighborhoods& geometry)
+{
+  std::ostringstream problem;
+  if (geometry.DuplicateSamples > 0)
+  {
+    problem << "The input has " << geometry.DuplicateSamples
+            << " points that coincide with another point (for example point "
+            << geometry.FirstDuplicate << "). Merge duplicate points first, e.g. with Clean.";
+  }
+  else if (geometry.Flat)
+  {
+    problem << "All input points lie on one plane or line, so the MLS fit is singular "
+               "everywhere: the method needs volume (3D) samples.";
+  }
+  return problem.str();
+}
+
+std::string CheckSeedSpheres(
+  const std::vector<double>& spheres, const std::vector<std::size_t>& samplesPerSphere)
+{
+  std::ostringstream problem;
+  for (std::size_t s = 0; s < samplesPerSphere.size(); ++s)
+  {
+    if (samplesPerSphere[s] == 0)
+    {
+      problem << "Seed sphere " << s << (s == 0 ? " (the main seed)" : " (additional)") << " at ("
+              << spheres[4 * s] << ", " << spheres[4 * s + 1] << ", " << spheres[4 * s + 2]
+              << ") with radius " << spheres[4 * s + 3]
+              << " contains no sample. (In a script, update the input before creating the "
+                 "filter, or set SeedCenter.)";
+      break;
+    }
+  }
+  return problem.str();
+}
+
+void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>& values,
+  double isoValue, std::vector<double>& dataOffsets, std::vector<double>& dataSign)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  dataOffsets.resize(n);
+  dataSign.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    dataOffsets[i] = values[geometry.Order[i]] - isoValue;
+    dataSign[i] = Sign(dataOffsets[i]);
+  }
+}
+
+} // namespace lsi

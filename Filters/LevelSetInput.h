@@ -1,0 +1,39 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 0: what the method needs of its input, checked before any work, and the data in the
+// samples' storage order. Each check returns the problem in words for the filter's error
+// message, or an empty string.
+#ifndef LevelSetInput_h
+#define LevelSetInput_h
+
+#include "LevelSetNeighborhoods.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkPointSet;
+
+namespace lsi
+{
+
+/// Checks the points, the scalar array (`association` as GetInputArrayToProcess gave it), the
+/// isovalue and the additional seeds' radii, and copies the scalar into `values` (input order).
+std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
+  int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
+  std::vector<double>& values);
+
+/// Problems only the neighbour search reveals: duplicate points, all points on a plane or line.
+std::string CheckNeighborhoods(const Neighborhoods& geometry);
+
+/// The seed spheres (4 numbers each, the main one first) that contain no sample.
+std::string CheckSeedSpheres(
+  const std::vector<double>& spheres, const std::vector<std::size_t>& samplesPerSphere);
+
+/// dataOffsets = f - f_iso and dataSign = its sign, per sample in storage order.
+void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>& values,
+  double isoValue, std::vector<double>& dataOffsets, std::vector<double>& dataSign);
+
+} // namespace lsi
+
+#endif

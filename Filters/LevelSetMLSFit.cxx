@@ -1,0 +1,80 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetMLSFit.h"
+
+#include "MovingLeastSquares.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lsi
+{
+
+MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count)
+  : Geometry(geometry)
+  , Ids(std::min(count, geometry.NumberOfSamples))
+  , D2(Ids.size())
+  , GradientWeightData(3 * Ids.size())
+  , ValueWeights(Ids.size())
+{
+}
+
+void MLSStencil::Gather(const Eigen::Vector3d& p)
+{
+  this->FoundCount = this->Geometry.Index->Nearest(
+    p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
+  this->GatherRadius =
+    std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + this->FoundCount));
+  this->GatherPoint = p;
+}
+
+bool MLSStencil::Build(const Eigen::Vector3d& p)
+{
+  const std::size_t k = this->FoundCount;
+  // The support must still reach all gathered samples from p (the weight vanishes at h).
+  double h = this->GatherRadius;
+  if (p != this->GatherPoint)
+  {
+    double h2 = 0.0;
+    for (std::size_t j = 0; j < k; ++j)
+    {
+      h2 = std::max(h2, (Eigen::Vector3d(this->Geometry.Position(this->Ids[j])) - p).squaredNorm());
+    }
+    h = std::max(h, std::sqrt(h2));
+  }
+  return BuildLinearStencil(p.data(), k,
+    [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
+    LinearStencilView{ this->GradientWeightData.data(), this->ValueWeights.data() });
+}
+
+MLSEvaluator::MLSEvaluator(
+  const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count)
+  : Stencil(geometry, count ? count : static_cast<std::size_t>(geometry.Stride))
+  , Values(values)
+{
+}
+
+bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
+{
+  this->Stencil.Gather(p);
+  return this->FitGathered(p, value, gradient);
+}
+
+bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
+{
+  if (!this->Stencil.Build(p))
+  {
+    return false;
+  }
+  value = 0.0;
+  gradient.setZero();
+  for (std::size_t j = 0; j < this->Stencil.Found(); ++j)
+  {
+    const double v = this->Values[this->Stencil.Sample(j)];
+    value += this->Stencil.ValueWeight(j) * v;
+    gradient += v * Eigen::Vector3d(this->Stencil.GradientWeights(j));
+  }
+  return true;
+}
+
+} // namespace lsi

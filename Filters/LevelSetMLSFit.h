@@ -1,0 +1,70 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Moving-least-squares linear fits at arbitrary points (not only at samples): the fit of phi
+// that Newton's method projects onto (paper eq. 14), the fit of f - f_iso that the data
+// refinement slides along, and the fit that interpolates the input's arrays onto the surface.
+// The weights come from Numerics/MovingLeastSquares.h; this adds the neighbour gathering.
+#ifndef LevelSetMLSFit_h
+#define LevelSetMLSFit_h
+
+#include "LevelSetNeighborhoods.h"
+
+#include <Eigen/Dense>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace lsi
+{
+
+/// The weights of the MLS linear fit at p over the samples nearest to p: the value of the fit
+/// is sum_j ValueWeight(j) v_j and its gradient sum_j GradientWeights(j) v_j, for any per-sample
+/// values v. Holds scratch space: use one per thread.
+class MLSStencil
+{
+public:
+  /// `count`: how many nearest samples enter the fit.
+  MLSStencil(const Neighborhoods& geometry, std::size_t count);
+  /// Gathers the samples nearest to p.
+  void Gather(const Eigen::Vector3d& p);
+  /// Builds the weights at p (near where the samples were gathered), with the smallest support
+  /// that reaches them all. False if the fit is singular.
+  bool Build(const Eigen::Vector3d& p);
+
+  std::size_t Found() const { return this->FoundCount; }
+  std::uint32_t Sample(std::size_t j) const { return this->Ids[j]; } // storage index
+  double ValueWeight(std::size_t j) const { return this->ValueWeights[j]; }
+  const double* GradientWeights(std::size_t j) const { return &this->GradientWeightData[3 * j]; }
+
+private:
+  const Neighborhoods& Geometry;
+  std::size_t FoundCount = 0;
+  double GatherRadius = 0.0;
+  Eigen::Vector3d GatherPoint;
+  std::vector<std::uint32_t> Ids;
+  std::vector<double> D2, GradientWeightData, ValueWeights;
+};
+
+/// Value and gradient at p of the MLS linear fit of per-sample values over the samples nearest
+/// to p. Holds scratch space: use one per thread.
+class MLSEvaluator
+{
+public:
+  /// `count`: how many nearest samples enter the fit (0: the neighbourhood size, n + 1).
+  MLSEvaluator(
+    const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count = 0);
+  bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+  /// The same in two parts: gather the samples nearest to p, then fit them at any point near p
+  /// (for several evaluations along a short path).
+  void Gather(const Eigen::Vector3d& p) { this->Stencil.Gather(p); }
+  bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+
+private:
+  MLSStencil Stencil;
+  const std::vector<double>& Values;
+};
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,54 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 2 of the method, the numerical parameters (paper §4.4): every length (eps, the time
+// step, the band, the completion cells, Newton's reach) comes from the mean sample spacing of
+// the samples that straddle the isovalue, or from the user where a property is set.
+#ifndef LevelSetParameters_h
+#define LevelSetParameters_h
+
+#include "LevelSetEvolutionSettings.h"
+#include "LevelSetIsopoints.h"
+#include "LevelSetNeighborhoods.h"
+
+#include <vector>
+
+namespace lsi
+{
+
+/// What the user asked for (the filter's properties); 0 for a length or a step means automatic.
+struct RequestedParameters
+{
+  double Epsilon = 0.0;
+  double CurvatureEpsilon = 0.0; // 0: equal to eps
+  double TimeStep = 0.0;
+  double CurvatureWeight = 0.05;
+  double DistanceRegularization = 0.1; // used by Scheme::WithoutReinitialization only
+  Scheme Method = Scheme::WithReinitialization;
+  int ReinitializationSteps = 2;
+  int MaximumIterations = 500;
+  double ConvergenceTolerance = 1e-4;
+  bool Completion = true;
+  bool DataRefinement = true;
+};
+
+/// The sampling scale where the surface is.
+struct SurfaceScale
+{
+  double NeighborhoodRadius = 0.0; // mean h_i over the samples next to the isovalue
+  double Spacing = 0.0;            // the mean sample spacing that radius implies
+};
+
+/// Adaptive data (SPH) is sampled far more densely in some places than at the isosurface, so
+/// the scale is measured on the samples with a neighbour on the other side of the isovalue
+/// (`dataSign`, the sign of f - f_iso per sample), or on all samples if there is none.
+SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign);
+
+EvolutionSettings ChooseEvolutionSettings(
+  const RequestedParameters& requested, const SurfaceScale& scale);
+
+IsopointSettings ChooseIsopointSettings(
+  const RequestedParameters& requested, const SurfaceScale& scale);
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,101 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetReinitialization.h"
+
+#include "LevelSetSplines.h"
+#include "MovingLeastSquares.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lsi
+{
+
+double ReinitializationHalfWidth(const EvolutionSettings& settings)
+{
+  const EvolutionCoefficients& c = settings.Coefficients;
+  return BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon)) + 2.0 * settings.NeighborhoodRadius;
+}
+
+Reinitialization::Reinitialization(const Neighborhoods& geometry, BandCollector& band)
+  : Geometry(geometry)
+  , Band(band)
+{
+}
+
+void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double>& phi)
+{
+  // Only where it matters: the band plus a margin, so that samples about to enter the band
+  // already hold a distance; plus one ring of neighbours, so that clamped (stale) values next
+  // to the region are repaired as the front approaches them.
+  this->Band.Where(phi, ReinitializationHalfWidth(settings), this->Core);
+  this->Band.WithNeighbors(this->Core, this->Updated);
+  const std::vector<std::size_t>& region = this->Updated;
+  this->Geometry.EnsureStencils(region);
+  const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
+  this->NewValues.resize(region.size());
+  std::vector<double> initial(region.size());
+  for (std::size_t k = 0; k < region.size(); ++k)
+  {
+    initial[k] = phi[region[k]];
+  }
+  auto distance = [&](std::size_t i, std::uint32_t j) {
+    return (Eigen::Vector3d(this->Geometry.Position(i)) -
+      Eigen::Vector3d(this->Geometry.Position(j)))
+      .norm();
+  };
+  auto positive = [](double value) { return value > 0.0; };
+  // Samples with a neighbour of the other sign hold the interface: fix them at their
+  // first-order distance; the others are updated by upwind steps.
+  std::vector<char> atInterface(region.size(), 0);
+  ForEachIn(region, [&](std::size_t k, std::size_t i) {
+    const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+    double opposite = HUGE_VAL;
+    for (std::size_t m = 1; m < stride; ++m)
+    {
+      if (positive(phi[ids[m]]) != positive(phi[i]))
+      {
+        opposite = std::min(opposite, distance(i, ids[m]));
+      }
+    }
+    if (opposite < HUGE_VAL)
+    {
+      atInterface[k] = 1;
+      const double norm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
+        [&](std::size_t m) { return phi[ids[m]]; })
+                            .norm();
+      this->NewValues[k] = InterfaceDistance(phi[i], norm, opposite);
+    }
+  });
+  for (std::size_t k = 0; k < region.size(); ++k)
+  {
+    if (atInterface[k])
+    {
+      phi[region[k]] = this->NewValues[k];
+    }
+  }
+  for (int step = 0; step < settings.ReinitializationSteps; ++step)
+  {
+    ForEachIn(region, [&](std::size_t k, std::size_t i) {
+      if (atInterface[k])
+      {
+        this->NewValues[k] = phi[i];
+        return;
+      }
+      const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
+      const UpwindSlope slope =
+        SteepestUpwindSlope(phi[i], stride, [&](std::size_t m, double& value, double& length) {
+          value = phi[ids[m]];
+          length = distance(i, ids[m]);
+        });
+      this->NewValues[k] = ReinitializedValue(
+        phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
+    });
+    for (std::size_t k = 0; k < region.size(); ++k)
+    {
+      phi[region[k]] = this->NewValues[k];
+    }
+  }
+}
+
+} // namespace lsi

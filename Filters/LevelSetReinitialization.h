@@ -1,0 +1,44 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 4b of the method, reinitialisation (paper eq. 10): after each evolution step, phi is
+// brought back towards a signed distance near the front, without moving its zero level. Samples
+// next to the interface are held at their first-order distance; the others take upwind
+// pseudo-time steps (per-sample formulas in Numerics/LevelSetUpdate.h).
+#ifndef LevelSetReinitialization_h
+#define LevelSetReinitialization_h
+
+#include "LevelSetBand.h"
+#include "LevelSetEvolutionSettings.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace lsi
+{
+
+/// Half width of the region |phi| < w that the reinitialisation keeps a signed distance: the
+/// band plus a margin of two neighbourhood radii, so samples about to enter the band are ready.
+double ReinitializationHalfWidth(const EvolutionSettings& settings);
+
+class Reinitialization
+{
+public:
+  Reinitialization(const Neighborhoods& geometry, BandCollector& band);
+
+  /// settings.ReinitializationSteps pseudo-time steps on the region |phi| < ReinitializationHalfWidth
+  /// plus one ring of neighbours, in place.
+  void Run(const EvolutionSettings& settings, std::vector<double>& phi);
+
+  /// The samples the last Run updated.
+  const std::vector<std::size_t>& Region() const { return this->Updated; }
+
+private:
+  const Neighborhoods& Geometry;
+  BandCollector& Band;
+  std::vector<std::size_t> Core, Updated;
+  std::vector<double> NewValues;
+};
+
+} // namespace lsi
+
+#endif

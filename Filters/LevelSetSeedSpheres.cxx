@@ -1,0 +1,77 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetSeedSpheres.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace lsi
+{
+
+namespace
+{
+// Signed distance to the inside of the axis-aligned box `box` (positive inside).
+double DistanceInsideBox(const double x[3], const double box[6])
+{
+  double d = DBL_MAX;
+  for (int k = 0; k < 3; ++k)
+  {
+    d = std::min(d, std::min(x[k] - box[2 * k], box[2 * k + 1] - x[k]));
+  }
+  return d;
+}
+} // namespace
+
+std::vector<double> SeedSpheres(const double center[3], double radius,
+  const std::vector<double>& additional, const double bounds[6])
+{
+  if (radius < 0.0)
+  {
+    radius =
+      0.1 * std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  }
+  std::vector<double> spheres;
+  if (radius > 0.0)
+  {
+    spheres.insert(spheres.end(), { center[0], center[1], center[2], radius });
+    spheres.insert(spheres.end(), additional.begin(), additional.end());
+  }
+  return spheres;
+}
+
+SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
+  const std::vector<double>& spheres, const double bounds[6], double margin,
+  std::vector<double>& phi)
+{
+  double box[6];
+  for (int k = 0; k < 3; ++k)
+  {
+    box[2 * k] = bounds[2 * k] - margin;
+    box[2 * k + 1] = bounds[2 * k + 1] + margin;
+  }
+  const std::size_t n = geometry.NumberOfSamples;
+  SeedSphereStart start;
+  start.InSeed.resize(n);
+  start.SamplesPerSphere.assign(spheres.size() / 4, 0);
+  phi.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double* x = geometry.Position(i);
+    double seed = spheres.empty() ? DBL_MAX : -DBL_MAX;
+    for (std::size_t s = 0; s < spheres.size(); s += 4)
+    {
+      const double d = spheres[s + 3] -
+        std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
+          (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
+          (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
+      start.SamplesPerSphere[s / 4] += d > 0.0;
+      seed = std::max(seed, d);
+    }
+    start.InSeed[i] = spheres.empty() || seed > 0.0;
+    phi[i] = std::min(seed, DistanceInsideBox(x, box));
+  }
+  return start;
+}
+
+} // namespace lsi

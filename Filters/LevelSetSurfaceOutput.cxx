@@ -1,0 +1,184 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetSurfaceOutput.h"
+
+#include "LevelSetMLSFit.h"
+#include "NearestNeighbors.h"
+#include "Splats.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace lsi
+{
+
+bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
+  std::vector<double>& radii, const AbortCheck& aborted)
+{
+  const std::size_t count = points.size() / 3;
+  radii.assign(count, 0.0);
+  if (count < 2)
+  {
+    return true;
+  }
+  const PointCloudIndex index(points.data(), count);
+  // The point itself comes first in its own query.
+  const std::size_t k = std::min<std::size_t>(count, static_cast<std::size_t>(neighbors) + 1);
+  return ParallelForInBlocks(
+    count,
+    [&](std::size_t begin, std::size_t end) {
+      std::vector<std::uint32_t> ids(k);
+      std::vector<double> d2(k);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const std::size_t found = index.Nearest(&points[3 * i], k, ids.data(), d2.data());
+        radii[i] = SplatRadiusFromNeighbors(d2.data(), found, factor);
+      }
+    },
+    aborted);
+}
+
+bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
+  std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted)
+{
+  const std::size_t count = points.size() / 3;
+  vtkSMPThreadLocal<std::shared_ptr<MLSStencil>> stencils;
+  return ParallelForInBlocks(
+    count,
+    [&](std::size_t begin, std::size_t end) {
+      std::shared_ptr<MLSStencil>& stencil = stencils.Local();
+      if (!stencil)
+      {
+        stencil.reset(new MLSStencil(geometry, fitCount));
+      }
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const Eigen::Vector3d p(&points[3 * i]);
+        stencil->Gather(p);
+        // A singular fit (samples on a plane or line) takes the nearest sample's value.
+        const bool fitted = stencil->Build(p);
+        const std::size_t used = fitted ? stencil->Found() : 1;
+        for (std::size_t a = 0; a < sources.size(); ++a)
+        {
+          const int components = sources[a]->GetNumberOfComponents();
+          for (int c = 0; c < components; ++c)
+          {
+            double value = 0.0;
+            for (std::size_t j = 0; j < used; ++j)
+            {
+              const double w = fitted ? stencil->ValueWeight(j) : 1.0;
+              if (w != 0.0)
+              {
+                value += w * sources[a]->GetComponent(geometry.Order[stencil->Sample(j)], c);
+              }
+            }
+            targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);
+          }
+        }
+      }
+    },
+    aborted, 8192);
+}
+
+bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
+  const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
+  const char* activeScalars, vtkPolyData* surface, const AbortCheck& aborted)
+{
+  const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
+  vtkNew<vtkPoints> coordinates;
+  coordinates->SetDataTypeToDouble();
+  coordinates->SetNumberOfPoints(m);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    coordinates->SetPoint(i, &isopoints.Points[3 * i]);
+    normals->SetTuple(i, &isopoints.Normals[3 * i]);
+  }
+  surface->SetPoints(coordinates);
+  surface->GetPointData()->SetNormals(normals);
+
+  std::vector<double> radii;
+  if (!SplatRadii(isopoints.Points, 6, splatScale, radii, aborted))
+  {
+    return false;
+  }
+  vtkNew<vtkFloatArray> radius;
+  radius->SetName("SplatRadius");
+  radius->SetNumberOfValues(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    radius->SetValue(i, static_cast<float>(radii[i]));
+  }
+  surface->GetPointData()->AddArray(radius);
+
+  if (!interpolateArrays)
+  {
+    return true;
+  }
+  // Every numeric point array of the input, except names the filter itself produces.
+  std::vector<vtkSmartPointer<vtkDataArray>> sources, targets;
+  for (int a = 0; a < inputData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = inputData->GetArray(a);
+    if (!array || !array->GetName() || array->GetDataType() == VTK_BIT ||
+      surface->GetPointData()->GetArray(array->GetName()))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> source = array;
+    if (!array->HasStandardMemoryLayout())
+    {
+      // Read from many threads: only arrays with plain memory are safe for that.
+      source = vtkSmartPointer<vtkDoubleArray>::New();
+      source->DeepCopy(array);
+    }
+    vtkSmartPointer<vtkDataArray> target;
+    if (array->GetDataType() == VTK_FLOAT)
+    {
+      target = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    else
+    {
+      target = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    target->SetName(array->GetName());
+    target->SetNumberOfComponents(array->GetNumberOfComponents());
+    target->SetNumberOfTuples(m);
+    sources.push_back(source);
+    targets.push_back(target);
+  }
+  std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
+  std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
+  const std::size_t fitCount = 2 * static_cast<std::size_t>(geometry.Stride);
+  if (!InterpolatePointArrays(
+        geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
+  {
+    return false;
+  }
+  for (vtkDataArray* target : targetList)
+  {
+    surface->GetPointData()->AddArray(target);
+  }
+  if (activeScalars && surface->GetPointData()->GetArray(activeScalars))
+  {
+    surface->GetPointData()->SetActiveScalars(activeScalars);
+  }
+  return true;
+}
+
+} // namespace lsi

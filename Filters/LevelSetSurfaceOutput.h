@@ -1,0 +1,48 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 8, the surface output: the isopoints as a point set with their normals, a splat radius
+// from the local isopoint spacing (for disks and for ParaView's Point Gaussian representation),
+// and the input's point arrays interpolated by the same MLS linear fit that refines the
+// isopoints on the data. LevelSetSplatOutput.h turns it into polygons.
+#ifndef LevelSetSurfaceOutput_h
+#define LevelSetSurfaceOutput_h
+
+#include "LevelSetIsopoints.h"
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetParallel.h"
+
+#include <vector>
+
+class vtkDataArray;
+class vtkPointData;
+class vtkPolyData;
+
+namespace lsi
+{
+
+/// Fills `surface` with the isopoints (no cells), "Normals", "SplatRadius" (`splatScale` times
+/// the distance to the 6th nearest isopoint) and, if `interpolateArrays`, every numeric array
+/// of `inputData` (input point order) interpolated over 2 (n + 1) samples; `activeScalars` (the
+/// isosurface's own scalar) becomes the active scalars, as Contour does. Returns false only when
+/// aborted.
+bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
+  const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
+  const char* activeScalars, vtkPolyData* surface, const AbortCheck& aborted);
+
+/// Splat radius of each point (3 doubles per point): `factor` times the distance to its
+/// `neighbors`-th nearest other point. Returns false only when aborted.
+bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
+  std::vector<double>& radii, const AbortCheck& aborted);
+
+/// For each point of `points`, fits every component of each array of `sources` (input point
+/// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and
+/// writes the fit's value at the point into the matching array of `targets` (same components,
+/// one tuple per point, already sized). A linear field is reproduced exactly. Where the fit is
+/// singular the nearest sample's value is copied. Returns false only when aborted.
+bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
+  std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted);
+
+} // namespace lsi
+
+#endif
