@@ -4,7 +4,7 @@
 - multi-component: our multi-component field at 2M samples, seeded in two of its blobs: the
   extracted components in colour, the exact isosurface of all components in faint grey (what
   the seeds did not touch stays out);
-- evrard: the Evrard collapse glass (28,721 real SPH particles, ../shared/data). Its density is
+- evrard: the Evrard collapse glass (28,721 real SPH particles, Data/ChaNGa). Its density is
   estimated from the particles by SPH summation (cubic-spline kernel over each particle's 64
   nearest neighbours), the isosurface is that density at 1/pi (where the analytic profile
   rho = 1/(2 pi r) puts the sphere r = 0.5), coloured by the distance from the centre: the

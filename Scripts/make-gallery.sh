@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's gallery: installs and builds (as the main job does), generates the two synthetic
 # cases at the paper's size (2M samples), then renders the gallery under Xvfb into
-# Documentation/gallery/ (the Evrard glass comes from ../shared/data).
+# Documentation/gallery/ (the Evrard glass comes from Data/ChaNGa).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/Scripts/setup-debian12.sh"
@@ -14,4 +14,4 @@ mkdir -p "$data" "$here/Documentation/gallery"
 LSI_MULTI_SEEDS="44,64,64,14,70,64,64,14" LSI_MULTI_ISO=0.5 xvfb-run -a pvbatch \
   "$here/Scripts/gallery.py" \
   "$here/build/lib/paraview-5.11/plugins/LevelSetIsosurface/LevelSetIsosurface.so" "$data" \
-  "$here/../shared/data/adiabtophat_glass_28721.bin" "$here/Documentation/gallery"
+  "$here/Data/ChaNGa/adiabtophat_glass_28721.bin" "$here/Documentation/gallery"

@@ -1,7 +1,7 @@
 // The Tipsy reader: writes small Tipsy standard files with known particles (big- and
 // little-endian, with dark and star particles after the gas) and checks what comes back, then
-// bad files (a clear error, an empty output). With a file argument, also reads that real file
-// and checks its particle count and array ranges against its header.
+// bad files (a clear error, an empty output), then the two real files given as arguments
+// (Data/ChaNGa) with their particle counts and bounds.
 #include "vtkTipsyParticleReader.h"
 
 #include "MessageCounter.h"
@@ -218,13 +218,15 @@ int main(int argc, char* argv[])
   TestKnownParticles(true);
   TestKnownParticles(false);
   TestBadFiles();
-  // Optional: the real files of ../shared/data (see its README): the Evrard glass (28,721 gas
-  // particles in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).
-  if (argc > 2)
+  // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
+  // in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).
+  if (argc != 3)
   {
-    TestRealFile(argv[1], 28721, 1.0 + 1e-6);
-    TestRealFile(argv[2], 20000, 1.0 + 1e-6);
+    std::cerr << "usage: TestTipsyReader GLASS_FILE SHOCK_TUBE_FILE\n";
+    return EXIT_FAILURE;
   }
+  TestRealFile(argv[1], 28721, 1.0 + 1e-6);
+  TestRealFile(argv[2], 20000, 1.0 + 1e-6);
   std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n" : "Tipsy reader tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

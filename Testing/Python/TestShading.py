@@ -3,7 +3,7 @@ types, as ParaView draws them by default (the Surface representation).
 
   pvbatch TestShading.py PLUGIN TIPSY_FILE OUT_DIR [POINT_SIZE_FACTOR]
 
-The Evrard collapse glass (../shared/data) has density rho(r) = 1 / (2 pi r), so the isosurface
+The Evrard collapse glass (Data/ChaNGa) has density rho(r) = 1 / (2 pi r), so the isosurface
 rho = 1 / pi is the sphere r = 0.5. Seen along -z with a parallel camera and a single white
 headlight, a white, purely diffuse (Lambert) sphere has brightness n_z = sqrt(1 - (x^2 + y^2) /
 R^2) at screen position (x, y). The test compares every pixel within 0.9 R of the centre with

@@ -8,7 +8,7 @@ the pixel masks (the splats drawn front faces only, so that a hole shows): the s
   pvbatch TestSplatCoverage.py PLUGIN evrard TIPSY_FILE OUT_DIR
 
 one-component: the paper's case (isovalue 0, seed at (64, 64, 64) radius 12) against the mesh
-the data generator writes. evrard: the Evrard collapse glass (../shared/data), whose density is
+the data generator writes. evrard: the Evrard collapse glass (Data/ChaNGa), whose density is
 rho(r) = 1 / (2 pi r): the isosurface rho = 1 / pi is the sphere r = 0.5."""
 import math
 import os

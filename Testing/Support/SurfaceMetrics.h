@@ -1,11 +1,18 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Accuracy of isopoints against an analytic case: the paper's L (mean first-order distance
 // |f(p) - f_iso| / |grad f(p)|), its 99th percentile, normal errors, coverage of the exact
 // surface of the seeded components, and isopoints lying on unseeded components.
 #ifndef SurfaceMetrics_h
 #define SurfaceMetrics_h
 
-#include "NearestNeighbors.h"
 #include "SyntheticCases.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,10 +73,19 @@ inline SurfaceMetrics MeasureSurface(const Case& c, const std::vector<double>& p
     m.Percentile99Distance = sorted[k];
   }
 
-  std::unique_ptr<PointCloudIndex> index;
+  // The isopoints in VTK's point locator (the gaps below are measured with it).
+  vtkNew<vtkPolyData> isopointSet;
+  vtkNew<vtkStaticPointLocator> locator;
   if (count)
   {
-    index.reset(new PointCloudIndex(points.data(), count));
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetArray(const_cast<double*>(points.data()), static_cast<vtkIdType>(3 * count), 1);
+    vtkNew<vtkPoints> isopointCoordinates;
+    isopointCoordinates->SetData(coordinates);
+    isopointSet->SetPoints(isopointCoordinates);
+    locator->SetDataSet(isopointSet);
+    locator->BuildLocator();
   }
   std::size_t covered = 0;
   for (const Eigen::Vector3d& x : samples)
@@ -86,12 +102,11 @@ inline SurfaceMetrics MeasureSurface(const Case& c, const std::vector<double>& p
     }
     ++m.SurfaceProbes;
     double gap = HUGE_VAL;
-    if (index)
+    if (count)
     {
-      std::uint32_t id;
-      double d2;
-      index->Nearest(s.data(), 1, &id, &d2);
-      gap = std::sqrt(d2);
+      double nearest[3];
+      isopointSet->GetPoint(locator->FindClosestPoint(s.data()), nearest);
+      gap = (s - Eigen::Vector3d(nearest)).norm();
     }
     m.MaxGapToIsopoint = std::max(m.MaxGapToIsopoint, gap);
     covered += gap <= coverageRadius;

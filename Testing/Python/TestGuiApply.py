@@ -1,4 +1,4 @@
-"""Run inside the ParaView GUI: paraview --script=GuiApply.py (under xvfb-run), with
+"""Run inside the ParaView GUI: paraview --script=TestGuiApply.py (under xvfb-run), with
 LSI_PLUGIN, LSI_GLASS (the Evrard glass Tipsy file), LSI_SCREENSHOT and LSI_STATUS in the
 environment.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# GUI test: the paraview executable under Xvfb runs GuiApply.py (--script), which applies the
+# GUI test: the paraview executable under Xvfb runs TestGuiApply.py (--script), which applies the
 # filter with the sphere widget visible, checks the chart view, and saves a screenshot. Fails
 # unless the script recorded "passed" and the screenshot is not blank.
 set -eu
