@@ -54,11 +54,16 @@ bool Parse(int argc, char* argv[], Options& o)
   {
     const std::string a = argv[i];
     auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--case") o.CaseName = next();
-    else if (a == "--samples") o.Samples = std::strtoull(next(), nullptr, 10);
-    else if (a == "--seed") o.Seed = std::strtoull(next(), nullptr, 10);
-    else if (a == "--paper-parameters") o.PaperParameters = true;
-    else if (a == "--scheme") o.Scheme = std::atoi(next());
+    if (a == "--case")
+      o.CaseName = next();
+    else if (a == "--samples")
+      o.Samples = std::strtoull(next(), nullptr, 10);
+    else if (a == "--seed")
+      o.Seed = std::strtoull(next(), nullptr, 10);
+    else if (a == "--paper-parameters")
+      o.PaperParameters = true;
+    else if (a == "--scheme")
+      o.Scheme = std::atoi(next());
     else if (a == "--initialization")
     {
       const std::string v = next();
@@ -69,17 +74,28 @@ bool Parse(int argc, char* argv[], Options& o)
       }
       o.Initialization = v == "flood" ? 1 : 0;
     }
-    else if (a == "--threads") o.Threads = std::atoi(next());
-    else if (a == "--max-iterations") o.MaximumIterations = std::atoi(next());
-    else if (a == "--no-completion") o.Completion = false;
-    else if (a == "--compare-threads") o.CompareThreads = true;
-    else if (a == "--print-table") o.PrintTable = true;
-    else if (a == "--write-vtp") o.WriteVtp = next();
-    else if (a == "--epsilon") o.Epsilon = std::atof(next());
-    else if (a == "--curvature-epsilon") o.CurvatureEpsilon = std::atof(next());
-    else if (a == "--time-step") o.TimeStep = std::atof(next());
-    else if (a == "--lambda") o.CurvatureWeight = std::atof(next());
-    else if (a == "--reinitialization-steps") o.ReinitializationSteps = std::atoi(next());
+    else if (a == "--threads")
+      o.Threads = std::atoi(next());
+    else if (a == "--max-iterations")
+      o.MaximumIterations = std::atoi(next());
+    else if (a == "--no-completion")
+      o.Completion = false;
+    else if (a == "--compare-threads")
+      o.CompareThreads = true;
+    else if (a == "--print-table")
+      o.PrintTable = true;
+    else if (a == "--write-vtp")
+      o.WriteVtp = next();
+    else if (a == "--epsilon")
+      o.Epsilon = std::atof(next());
+    else if (a == "--curvature-epsilon")
+      o.CurvatureEpsilon = std::atof(next());
+    else if (a == "--time-step")
+      o.TimeStep = std::atof(next());
+    else if (a == "--lambda")
+      o.CurvatureWeight = std::atof(next());
+    else if (a == "--reinitialization-steps")
+      o.ReinitializationSteps = std::atoi(next());
     else
     {
       std::cerr << "unknown option " << a << "\n";
@@ -101,11 +117,16 @@ void Configure(vtkLevelSetIsosurface* filter, const Case& c, const Options& o)
   {
     SetPaperParameters(filter, c);
   }
-  if (o.Epsilon >= 0) filter->SetEpsilon(o.Epsilon);
-  if (o.CurvatureEpsilon >= 0) filter->SetCurvatureEpsilon(o.CurvatureEpsilon);
-  if (o.TimeStep >= 0) filter->SetTimeStep(o.TimeStep);
-  if (o.CurvatureWeight >= 0) filter->SetCurvatureWeight(o.CurvatureWeight);
-  if (o.ReinitializationSteps >= 0) filter->SetReinitializationSteps(o.ReinitializationSteps);
+  if (o.Epsilon >= 0)
+    filter->SetEpsilon(o.Epsilon);
+  if (o.CurvatureEpsilon >= 0)
+    filter->SetCurvatureEpsilon(o.CurvatureEpsilon);
+  if (o.TimeStep >= 0)
+    filter->SetTimeStep(o.TimeStep);
+  if (o.CurvatureWeight >= 0)
+    filter->SetCurvatureWeight(o.CurvatureWeight);
+  if (o.ReinitializationSteps >= 0)
+    filter->SetReinitializationSteps(o.ReinitializationSteps);
 }
 
 } // namespace
@@ -116,8 +137,9 @@ int main(int argc, char* argv[])
   std::unique_ptr<Case> c;
   if (!Parse(argc, argv, o) || !(c = MakeCase(o.CaseName)))
   {
-    std::cerr << "usage: LevelSetBenchmark [--case one-component|multi-component|adaptive-noisy|sphere] "
-                 "[--samples N] [--paper-parameters] [--scheme 0|1] [--threads T] ...\n";
+    std::cerr
+      << "usage: LevelSetBenchmark [--case one-component|multi-component|adaptive-noisy|sphere] "
+         "[--samples N] [--paper-parameters] [--scheme 0|1] [--threads T] ...\n";
     return EXIT_FAILURE;
   }
   const std::vector<Eigen::Vector3d> samples = c->Samples(o.Samples, o.Seed);
@@ -142,23 +164,26 @@ int main(int argc, char* argv[])
   std::cout << "case: " << c->Name << "\nsamples: " << o.Samples
             << "\nparameters: " << (o.PaperParameters ? "paper" : "default")
             << "\nscheme: " << o.Scheme
-            << "\ninitialization: " << (o.Initialization ? "flood" : "seed spheres") << "\nmean sample spacing on the exact surface: " << spacing
+            << "\ninitialization: " << (o.Initialization ? "flood" : "seed spheres")
+            << "\nmean sample spacing on the exact surface: " << spacing
             << "\nmean sample spacing (filter): " << filter->GetMeanSampleSpacing()
             << "\neps, eps', dt: " << filter->GetEffectiveEpsilon() << ", "
             << filter->GetEffectiveCurvatureEpsilon() << ", " << filter->GetEffectiveTimeStep()
-            << "\niterations: " << iterations << (filter->GetConverged() ? " (converged)" : " (limit)")
-            << "\nseconds total: " << total << "\nseconds neighbours: "
-            << filter->GetNeighborSearchSeconds() << " (sort " << filter->GetSpatialSortSeconds()
-            << ", nearest " << filter->GetNearestNeighborSeconds() << " of which tree "
-            << filter->GetTreeBuildSeconds() << ", stencils "
-            << filter->GetStencilSeconds() << ")\nseconds initialisation: "
-            << filter->GetInitializationSeconds() << "\nseconds evolution: "
-            << filter->GetEvolutionSeconds() << "\nseconds per iteration: "
+            << "\niterations: " << iterations
+            << (filter->GetConverged() ? " (converged)" : " (limit)")
+            << "\nseconds total: " << total
+            << "\nseconds neighbours: " << filter->GetNeighborSearchSeconds() << " (sort "
+            << filter->GetSpatialSortSeconds() << ", nearest "
+            << filter->GetNearestNeighborSeconds() << " of which tree "
+            << filter->GetTreeBuildSeconds() << ", stencils " << filter->GetStencilSeconds()
+            << ")\nseconds initialisation: " << filter->GetInitializationSeconds()
+            << "\nseconds evolution: " << filter->GetEvolutionSeconds()
+            << "\nseconds per iteration: "
             << (iterations ? filter->GetEvolutionSeconds() / iterations : 0.0)
             << "\nseconds isopoints: " << filter->GetIsopointSeconds() << " (completion "
             << filter->GetCompletionSeconds() << ", refinement on the data "
-            << filter->GetDataRefinementSeconds() << ")\nseconds outputs: "
-            << filter->GetOutputSeconds()
+            << filter->GetDataRefinementSeconds()
+            << ")\nseconds outputs: " << filter->GetOutputSeconds()
             << "\nisopoints: " << m.Isopoints << "\nmean distance L: " << m.MeanDistance
             << "\n99th percentile distance: " << m.Percentile99Distance
             << "\nmean normal angle error (deg): " << m.MeanNormalAngleDegrees
@@ -169,7 +194,8 @@ int main(int argc, char* argv[])
             << "\nprobes within one spacing: " << m.CoveredFraction << "\n";
   if (o.PrintTable)
   {
-    std::cout << "Iteration SignMismatch MaxGradientDeviation MeanGradientDeviation BandSize Seconds\n";
+    std::cout
+      << "Iteration SignMismatch MaxGradientDeviation MeanGradientDeviation BandSize Seconds\n";
     for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r)
     {
       for (vtkIdType col = 0; col < table->GetNumberOfColumns(); ++col)
@@ -190,9 +216,9 @@ int main(int argc, char* argv[])
   {
     const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
       particles, [&](vtkLevelSetIsosurface* timed) { Configure(timed, *c, o); });
-    std::cout << "seconds with 1 thread: " << seconds[0] << "\nseconds with 2 threads: "
-              << seconds[1] << "\nspeed-up 2 threads / 1 thread: " << seconds[0] / seconds[1]
-              << "\n";
+    std::cout << "seconds with 1 thread: " << seconds[0]
+              << "\nseconds with 2 threads: " << seconds[1]
+              << "\nspeed-up 2 threads / 1 thread: " << seconds[0] / seconds[1] << "\n";
   }
 
   return EXIT_SUCCESS;

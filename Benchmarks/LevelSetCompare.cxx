@@ -42,8 +42,8 @@ struct Options
   std::size_t Samples = 2000000;
   std::uint64_t Seed = 1;
   int Threads = 0;
-  std::vector<std::string> Methods = { "level-set", "level-set-unrefined",
-    "level-set-seed-spheres", "rosenthal-linsen", "rosenthal-linsen-seed-spheres", "grid-route" };
+  std::vector<std::string> Methods = { "level-set", "level-set-unrefined", "level-set-seed-spheres",
+    "rosenthal-linsen", "rosenthal-linsen-seed-spheres", "grid-route" };
   std::string Json;
   bool CompareThreads = false;
 };
@@ -66,12 +66,18 @@ bool Parse(int argc, char* argv[], Options& o)
   {
     const std::string a = argv[i];
     auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--case") o.CaseName = next();
-    else if (a == "--samples") o.Samples = std::strtoull(next().c_str(), nullptr, 10);
-    else if (a == "--seed") o.Seed = std::strtoull(next().c_str(), nullptr, 10);
-    else if (a == "--threads") o.Threads = std::atoi(next().c_str());
-    else if (a == "--json") o.Json = next();
-    else if (a == "--compare-threads") o.CompareThreads = true;
+    if (a == "--case")
+      o.CaseName = next();
+    else if (a == "--samples")
+      o.Samples = std::strtoull(next().c_str(), nullptr, 10);
+    else if (a == "--seed")
+      o.Seed = std::strtoull(next().c_str(), nullptr, 10);
+    else if (a == "--threads")
+      o.Threads = std::atoi(next().c_str());
+    else if (a == "--json")
+      o.Json = next();
+    else if (a == "--compare-threads")
+      o.CompareThreads = true;
     else if (a == "--methods")
     {
       o.Methods.clear();
@@ -126,7 +132,8 @@ MethodResult RunFilter(const std::string& name, vtkPolyData* particles, const Ca
     { "stencils", filter->GetStencilSeconds() },
     { "initialisation", filter->GetInitializationSeconds() },
     { "evolution", filter->GetEvolutionSeconds() },
-    { "isopoints", filter->GetIsopointSeconds() - filter->GetCompletionSeconds() -
+    { "isopoints",
+      filter->GetIsopointSeconds() - filter->GetCompletionSeconds() -
         filter->GetDataRefinementSeconds() },
     { "completion", filter->GetCompletionSeconds() },
     { "data-refinement", filter->GetDataRefinementSeconds() },
@@ -171,9 +178,9 @@ void WriteJson(const std::string& path, const Options& o, const Case& c, double 
     const MethodResult& r = results[k];
     const SurfaceMetrics& m = r.Metrics;
     out << "    {\"name\": " << JsonString(r.Name) << ", \"seconds\": " << r.Seconds
-        << ", \"iterations\": " << r.Iterations << ", \"converged\": "
-        << (r.Converged ? "true" : "false") << ", \"peak_memory_bytes\": " << r.PeakBytes
-        << ", \"mean_distance\": " << m.MeanDistance
+        << ", \"iterations\": " << r.Iterations
+        << ", \"converged\": " << (r.Converged ? "true" : "false")
+        << ", \"peak_memory_bytes\": " << r.PeakBytes << ", \"mean_distance\": " << m.MeanDistance
         << ", \"p99_distance\": " << m.Percentile99Distance
         << ", \"mean_normal_error_degrees\": " << m.MeanNormalAngleDegrees
         << ", \"coverage\": " << m.CoveredFraction << ", \"points\": " << m.Isopoints

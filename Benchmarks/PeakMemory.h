@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Peak resident memory of this process, per stage: Linux lets a process reset its own
 // high-water mark (VmHWM) by writing 5 to /proc/self/clear_refs.
 #ifndef PeakMemory_h

@@ -1,7 +1,10 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Writes the paper's synthetic test data (§8.2 one-component field, our multi-component field)
 // as uniform random samples with the scalar "f", to a binary .vtp (readable by Debian 12's
 // ParaView 5.11, which cannot read appended-mode XML).
-//   LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp [RANDOM_SEED]
+//   LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp
+//   [RANDOM_SEED]
 //     [EXACT_SURFACE.vtp]
 // The optional last file receives the exact isosurface as a triangle mesh, for rendering tests:
 // Flying Edges on the analytic field sampled on a 320^3 grid over the box (its error, about
@@ -9,8 +12,8 @@
 #include "SyntheticCases.h"
 #include "SyntheticParticles.h"
 
-#include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -70,7 +73,8 @@ int main(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    std::cerr << "usage: LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp "
+    std::cerr << "usage: LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES "
+                 "OUTPUT.vtp "
                  "[RANDOM_SEED]\n";
     return EXIT_FAILURE;
   }

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // A plain VTK C++ pipeline using the filter without ParaView's server manager: random particles
 // with f = 30 - |x - c|, the level-set isosurface of f = 0 (a sphere of radius 30), written as a
 // binary .vtp. Exits non-zero if the isopoints are not on the sphere.
@@ -33,8 +35,8 @@ int main(int argc, char* argv[])
       v = random->GetNextRangeValue(0.0, 100.0);
     }
     points->InsertNextPoint(x);
-    f->InsertNextValue(30.0 - std::sqrt((x[0] - 50) * (x[0] - 50) + (x[1] - 50) * (x[1] - 50) +
-                                (x[2] - 50) * (x[2] - 50)));
+    f->InsertNextValue(30.0 -
+      std::sqrt((x[0] - 50) * (x[0] - 50) + (x[1] - 50) * (x[1] - 50) + (x[2] - 50) * (x[2] - 50)));
   }
   vtkNew<vtkPolyData> particles;
   particles->SetPoints(points);
@@ -56,8 +58,8 @@ int main(int argc, char* argv[])
   {
     double p[3];
     isopoints->GetPoint(i, p);
-    const double r = std::sqrt(
-      (p[0] - 50) * (p[0] - 50) + (p[1] - 50) * (p[1] - 50) + (p[2] - 50) * (p[2] - 50));
+    const double r =
+      std::sqrt((p[0] - 50) * (p[0] - 50) + (p[1] - 50) * (p[1] - 50) + (p[2] - 50) * (p[2] - 50));
     worst = std::max(worst, std::abs(r - 30.0));
   }
   std::cout << m << " isopoints after " << isosurface->GetNumberOfIterationsPerformed()

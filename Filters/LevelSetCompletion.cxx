@@ -44,8 +44,8 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
       const Eigen::Vector3d n(&current.Normals[3 * i]);
       const std::size_t found = index.Nearest(p.data(), neighbors, s.Ids.data(), s.D2.data());
       s.Cells.clear();
-      EmptyTangentCells(p, n, settings.CellSize, settings.CompletionHalfCells,
-        settings.CellSize, found,
+      EmptyTangentCells(
+        p, n, settings.CellSize, settings.CompletionHalfCells, settings.CellSize, found,
         [&](std::size_t j) { return Eigen::Vector3d(&current.Points[3 * s.Ids[j]]); }, s.Cells);
       for (std::size_t c = 0; c < s.Cells.size() && c < perPoint; ++c)
       {

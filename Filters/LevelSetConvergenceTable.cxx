@@ -23,8 +23,8 @@ vtkNew<vtkTable> EmptyConvergenceTable()
 void AppendIteration(vtkTable* table, const IterationRecord& record)
 {
   const double values[6] = { static_cast<double>(record.Iteration), record.SignMismatch,
-    record.MaxGradientDeviation, record.MeanGradientDeviation,
-    static_cast<double>(record.BandSize), record.Seconds };
+    record.MaxGradientDeviation, record.MeanGradientDeviation, static_cast<double>(record.BandSize),
+    record.Seconds };
   for (int c = 0; c < 6; ++c)
   {
     vtkDoubleArray::SafeDownCast(table->GetColumn(c))->InsertNextValue(values[c]);

@@ -36,8 +36,8 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
       auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
         return evaluator->FitGathered(x, value, g);
       };
-      if (SlideOntoDataLevel(p, n, evaluate, settings.DataMaximumMove,
-            settings.DataIterations, gradient))
+      if (SlideOntoDataLevel(
+            p, n, evaluate, settings.DataMaximumMove, settings.DataIterations, gradient))
       {
         const Eigen::Vector3d dataNormal = -gradient.normalized();
         for (int d = 0; d < 3; ++d)

@@ -42,8 +42,8 @@ void LevelSetEvolution::ComputeGradients(
   this->Geometry.EnsureStencils(where);
   ForEachIn(where, [&](std::size_t, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    const Eigen::Vector3d g = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
-      [&](std::size_t k) { return values[ids[k]]; });
+    const Eigen::Vector3d g = ApplyGradientStencil(
+      this->Geometry.StencilOf(i), stride, [&](std::size_t k) { return values[ids[k]]; });
     double* out = &this->Gradient[3 * i];
     out[0] = g[0];
     out[1] = g[1];
@@ -55,8 +55,8 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
 {
   const EvolutionCoefficients& c = settings.Coefficients;
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
-  const bool regularize = settings.Method == Scheme::WithoutReinitialization &&
-    c.DistanceRegularization != 0.0;
+  const bool regularize =
+    settings.Method == Scheme::WithoutReinitialization && c.DistanceRegularization != 0.0;
   // The band: where delta_eps or delta_eps' is non-zero. With the distance regularisation
   // (which acts everywhere) a margin of one neighbourhood radius is added.
   double halfWidth = BandHalfWidth(std::max(c.Epsilon, c.CurvatureEpsilon));
@@ -87,14 +87,15 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
     ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
       const std::vector<double>& f = this->DataOffsets;
-      const double slope = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
-        [&](std::size_t m) { return f[ids[m]]; })
-                             .norm();
+      const double slope =
+        ApplyGradientStencil(this->Geometry.StencilOf(i), stride, [&](std::size_t m) {
+          return f[ids[m]];
+        }).norm();
       // g = (f - f_iso) / |grad f|, bounded like phi where f is flat.
       const double target = slope > std::abs(f[i]) / limit ? f[i] / slope : Sign(f[i]) * limit;
-      this->NewValues[k] = RosenthalLinsenValue(this->Phi[i],
-        Eigen::Vector3d(&this->Gradient[3 * i]).norm(), target, settings.RelaxationRate,
-        settings.MaximumStep);
+      this->NewValues[k] =
+        RosenthalLinsenValue(this->Phi[i], Eigen::Vector3d(&this->Gradient[3 * i]).norm(), target,
+          settings.RelaxationRate, settings.MaximumStep);
     });
   }
   else

@@ -20,10 +20,10 @@ namespace lsi
 
 struct FloodResult
 {
-  std::size_t InsideSamples = 0;  // samples reached by the flood
-  std::size_t FilledBubbles = 0;  // samples of small outside pockets taken as inside
-  std::size_t SeedSamples = 0;    // seed samples with f > f_iso (the flood's sources)
-  bool Aborted = false;           // stopped on request; phi is then incomplete
+  std::size_t InsideSamples = 0; // samples reached by the flood
+  std::size_t FilledBubbles = 0; // samples of small outside pockets taken as inside
+  std::size_t SeedSamples = 0;   // seed samples with f > f_iso (the flood's sources)
+  bool Aborted = false;          // stopped on request; phi is then incomplete
 };
 
 /// `dataOffsets`: f - f_iso per sample (the crossings are placed where it interpolates to zero).

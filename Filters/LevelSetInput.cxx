@@ -30,8 +30,8 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
   }
   else if (n < numberOfNeighbors + 1)
   {
-    problem << "The input has " << n << " points, fewer than NumberOfNeighbors + 1 = "
-            << numberOfNeighbors + 1 << ".";
+    problem << "The input has " << n
+            << " points, fewer than NumberOfNeighbors + 1 = " << numberOfNeighbors + 1 << ".";
   }
   else if (n >= static_cast<vtkIdType>(UINT32_MAX))
   {

@@ -33,8 +33,8 @@ std::vector<std::size_t> ThinByVoxels(const std::vector<double>& points, double 
   }
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-    [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  std::stable_sort(
+    order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -205,8 +205,8 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
 
 // Every sample of a pocket disagrees with the data, so only the (few) disagreeing samples are
 // searched.
-std::vector<double> WithoutSpuriousPockets(const Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, std::vector<double> phi)
+std::vector<double> WithoutSpuriousPockets(
+  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double> phi)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
@@ -280,8 +280,8 @@ bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& 
   // Thin the projected points: many crossings land on nearly the same spot.
   IsopointSet projected;
   AppendSelected(points, normals, ValidIndices(valid), projected);
-  AppendSelected(projected.Points, projected.Normals,
-    ThinByVoxels(projected.Points, settings.CellSize), out);
+  AppendSelected(
+    projected.Points, projected.Normals, ThinByVoxels(projected.Points, settings.CellSize), out);
   return !Aborted(aborted, 1.0);
 }
 

@@ -21,8 +21,8 @@ MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count)
 
 void MLSStencil::Gather(const Eigen::Vector3d& p)
 {
-  this->FoundCount = this->Geometry.Index->Nearest(
-    p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
+  this->FoundCount =
+    this->Geometry.Index->Nearest(p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
   this->GatherRadius =
     std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + this->FoundCount));
   this->GatherPoint = p;
@@ -42,8 +42,8 @@ bool MLSStencil::Build(const Eigen::Vector3d& p)
     }
     h = std::max(h, std::sqrt(h2));
   }
-  return BuildLinearStencil(p.data(), k,
-    [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
+  return BuildLinearStencil(
+    p.data(), k, [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
     LinearStencilView{ this->GradientWeightData.data(), this->ValueWeights.data() });
 }
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetNeighborCache.h"
 
 #include "vtkPoints.h"
@@ -40,8 +42,8 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points)
   return h;
 }
 
-const Neighborhoods* NeighborCache::Get(vtkPoints* points, int neighbors, std::size_t capacity,
-  const AbortCheck& aborted, bool& built)
+const Neighborhoods* NeighborCache::Get(
+  vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built)
 {
   built = false;
   const vtkIdType n = points->GetNumberOfPoints();

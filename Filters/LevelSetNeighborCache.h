@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Neighbourhoods depend only on the particle positions, and searching them is the most
 // expensive stage. This keeps the last few (one per time step on a time series), recognised by
 // a fingerprint of the coordinates, so that changing the isovalue or the seed, or returning to a
@@ -27,8 +29,8 @@ public:
   /// The neighbourhoods of `points` with `neighbors` neighbours: the cached ones (marked most
   /// recently used), or newly built ones, stored after dropping the least recently used entries
   /// beyond `capacity`; `built` tells which. Returns null when aborted.
-  const Neighborhoods* Get(vtkPoints* points, int neighbors, std::size_t capacity,
-    const AbortCheck& aborted, bool& built);
+  const Neighborhoods* Get(
+    vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built);
 
 private:
   struct Entry

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetNeighborhoods.h"
 
 #include "LevelSetTiming.h"
@@ -12,11 +14,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
 #include <functional>
 #include <mutex>
 #include <thread>
-#include <chrono>
-#include <cmath>
 
 namespace lsi
 {
@@ -158,9 +160,9 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
     {
       const std::size_t i = missing[k];
       const std::uint32_t* ids = this->NeighborsOf(i);
-      const bool ok = BuildLinearStencil(this->Position(i), stride,
-        [&](std::size_t m) { return this->Position(ids[m]); }, this->Radius[i],
-        LinearStencilView{ stencil.data(), nullptr }); // zero when singular
+      const bool ok = BuildLinearStencil(
+        this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); },
+        this->Radius[i], LinearStencilView{ stencil.data(), nullptr }); // zero when singular
       std::copy(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride]);
       this->StencilState[i] = ok ? 1 : 2;
       singular.Local() += !ok;

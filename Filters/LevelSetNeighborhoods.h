@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The geometry of the sample cloud that the evolution reuses at every iteration and across
 // re-executions: each sample's n nearest neighbours, its neighbourhood radius h_i, and the MLS
 // gradient stencil (which depends only on positions). Built once per input geometry.
@@ -55,9 +57,9 @@ struct Neighborhoods
   // that neighbours are near in memory.
   // Every index below is an index in that order; Order maps it back to the input point id.
   std::vector<std::uint32_t> Order;
-  std::vector<double> Positions;        // 3 per sample
+  std::vector<double> Positions;                                         // 3 per sample
   std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride per sample
-  std::vector<double> Radius;           // h_i: distance to the farthest neighbour
+  std::vector<double> Radius; // h_i: distance to the farthest neighbour
   std::unique_ptr<PointCloudIndex> Index;
 
   // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
@@ -67,17 +69,18 @@ struct Neighborhoods
   mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
   mutable std::size_t ComputedStencils = 0;
 
-  double MeanRadius = 0.0;      // mean h_i
+  double MeanRadius = 0.0; // mean h_i
 
   // Seconds spent on each part of the build.
   double SortSeconds = 0.0, SearchSeconds = 0.0; // SearchSeconds includes TreeSeconds
   double TreeSeconds = 0.0;
   mutable double StencilSeconds = 0.0; // accumulated over EnsureStencils calls
 
-  // Problems found while building (sample ids are input point ids); the filter turns them into error messages.
+  // Problems found while building (sample ids are input point ids); the filter turns them into
+  // error messages.
   std::size_t DuplicateSamples = 0;
   long long FirstDuplicate = -1;
-  bool Flat = false; // all samples on one plane or line: no 3D fit anywhere
+  bool Flat = false;                       // all samples on one plane or line: no 3D fit anywhere
   mutable std::size_t SingularSamples = 0; // among the stencils computed so far
 
   const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Parallel loops in blocks, so that the calling (main) thread can check for abort between
 // blocks: vtkSMPTools workers never call UpdateProgress or CheckAbort themselves.
 #ifndef LevelSetParallel_h

@@ -40,8 +40,8 @@ void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double
     initial[k] = phi[region[k]];
   }
   auto distance = [&](std::size_t i, std::uint32_t j) {
-    return (Eigen::Vector3d(this->Geometry.Position(i)) -
-      Eigen::Vector3d(this->Geometry.Position(j)))
+    return (
+      Eigen::Vector3d(this->Geometry.Position(i)) - Eigen::Vector3d(this->Geometry.Position(j)))
       .norm();
   };
   auto positive = [](double value) { return value > 0.0; };
@@ -61,9 +61,10 @@ void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double
     if (opposite < HUGE_VAL)
     {
       atInterface[k] = 1;
-      const double norm = ApplyGradientStencil(this->Geometry.StencilOf(i), stride,
-        [&](std::size_t m) { return phi[ids[m]]; })
-                            .norm();
+      const double norm =
+        ApplyGradientStencil(this->Geometry.StencilOf(i), stride, [&](std::size_t m) {
+          return phi[ids[m]];
+        }).norm();
       this->NewValues[k] = InterfaceDistance(phi[i], norm, opposite);
     }
   });

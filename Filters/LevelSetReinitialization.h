@@ -25,8 +25,8 @@ class Reinitialization
 public:
   Reinitialization(const Neighborhoods& geometry, BandCollector& band);
 
-  /// settings.ReinitializationSteps pseudo-time steps on the region |phi| < ReinitializationHalfWidth
-  /// plus one ring of neighbours, in place.
+  /// settings.ReinitializationSteps pseudo-time steps on the region |phi| <
+  /// ReinitializationHalfWidth plus one ring of neighbours, in place.
   void Run(const EvolutionSettings& settings, std::vector<double>& phi);
 
   /// The samples the last Run updated.

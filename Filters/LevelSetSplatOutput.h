@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Turns isopoints with "Normals" and "SplatRadius" into oriented splats: one regular polygon per
 // isopoint in its tangent plane, as ordinary polygons that any VTK renderer or exporter draws
 // (a closed, shaded surface with the default Surface representation).
@@ -14,8 +16,8 @@ namespace lsi
 /// Fills `splats` with `sides` corners per point of `isopoints` and one polygon per point; every
 /// point array of `isopoints` (normals, radius, interpolated data) is copied to the corners of
 /// its polygon. Returns false only when aborted.
-bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, vtkPolyData* splats,
-  const AbortCheck& aborted);
+bool MakeSplatPolygons(
+  vtkPolyData* isopoints, int sides, vtkPolyData* splats, const AbortCheck& aborted);
 
 } // namespace lsi
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Wall-clock time of the filter's stages, reported through its *Seconds getters.
 #ifndef LevelSetTiming_h
 #define LevelSetTiming_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // One vertex cell per point, for point sets shown as points (the particles, the isopoints).
 #ifndef LevelSetVertexCells_h
 #define LevelSetVertexCells_h

@@ -174,8 +174,8 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
 {
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
-  const std::string problem = lsi::CheckInput(input, scalars, association,
-    this->NumberOfNeighbors, this->IsoValue, this->AdditionalSeeds, values);
+  const std::string problem = lsi::CheckInput(input, scalars, association, this->NumberOfNeighbors,
+    this->IsoValue, this->AdditionalSeeds, values);
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem);
@@ -263,9 +263,9 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   }
   if (this->Initialization == FLOOD)
   {
-    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets,
-      seeds.InSeed, static_cast<std::size_t>(geometry.Stride),
-      lsi::ReinitializationHalfWidth(settings), phi, this->Stage(InitializationStage));
+    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, seeds.InSeed,
+      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
+      this->Stage(InitializationStage));
     if (flood.Aborted)
     {
       return false;
@@ -316,8 +316,7 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   const auto start = Clock::now();
   const lsi::IsopointSettings settings =
     lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
-  const std::vector<double> phi =
-    lsi::WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
+  const std::vector<double> phi = lsi::WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
   if (!lsi::ExtractIsopoints(geometry, phi, settings, isopoints, lsi::SubRange(stage, 0.0, 0.28)))
   {
     return false;
@@ -341,7 +340,8 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   this->StencilSeconds = geometry.StencilSeconds;
   if (geometry.SingularSamples > 0)
   {
-    vtkWarningMacro("The MLS fit was singular at " << geometry.SingularSamples
+    vtkWarningMacro("The MLS fit was singular at "
+      << geometry.SingularSamples
       << " samples (neighbourhoods on a plane or line); their gradients were taken as zero. "
          "More NumberOfNeighbors may help.");
   }
@@ -411,7 +411,7 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EvolutionScheme: " << this->EvolutionScheme << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
- os << indent << "DataRefinement: " << (this->DataRefinement ? "On" : "Off") << "\n";
+  os << indent << "DataRefinement: " << (this->DataRefinement ? "On" : "Off") << "\n";
   os << indent << "Initialization: " << this->Initialization << "\n";
   os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

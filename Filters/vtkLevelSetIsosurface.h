@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLevelSetIsosurface
  * @brief   Smooth local isosurface of scattered point data by a variational level-set method.
@@ -32,9 +34,9 @@
  * representation). Both carry unit "Normals" pointing out of the region where f > IsoValue, a
  * "SplatRadius" (the local isopoint spacing, for Point Gaussian's scale array) and, unless
  * InterpolateArrays is off, every point array of the input interpolated by an MLS linear fit
- * (a linear field is reproduced exactly). Port 1, the input samples as vertices with their point data and a
- * "LevelSet" array (the final phi); port 2, a vtkTable with one row per iteration (Iteration,
- * SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds).
+ * (a linear field is reproduced exactly). Port 1, the input samples as vertices with their point
+ * data and a "LevelSet" array (the final phi); port 2, a vtkTable with one row per iteration
+ * (Iteration, SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds).
  *
  * The neighbourhoods (and MLS stencils) depend only on the points: they are kept across
  * re-executions for the last NeighborCacheSize point sets (recognised by their coordinates), so
@@ -261,7 +263,8 @@ public:
 
   ///@{
   /** How many particle geometries (e.g. time steps) keep their neighbourhoods for reuse.
-   * Each costs roughly 200 bytes per particle with 26 neighbours (neighbour lists, positions, kd-tree, and MLS stencils where the surface passed). Default 4. */
+   * Each costs roughly 200 bytes per particle with 26 neighbours (neighbour lists, positions,
+   * kd-tree, and MLS stencils where the surface passed). Default 4. */
   vtkSetClampMacro(NeighborCacheSize, int, 1, 1000);
   vtkGetMacro(NeighborCacheSize, int);
   ///@}
@@ -274,7 +277,7 @@ public:
 
   ///@{
   /** Read-only results of the last execution. */
-  vtkGetMacro(NeighborSearchCount, int);  // how many times the neighbourhoods were built
+  vtkGetMacro(NeighborSearchCount, int); // how many times the neighbourhoods were built
   vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);

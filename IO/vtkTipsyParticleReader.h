@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTipsyParticleReader
  * @brief   Reads the gas (SPH) particles of a Tipsy "standard" binary file.

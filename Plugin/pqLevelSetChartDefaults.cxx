@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "pqLevelSetChartDefaults.h"
 
 #include "pqApplicationCore.h"

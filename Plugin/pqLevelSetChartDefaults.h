@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef pqLevelSetChartDefaults_h
 #define pqLevelSetChartDefaults_h
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch gallery.py PLUGIN DATA_DIR GLASS_FILE OUT_DIR: the README's gallery.
 
 - one-component: the paper's field (§8.2) at 2M samples, the default splat surface;

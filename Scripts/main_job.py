@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch main_job.py PLUGIN SAMPLES.vtp OUTPUT_STEM: the filter on the paper's one-component
 case (isovalue 0, seed sphere at (64, 64, 64) radius 12, default parameters), writing the
 surface (oriented splats, the default output) to OUTPUT_STEM.vtp and a picture to

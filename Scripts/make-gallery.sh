@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # The README's gallery: installs and builds (as the main job does), generates the two synthetic
 # cases at the paper's size (2M samples), then renders the gallery under Xvfb into
 # Documentation/gallery/ (the Evrard glass comes from Data/ChaNGa).

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # The 2M-sample benchmark behind RESULTS.md (about 6 minutes here): each case, then the
 # 1- versus 2-thread comparison. Run after Scripts/setup-debian12.sh (or run-tests.sh).
 set -u

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Issue 4's benchmark: for each case at 2M particles, in one process each, the level-set filter
 # (defaults; unrefined; the paper's seed-sphere start), the Rosenthal-Linsen scheme and the grid
 # route (SPH interpolation + Flying Edges + connectivity), with the 1- vs 2-thread comparison

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: install, build, then run Level-Set Isosurface in pvbatch on the paper's
 # one-component case (200,000 samples), writing Results/one_component_surface.vtp (binary
 # XML, readable by this ParaView) and Results/one_component_surface.png.

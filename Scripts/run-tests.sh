@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # The tests: install, build, then every CTest test (numerics, filter, accuracy at reduced size,
 # plain VTK example, pvpython, ParaView GUI under Xvfb).
 set -euo pipefail

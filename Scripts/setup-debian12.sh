@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what the project needs on a fresh Debian 12 machine (run as root), then configures
 # and builds it in ./build. Used by run-main.sh, run-tests.sh and .ci/run.
 set -euo pipefail
@@ -8,7 +10,7 @@ packages=(cmake g++ make paraview-dev paraview python3-paraview libeigen3-dev qt
   libnetcdf-dev libogg-dev libtheora-dev libgl2ps-dev libglew-dev libproj-dev liblz4-dev liblzma-dev
   libdouble-conversion-dev libexpat1-dev libfreetype-dev libjpeg-dev libpng-dev libtiff-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libswresample-dev libgdal-dev
-  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy)
+  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy clang-format git)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The analytic test cases: the paper's one-component field (§8.2), a multi-component field of
 // our own (§8.3 leaves its formula out), and a sphere. Each knows its value and gradient
 // everywhere, so the exact isosurface is known. Used by the data generator, the tests and the
@@ -30,7 +32,7 @@ struct Case
   std::string Name;
   double IsoValue = 0.0;
   Eigen::Vector3d BoxMin{ 0, 0, 0 }, BoxMax{ 128, 128, 128 };
-  std::vector<Sphere3> Seeds; // main seed first
+  std::vector<Sphere3> Seeds;    // main seed first
   double CurvatureWeight = 0.05; // lambda used by the case (the paper's for its own runs)
   virtual ~Case() = default;
   virtual double Value(const Eigen::Vector3d& x) const = 0;
@@ -126,8 +128,7 @@ struct MultiComponentCase : Case
     for (int k = 0; k < 4; ++k)
     {
       const Blob& b = this->Blobs[k];
-      g -= this->Term(k, x) *
-        (x - b.Center).cwiseQuotient(b.Sigma).cwiseQuotient(b.Sigma);
+      g -= this->Term(k, x) * (x - b.Center).cwiseQuotient(b.Sigma).cwiseQuotient(b.Sigma);
     }
     return g;
   }
@@ -196,10 +197,7 @@ struct AdaptiveNoisyCase : Case
   {
     return (x - this->Centre).cwiseQuotient(this->Scale * this->Axes);
   }
-  double Value(const Eigen::Vector3d& x) const override
-  {
-    return Density(this->Scaled(x).norm());
-  }
+  double Value(const Eigen::Vector3d& x) const override { return Density(this->Scaled(x).norm()); }
   Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
   {
     const Eigen::Vector3d u = this->Scaled(x);

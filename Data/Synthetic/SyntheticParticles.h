@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Turns samples of an analytic case into VTK particles: double points and the scalar "f".
 // Shared by the data generator and the benchmark.
 #ifndef SyntheticParticles_h

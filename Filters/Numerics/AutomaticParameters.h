@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Automatic numerical parameters from the local sample spacing (paper §4.4 and appendix).
 // Plain C++: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef AutomaticParameters_h

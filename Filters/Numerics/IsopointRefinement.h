@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Isopoints (paper §6): zero crossings of phi between neighbouring samples, the angle
 // criterion that keeps only pairs roughly along the gradient, and Newton's projection onto
 // the zero level of a local approximation (eq. 14).
@@ -38,8 +40,8 @@ inline bool AlignedWithGradient(
 struct NewtonSettings
 {
   int MaximumIterations = 8;
-  double Tolerance = 1e-6;       // stop when the step is shorter than this
-  double MaximumDistance = 1.0;  // fail when the point wanders further than this from its start
+  double Tolerance = 1e-6;      // stop when the step is shorter than this
+  double MaximumDistance = 1.0; // fail when the point wanders further than this from its start
 };
 
 /// Newton's method p <- p - phi(p) grad phi(p) / |grad phi(p)|^2 on an approximation given by

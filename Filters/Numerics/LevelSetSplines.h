@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothed delta and sign functions of the level-set equation (paper §4.2, corrected in
 // shared/docs/method.md). Plain C++, no VTK: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef LevelSetSplines_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Per-sample update formulas of the level-set evolution (paper eq. 9 and 13) and of the
 // reinitialisation (eq. 10). Plain C++: unit-tested in Testing/Cxx/TestNumerics.cxx.
 #ifndef LevelSetUpdate_h
@@ -16,9 +18,9 @@ namespace lsi
 struct EvolutionCoefficients
 {
   double TimeStep = 1.0;
-  double Epsilon = 1.0;          // width of delta/sign in the main term
-  double CurvatureEpsilon = 1.0; // width of delta in the curvature term (eps')
-  double CurvatureWeight = 0.0;  // lambda
+  double Epsilon = 1.0;                // width of delta/sign in the main term
+  double CurvatureEpsilon = 1.0;       // width of delta in the curvature term (eps')
+  double CurvatureWeight = 0.0;        // lambda
   double DistanceRegularization = 0.0; // mu (eq. 13; 0 for the scheme with reinitialisation)
 };
 

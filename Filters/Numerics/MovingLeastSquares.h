@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Moving-least-squares linear fits (paper §4.2): g(x) ~ a . (x - c) + b around a centre c,
 // weighted by w(d) = 1 - |d|^2 / h^2 (squared in the least-squares sum). The fit matrix depends
 // only on positions, so it is turned once into a "stencil": per-neighbour coefficients that give
@@ -36,8 +38,8 @@ struct LinearStencilView
 /// singular (fewer than four weighted points in general position: duplicate, collinear or
 /// coplanar neighbourhoods); the stencil is then left zero.
 template <typename PositionFn>
-bool BuildLinearStencil(const double centre[3], std::size_t count, PositionFn position, double h,
-  LinearStencilView out)
+bool BuildLinearStencil(
+  const double centre[3], std::size_t count, PositionFn position, double h, LinearStencilView out)
 {
   using Matrix4 = Eigen::Matrix4d;
   using Vector4 = Eigen::Vector4d;
@@ -61,8 +63,8 @@ bool BuildLinearStencil(const double centre[3], std::size_t count, PositionFn po
   for (std::size_t j = 0; j < count; ++j)
   {
     const double* x = position(j);
-    const Vector4 q((x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH,
-      (x[2] - centre[2]) * invH, 1.0);
+    const Vector4 q(
+      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
     const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
     normal.noalias() += (w * w) * q * q.transpose();
   }
@@ -77,8 +79,8 @@ bool BuildLinearStencil(const double centre[3], std::size_t count, PositionFn po
   for (std::size_t j = 0; j < count; ++j)
   {
     const double* x = position(j);
-    const Vector4 q((x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH,
-      (x[2] - centre[2]) * invH, 1.0);
+    const Vector4 q(
+      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
     const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
     const Vector4 c = inverse * ((w * w) * q);
     // The fit is in scaled coordinates: d/dx = (1/h) d/dq.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // k-nearest-neighbour queries on a static point cloud, through nanoflann's kd-tree
 // (header-only; Debian: libnanoflann-dev). Queries are const and thread-safe once built.
 #ifndef NearestNeighbors_h
@@ -35,13 +37,13 @@ public:
   /// The points in `xyz` (3 per point) are moved into the tree's leaf order, so that each
   /// leaf's points lie together in memory; `oldIndex[i]` receives the original position of
   /// what is now point i. `xyz` must outlive the index and keep its buffer.
-  PointCloudIndex(std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex,
-    int splitLevels, const TaskRunner& run);
+  PointCloudIndex(std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, int splitLevels,
+    const TaskRunner& run);
 
   /// The k points nearest to `query`, closest first: indices and squared distances.
   /// Returns how many were found (fewer than k only when the cloud is smaller).
-  std::size_t Nearest(const double query[3], std::size_t k, std::uint32_t* indices,
-    double* squaredDistances) const
+  std::size_t Nearest(
+    const double query[3], std::size_t k, std::uint32_t* indices, double* squaredDistances) const
   {
     return this->Tree.knnSearch(query, k, indices, squaredDistances);
   }
@@ -87,8 +89,8 @@ private:
     int Axis;
   };
 
-  static std::size_t CutAtMedian(
-    const double* xyz, std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, int& axis);
+  static std::size_t CutAtMedian(const double* xyz, std::vector<std::uint32_t>& ids,
+    std::size_t begin, std::size_t end, int& axis);
   Node* Join(std::size_t begin, std::size_t end, const std::vector<std::size_t>& pieceStart,
     const std::vector<Cut>& cuts, Box& box);
   void MoveIntoLeafOrder(
@@ -117,7 +119,8 @@ private:
 // ---------------------------------------------------------------------------------------------
 // The joined build. It fills nanoflann's public members (vAcc, root_node, root_bbox, pool) the
 // way its buildIndex does; checked against nanoflann 1.4.2, the version in Debian 12.
-static_assert(NANOFLANN_VERSION == 0x142, "PointCloudIndex's joined build was written for nanoflann 1.4.2");
+static_assert(
+  NANOFLANN_VERSION == 0x142, "PointCloudIndex's joined build was written for nanoflann 1.4.2");
 
 // Splits ids[begin, end) at the median of the longest axis of their box, keeping the current
 // (spatial) order on each side. Returns where the upper side starts: begin or end when every
@@ -177,9 +180,8 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
     {
       const std::size_t begin = pieceStart[p], end = pieceStart[p + 1];
       int axis = 0;
-      const std::size_t middle = end - begin > 4 * LeafSize
-        ? CutAtMedian(xyz.data(), oldIndex, begin, end, axis)
-        : begin;
+      const std::size_t middle =
+        end - begin > 4 * LeafSize ? CutAtMedian(xyz.data(), oldIndex, begin, end, axis) : begin;
       if (middle > begin && middle < end)
       {
         cuts.push_back({ begin, middle, end, axis });
@@ -212,8 +214,8 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
   for (std::size_t p = 0; p < pieces; ++p)
   {
     tasks.push_back([this, p]() {
-      this->PieceTrees[p].reset(new Tree3D(
-        3, *this->PieceClouds[p], nanoflann::KDTreeSingleIndexAdaptorParams(LeafSize)));
+      this->PieceTrees[p].reset(
+        new Tree3D(3, *this->PieceClouds[p], nanoflann::KDTreeSingleIndexAdaptorParams(LeafSize)));
     });
   }
   run(tasks);

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Morton (Z-order) keys: sorting samples by them puts samples that are close in space close in
 // memory, so that neighbour queries and the per-sample loops over neighbours hit the cache.
 // Plain C++.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Oriented splats for rendering a point set with normals as a closed surface: each point becomes
 // a small regular polygon (a disk) in its tangent plane, large enough that the disks of
 // neighbouring points overlap. Plain C++/Eigen: unit-tested in Testing/Cxx/TestNumerics.cxx.
@@ -18,7 +20,8 @@ namespace lsi
 /// `factor` times the distance to the last of them. On a surface sampled at spacing s, the
 /// 6th neighbour is about 1.3 s away, so the disks overlap their neighbours' with room to spare
 /// where the sampling is uneven; the factor is checked by the rendering-coverage test.
-inline double SplatRadiusFromNeighbors(const double* squaredDistances, std::size_t count, double factor)
+inline double SplatRadiusFromNeighbors(
+  const double* squaredDistances, std::size_t count, double factor)
 {
   return count ? factor * std::sqrt(squaredDistances[count - 1]) : 0.0;
 }

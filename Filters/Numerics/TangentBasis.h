@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // An orthonormal basis of the plane tangent to a unit normal: the splats' corners and the
-// completion's grid are laid out in it. Plain C++/Eigen: unit-tested in Testing/Cxx/TestNumerics.cxx.
+// completion's grid are laid out in it. Plain C++/Eigen: unit-tested in
+// Testing/Cxx/TestNumerics.cxx.
 #ifndef TangentBasis_h
 #define TangentBasis_h
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Point completion (paper §6, Fig. 3): around an isopoint, lay a small grid of cells on the
 // tangent plane, project the neighbouring isopoints onto it, and propose a new point at the
 // centre of every empty cell (to be refined by Newton's method afterwards).

@@ -40,8 +40,8 @@ const AccuracyTest Tests[] = {
   { "LocalityMultiComponent", "multi-component", 200000, 0, Flood, false, 500, 0.14, true, true,
     true },
   // The paper's parameters are absolute (tuned for spacing 1), so they run at the paper's size.
-  { "PaperParametersOneComponent2M", "one-component", 2000000, 0, Spheres, true, 500, 0.35,
-    false, false, false },
+  { "PaperParametersOneComponent2M", "one-component", 2000000, 0, Spheres, true, 500, 0.35, false,
+    false, false },
   { "PaperParametersMultiComponent2M", "multi-component", 2000000, 0, Spheres, true, 500, 0.14,
     false, true, false },
   { "SchemeWithoutReinitialization", "multi-component", 100000, 1, Flood, false, 300, -1.0, false,
@@ -73,9 +73,9 @@ int Run(const AccuracyTest& t)
   std::cout << t.Name << ": " << c->Name << ", " << t.Samples << " samples, " << m.Isopoints
             << " isopoints, " << filter->GetNumberOfIterationsPerformed() << " iterations"
             << (filter->GetConverged() ? " (converged)" : " (limit)") << "\n  mean distance "
-            << m.MeanDistance / spacing << " spacings, normal error "
-            << m.MeanNormalAngleDegrees << " deg, coverage " << m.CoveredFraction
-            << ", isopoints on unseeded components " << m.UnseededIsopoints << "\n";
+            << m.MeanDistance / spacing << " spacings, normal error " << m.MeanNormalAngleDegrees
+            << " deg, coverage " << m.CoveredFraction << ", isopoints on unseeded components "
+            << m.UnseededIsopoints << "\n";
 
   int failures = 0;
   auto check = [&](bool ok, const std::string& what) {

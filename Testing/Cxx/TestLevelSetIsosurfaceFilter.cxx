@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Filter-level tests: neighbour reuse across parameter changes, progress through every stage,
 // and bad input (a clear error and empty outputs, never a crash or hang).
 #include "vtkLevelSetIsosurface.h"
@@ -6,8 +8,8 @@
 #include "TestCheck.h"
 
 #include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -110,7 +112,8 @@ void TestReuseOfNeighbours()
   filter->GetOutput(0)->GetPoint(0, p);
   const double r =
     std::sqrt((p[0] - 30) * (p[0] - 30) + (p[1] - 30) * (p[1] - 30) + (p[2] - 30) * (p[2] - 30));
-  Check(std::abs(r - 23.0) < 1.5, "new isovalue gives the new sphere (r = " + std::to_string(r) + ")");
+  Check(
+    std::abs(r - 23.0) < 1.5, "new isovalue gives the new sphere (r = " + std::to_string(r) + ")");
   filter->SetCurvatureWeight(0.1);
   filter->Update();
   Check(filter->GetNeighborSearchCount() == 1, "a parameter change reuses the neighbours");
@@ -170,8 +173,8 @@ void TestProgressThroughStages()
   };
   const std::size_t neighbours = distinctWithin(0.0, 0.35);
   const std::size_t isopoints = distinctWithin(0.8, 0.92);
-  Check(neighbours >= 3, "progress moves during the neighbour search (" +
-      std::to_string(neighbours) + " values)");
+  Check(neighbours >= 3,
+    "progress moves during the neighbour search (" + std::to_string(neighbours) + " values)");
   Check(isopoints >= 3,
     "progress moves during the isopoint stage (" + std::to_string(isopoints) + " values)");
 }
@@ -186,8 +189,8 @@ vtkNew<vtkPolyData> TwoBalls(vtkIdType count)
     double x[3];
     data->GetPoint(i, x);
     auto ball = [&x](double c) {
-      return 8.0 - std::sqrt((x[0] - c) * (x[0] - c) + (x[1] - c) * (x[1] - c) +
-                     (x[2] - c) * (x[2] - c));
+      return 8.0 -
+        std::sqrt((x[0] - c) * (x[0] - c) + (x[1] - c) * (x[1] - c) + (x[2] - c) * (x[2] - c));
     };
     f->SetComponent(i, 0, std::max(ball(30.0), ball(12.0)));
   }
@@ -224,8 +227,9 @@ void TestSeedRadiusMeanings()
   filter->SetSeedRadius(0.0);
   filter->Update();
   const double all = FarthestFromCentre(filter->GetOutput(0));
-  Check(all > 25.0, "SeedRadius 0 extracts both balls (farthest isopoint " +
-      std::to_string(all) + " from the centre ball)");
+  Check(all > 25.0,
+    "SeedRadius 0 extracts both balls (farthest isopoint " + std::to_string(all) +
+      " from the centre ball)");
 }
 
 void TestBadInput()

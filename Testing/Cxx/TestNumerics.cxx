@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the per-sample numerics (Filters/Numerics), against known answers.
 #include "AutomaticParameters.h"
 #include "IsopointRefinement.h"
@@ -6,15 +8,17 @@
 #include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
 #include "SpatialOrder.h"
+#include "Splats.h"
+#include "TangentBasis.h"
 #include "TangentPlaneCompletion.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
-#include <string>
 #include <iostream>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace
@@ -45,8 +49,8 @@ void TestSplines()
   {
     Check(std::abs(lsi::SplineKernel(u - 1e-12) - lsi::SplineKernel(u + 1e-12)) < 1e-9,
       "delta continuous");
-    Check(std::abs(lsi::SplineKernelIntegral(u - 1e-12) - lsi::SplineKernelIntegral(u + 1e-12)) <
-        1e-9,
+    Check(
+      std::abs(lsi::SplineKernelIntegral(u - 1e-12) - lsi::SplineKernelIntegral(u + 1e-12)) < 1e-9,
       "sign continuous");
   }
   Check(std::abs(lsi::SplineKernelIntegral(1.0) - 11.0 / 12.0) < 1e-15, "s(1) = 11/12");
@@ -80,17 +84,17 @@ void TestMLS()
     double h = 0.0;
     for (int j = 0; j < 27; ++j)
     {
-      h = std::max(h, std::sqrt(std::pow(xyz[3 * j] - c[0], 2) + std::pow(xyz[3 * j + 1] - c[1], 2) +
-                        std::pow(xyz[3 * j + 2] - c[2], 2)));
+      h = std::max(h,
+        std::sqrt(std::pow(xyz[3 * j] - c[0], 2) + std::pow(xyz[3 * j + 1] - c[1], 2) +
+          std::pow(xyz[3 * j + 2] - c[2], 2)));
     }
     std::vector<double> g(3 * 27), value(27);
-    const bool ok = lsi::BuildLinearStencil(c, 27, [&](std::size_t j) { return &xyz[3 * j]; }, h,
+    const bool ok = lsi::BuildLinearStencil(
+      c, 27, [&](std::size_t j) { return &xyz[3 * j]; }, h,
       lsi::LinearStencilView{ g.data(), value.data() });
     Check(ok, "regular neighbourhood is not singular");
     const Eigen::Vector3d a(0.3, -1.2, 2.5);
-    auto field = [&](std::size_t j) {
-      return a.dot(Eigen::Vector3d(&xyz[3 * j])) + 4.0;
-    };
+    auto field = [&](std::size_t j) { return a.dot(Eigen::Vector3d(&xyz[3 * j])) + 4.0; };
     const Eigen::Vector3d grad = lsi::ApplyGradientStencil(g.data(), 27, field);
     Check((grad - a).norm() < 1e-10, "MLS gradient exact for a linear field");
     double v = 0.0;
@@ -118,7 +122,8 @@ void TestMLS()
   for (const std::vector<double>* xyz : { &plane, &line, &same })
   {
     const double c[3] = { (*xyz)[0], (*xyz)[1], (*xyz)[2] };
-    Check(!lsi::BuildLinearStencil(c, 27, [&](std::size_t j) { return &(*xyz)[3 * j]; }, 3.0,
+    Check(!lsi::BuildLinearStencil(
+            c, 27, [&](std::size_t j) { return &(*xyz)[3 * j]; }, 3.0,
             lsi::LinearStencilView{ g.data(), nullptr }),
       "degenerate neighbourhood reported singular");
   }
@@ -185,7 +190,8 @@ void TestTheorem1()
     for (std::size_t i = 0; i < phi.size(); ++i)
     {
       const double x = -3.0 + 0.01 * i;
-      phi[i] = lsi::MainTermStep(phi[i], lsi::Sign(0.3 - x), 0.6 * eps * eps,
+      phi[i] = lsi::MainTermStep(
+        phi[i], lsi::Sign(0.3 - x), 0.6 * eps * eps,
         [&](double p) { return lsi::SmoothedDelta(p, eps); },
         [&](double p) { return lsi::SmoothedSign(p, eps); });
     }
@@ -250,8 +256,8 @@ void TestIsopoints()
   Eigen::Vector3d far(10, 0, 0), g;
   Check(!lsi::ProjectOntoZeroLevel(far, g, sphere, settings), "trust region rejects far points");
   // Linear zero crossing and the angle criterion.
-  const Eigen::Vector3d z = lsi::ZeroCrossing(Eigen::Vector3d(0, 0, 0), 1.0,
-    Eigen::Vector3d(4, 0, 0), -3.0);
+  const Eigen::Vector3d z =
+    lsi::ZeroCrossing(Eigen::Vector3d(0, 0, 0), 1.0, Eigen::Vector3d(4, 0, 0), -3.0);
   Check((z - Eigen::Vector3d(1, 0, 0)).norm() < 1e-15, "zero crossing by interpolation");
   Check(lsi::AlignedWithGradient(Eigen::Vector3d(1, 0.2, 0), Eigen::Vector3d(1, 0, 0), 0.5),
     "aligned pair accepted");
@@ -274,7 +280,8 @@ void TestCompletion()
   neighbors.emplace_back(0.0, 0.0, 3.0); // another sheet: ignored
   std::vector<Eigen::Vector3d> cells;
   const Eigen::Vector3d n(0, 0, 1);
-  lsi::EmptyTangentCells(Eigen::Vector3d::Zero(), n, 0.5, 2, 0.5, neighbors.size(),
+  lsi::EmptyTangentCells(
+    Eigen::Vector3d::Zero(), n, 0.5, 2, 0.5, neighbors.size(),
     [&](std::size_t j) { return neighbors[j]; }, cells);
   Check(cells.size() == 25 - 1 - 10, "empty cells counted");
   for (const Eigen::Vector3d& c : cells)
@@ -318,7 +325,8 @@ void TestSpatialOrder()
   for (std::size_t i = 1; i < sorted.size(); ++i)
   {
     contiguous = contiguous &&
-      octantOf[static_cast<std::uint32_t>(sorted[i])] >= octantOf[static_cast<std::uint32_t>(sorted[i - 1])];
+      octantOf[static_cast<std::uint32_t>(sorted[i])] >=
+        octantOf[static_cast<std::uint32_t>(sorted[i - 1])];
   }
   Check(contiguous, "Morton order keeps octants contiguous");
 }
@@ -345,7 +353,8 @@ void TestJoinedTree()
     {
       for (int a = 0; a < 3; ++a)
       {
-        original[3 * i + a] = cloud == 1 ? std::pow(unit(random), 3.0) * normal(random) : unit(random);
+        original[3 * i + a] =
+          cloud == 1 ? std::pow(unit(random), 3.0) * normal(random) : unit(random);
       }
       if (cloud == 2 && i % 4 == 0)
       {
@@ -382,9 +391,10 @@ void TestJoinedTree()
           }
         }
         std::nth_element(all.begin(), all.begin() + (k - 1), all.end());
-        const bool found = index.Nearest(query, k, ids.data(), d2.data()) == k &&
-          d2[k - 1] == all[k - 1];
-        const bool within = index.NearestWithin(query, k, 1.01 * all[k - 1], ids.data(), d2.data()) == k;
+        const bool found =
+          index.Nearest(query, k, ids.data(), d2.data()) == k && d2[k - 1] == all[k - 1];
+        const bool within =
+          index.NearestWithin(query, k, 1.01 * all[k - 1], ids.data(), d2.data()) == k;
         sameAnswers = sameAnswers && found && within && d2[k - 1] == all[k - 1];
       }
       const std::string what = "joined tree (" + std::to_string(levels) + " levels, cloud " +
@@ -400,8 +410,8 @@ void TestRosenthalLinsen()
   Check(std::abs(lsi::RosenthalLinsenValue(1.0, 1.0, 0.0, 0.5, 10.0) - 0.5) < 1e-15,
     "half-way towards the target");
   Check(lsi::RosenthalLinsenValue(2.0, 1.0, 2.0, 0.5, 10.0) == 2.0, "the target is a fixed point");
-  Check(std::abs(lsi::RosenthalLinsenValue(0.0, 1.0, 10.0, 0.5, 0.3) - 0.3) < 1e-15,
-    "step bounded");
+  Check(
+    std::abs(lsi::RosenthalLinsenValue(0.0, 1.0, 10.0, 0.5, 0.3) - 0.3) < 1e-15, "step bounded");
 }
 
 void TestSlideOntoDataLevel()
@@ -442,8 +452,37 @@ void TestSlideOntoDataLevel()
     "refuses a contradicting gradient");
 }
 
+// The tangent basis: (u, v, n) orthonormal and right-handed for any unit n, including normals
+// along the axes and with equal components (the tie-breaking cases); splat corners lie in the
+// tangent plane at the given radius.
+void TestTangentBasis()
+{
+  const double s = 1.0 / std::sqrt(2.0), t = 1.0 / std::sqrt(3.0);
+  const Eigen::Vector3d normals[] = { { 1, 0, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { s, s, 0 },
+    { 0, s, -s }, { s, 0, s }, { t, t, t }, { -t, t, -t },
+    Eigen::Vector3d(0.3, -0.5, 0.8).normalized() };
+  double worst = 0.0;
+  for (const Eigen::Vector3d& n : normals)
+  {
+    Eigen::Vector3d u, v;
+    lsi::TangentBasis(n, u, v);
+    worst = std::max({ worst, std::abs(u.norm() - 1.0), std::abs(v.norm() - 1.0),
+      std::abs(u.dot(v)), std::abs(u.dot(n)), std::abs(v.dot(n)), (u.cross(v) - n).norm() });
+    double corners[3 * 8];
+    lsi::DiskCorners(Eigen::Vector3d(1, 2, 3), n, 0.5, 8, corners);
+    for (int k = 0; k < 8; ++k)
+    {
+      const Eigen::Vector3d d = Eigen::Vector3d(&corners[3 * k]) - Eigen::Vector3d(1, 2, 3);
+      worst = std::max({ worst, std::abs(d.dot(n)), std::abs(d.norm() - 0.5) });
+    }
+  }
+  std::cout << "tangent basis: largest error " << worst << "\n";
+  Check(worst < 1e-14, "tangent basis orthonormal and right-handed, splat corners in the plane");
+}
+
 int main()
 {
+  TestTangentBasis();
   TestSpatialOrder();
   TestJoinedTree();
   TestRosenthalLinsen();

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // What the surface output carries and how it follows time:
 // - every input point array interpolated onto the isopoints reproduces a linear field exactly;
 // - the splat polygons lie in the tangent planes, one per isopoint, with the splat radius;
@@ -30,7 +32,10 @@ namespace
 {
 using lsi::test::Check;
 
-double Linear(const double x[3]) { return 3.0 * x[0] - 2.0 * x[1] + 0.5 * x[2] + 7.0; }
+double Linear(const double x[3])
+{
+  return 3.0 * x[0] - 2.0 * x[1] + 0.5 * x[2] + 7.0;
+}
 
 // `count` random particles in [0, 60]^3 (seeded by `seed`): f = radius - |x - 30| and, to
 // interpolate, "linear" (a scalar), "velocity" (a linear vector field) and "temperature" (float).
@@ -56,8 +61,8 @@ vtkSmartPointer<vtkPolyData> Ball(int count, double radius, int seed)
       v = 60.0 * random->GetValue();
     }
     points->InsertNextPoint(x);
-    f->InsertNextValue(
-      radius - std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30)));
+    f->InsertNextValue(radius -
+      std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30)));
     linear->InsertNextValue(Linear(x));
     velocity->InsertNextTuple3(x[1], -x[0], 2.0 * x[2] - 1.0);
     temperature->InsertNextValue(static_cast<float>(100.0 + x[2]));
@@ -93,7 +98,8 @@ void TestInterpolatedArrays()
   vtkDataArray* velocity = pd->GetArray("velocity");
   vtkDataArray* temperature = pd->GetArray("temperature");
   Check(out->GetNumberOfPoints() > 1000, "isopoints produced");
-  Check(linear && velocity && temperature && pd->GetArray("f"), "every input array is interpolated");
+  Check(
+    linear && velocity && temperature && pd->GetArray("f"), "every input array is interpolated");
   if (!(linear && velocity && temperature))
   {
     return;
@@ -195,7 +201,8 @@ public:
 
 protected:
   BallSeries() { this->SetNumberOfInputPorts(0); }
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
   {
     const double steps[3] = { 0.0, 1.0, 2.0 }, range[2] = { 0.0, 2.0 };
     vtkInformation* info = out->GetInformationObject(0);
@@ -225,7 +232,8 @@ double MeanRadius(vtkPolyData* points)
   {
     double x[3];
     points->GetPoint(i, x);
-    sum += std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
+    sum +=
+      std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
   }
   return points->GetNumberOfPoints() ? sum / points->GetNumberOfPoints() : 0.0;
 }
@@ -245,18 +253,21 @@ void TestTimeSeries()
   for (double t : { 0.0, 1.0, 2.0, 1.0, 0.0, 2.0 })
   {
     filter->UpdateTimeStep(t);
-    const bool firstVisit = t == 0.0 ? expectedSearches < 1 : t == 1.0 ? expectedSearches < 2 : expectedSearches < 3;
+    const bool firstVisit = t == 0.0 ? expectedSearches < 1
+      : t == 1.0                     ? expectedSearches < 2
+                                     : expectedSearches < 3;
     expectedSearches += firstVisit ? 1 : 0;
     vtkPolyData* out = filter->GetOutput(0);
     const double r = MeanRadius(out);
     const double dataTime = out->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
       ? out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
       : -1.0;
-    std::cout << "time " << t << ": " << out->GetNumberOfPoints() << " isopoints, mean radius "
-              << r << " (exact " << 14.0 + 2.0 * t << "), neighbour searches so far "
+    std::cout << "time " << t << ": " << out->GetNumberOfPoints() << " isopoints, mean radius " << r
+              << " (exact " << 14.0 + 2.0 * t << "), neighbour searches so far "
               << filter->GetNeighborSearchCount() << "\n";
     // Steps differ by 2; the surface sits within a fraction of the spacing (2.2) of the exact one.
-    Check(std::abs(r - (14.0 + 2.0 * t)) < 0.5, "time " + std::to_string(t) + ": the surface of that step");
+    Check(std::abs(r - (14.0 + 2.0 * t)) < 0.5,
+      "time " + std::to_string(t) + ": the surface of that step");
     Check(dataTime == t, "time " + std::to_string(t) + ": output stamped with its time");
     Check(filter->GetNeighborSearchCount() == expectedSearches,
       "time " + std::to_string(t) + ": neighbours searched once per time step");
@@ -264,8 +275,10 @@ void TestTimeSeries()
   // Changing the isovalue at a step reuses that step's neighbourhoods.
   filter->SetIsoValue(-2.0);
   filter->UpdateTimeStep(2.0);
-  Check(filter->GetNeighborSearchCount() == expectedSearches, "isovalue change reuses the step's neighbours");
-  Check(std::abs(MeanRadius(filter->GetOutput(0)) - 20.0) < 0.5, "new isovalue at time 2 (f = 18 - r = -2 at r = 20)");
+  Check(filter->GetNeighborSearchCount() == expectedSearches,
+    "isovalue change reuses the step's neighbours");
+  Check(std::abs(MeanRadius(filter->GetOutput(0)) - 20.0) < 0.5,
+    "new isovalue at time 2 (f = 18 - r = -2 at r = 20)");
 }
 } // namespace
 
@@ -274,6 +287,7 @@ int main()
   TestInterpolatedArrays();
   TestSplats();
   TestTimeSeries();
-  std::cout << (lsi::test::Failures() ? "surface output tests FAILED\n" : "surface output tests passed\n");
+  std::cout << (lsi::test::Failures() ? "surface output tests FAILED\n"
+                                      : "surface output tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The Tipsy reader: writes small Tipsy standard files with known particles (big- and
 // little-endian, with dark and star particles after the gas) and checks what comes back, then
 // bad files (a clear error, an empty output), then the two real files given as arguments
@@ -16,8 +18,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -98,7 +100,8 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
     std::ifstream in(path, std::ios::binary);
     std::vector<char> all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     all.resize(all.size() - static_cast<std::size_t>(droppedBytes));
-    std::ofstream(path, std::ios::binary).write(all.data(), static_cast<std::streamsize>(all.size()));
+    std::ofstream(path, std::ios::binary)
+      .write(all.data(), static_cast<std::streamsize>(all.size()));
   }
 }
 
@@ -116,7 +119,8 @@ void TestKnownParticles(bool bigEndian)
   vtkPolyData* out = reader->GetOutput();
   Check(out->GetNumberOfPoints() == GasCount, order + ": only the gas particles are read");
   Check(out->GetNumberOfVerts() == GasCount, order + ": one vertex per particle");
-  Check(warnings->Count == 1 && warnings->Last.find("skipped 2 dark and 1 star") != std::string::npos,
+  Check(
+    warnings->Count == 1 && warnings->Last.find("skipped 2 dark and 1 star") != std::string::npos,
     order + ": a warning names the skipped particles (got: " + warnings->Last + ")");
   Check(std::abs(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) - FileTime) < 1e-12,
     order + ": the file's time");
@@ -150,8 +154,8 @@ void TestKnownParticles(bool bigEndian)
       }
     }
   }
-  Check(worst == 0.0, order + ": every value read back exactly (worst error " +
-      std::to_string(worst) + ")");
+  Check(worst == 0.0,
+    order + ": every value read back exactly (worst error " + std::to_string(worst) + ")");
   Check(out->GetPointData()->GetScalars() &&
       std::string(out->GetPointData()->GetScalars()->GetName()) == "rho",
     order + ": rho is the active scalar");
@@ -227,6 +231,7 @@ int main(int argc, char* argv[])
   }
   TestRealFile(argv[1], 28721, 1.0 + 1e-6);
   TestRealFile(argv[2], 20000, 1.0 + 1e-6);
-  std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n" : "Tipsy reader tests passed\n");
+  std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n"
+                                      : "Tipsy reader tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

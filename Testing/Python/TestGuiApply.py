@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Run inside the ParaView GUI: paraview --script=TestGuiApply.py (under xvfb-run), with
 LSI_PLUGIN, LSI_GLASS (the Evrard glass Tipsy file), LSI_SCREENSHOT and LSI_STATUS in the
 environment.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # GUI test: the paraview executable under Xvfb runs TestGuiApply.py (--script), which applies the
 # filter with the sphere widget visible, checks the chart view, and saves a screenshot. Fails
 # unless the script recorded "passed" and the screenshot is not blank.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvpython test: load the built plugin, run Level-Set Isosurface on a ball of particles and
 check the three outputs against the exact sphere. Usage: pvpython TestPlugin.py PLUGIN.so"""
 import math

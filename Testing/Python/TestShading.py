@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Rendering test (pvbatch under xvfb-run): the surface is shaded by its normals, in both output
 types, as ParaView draws them by default (the Surface representation).
 

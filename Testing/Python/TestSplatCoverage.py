@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Rendering test (pvbatch under xvfb-run): the default splat output must cover the exact
 isosurface as seen on screen, with no holes and no fuzz. From three camera directions it renders
 the exact surface mesh and the splats, each as a flat white silhouette on black, and compares

@@ -40,10 +40,14 @@ public:
 inline const char* StageAt(double progress)
 {
   // The filter's stage ranges (the top of Filters/vtkLevelSetIsosurface.cxx).
-  if (progress < 0.35) return "neighbours";
-  if (progress < 0.45) return "initialisation";
-  if (progress < 0.8) return "evolution";
-  if (progress < 0.92) return "isopoints";
+  if (progress < 0.35)
+    return "neighbours";
+  if (progress < 0.45)
+    return "initialisation";
+  if (progress < 0.8)
+    return "evolution";
+  if (progress < 0.92)
+    return "isopoints";
   return "output";
 }
 struct AbortLatencies
@@ -72,9 +76,9 @@ inline AbortLatencies MeasureAbortLatencies(
     fullSeconds = SecondsSince(start);
   }
   table << "one-component, " << samples << " samples, default parameters: a full run takes "
-            << std::fixed << std::setprecision(3) << fullSeconds << " s\n\n";
+        << std::fixed << std::setprecision(3) << fullSeconds << " s\n\n";
   table << "| abort after (s) | progress then | stage | returned after (s) | outputs empty |\n"
-            << "|---|---|---|---|---|\n";
+        << "|---|---|---|---|---|\n";
   AbortLatencies result;
   double& worst = result.LongestSeconds;
   bool& allEmpty = result.OutputsEmpty;
@@ -112,9 +116,12 @@ inline AbortLatencies MeasureAbortLatencies(
     const bool completed = progress->Progress >= 1.0;
     allEmpty = allEmpty && (empty || completed);
     worst = std::max(worst, latency);
-    table << "| " << delay << " | " << progressAtAbort << " | " << StageAt(progressAtAbort)
-              << " | " << latency << " | "
-              << (empty ? "yes" : completed ? "no: finished before the abort" : "no") << " |\n";
+    table << "| " << delay << " | " << progressAtAbort << " | " << StageAt(progressAtAbort) << " | "
+          << latency << " | "
+          << (empty          ? "yes"
+                 : completed ? "no: finished before the abort"
+                             : "no")
+          << " |\n";
   }
   return result;
 }

@@ -31,9 +31,12 @@ namespace cases
 /// The case called `name` (one-component, multi-component, adaptive-noisy, sphere), or null.
 inline std::unique_ptr<Case> MakeCase(const std::string& name)
 {
-  if (name == "one-component") return std::unique_ptr<Case>(new OneComponentCase);
-  if (name == "multi-component") return std::unique_ptr<Case>(new MultiComponentCase);
-  if (name == "adaptive-noisy") return std::unique_ptr<Case>(new AdaptiveNoisyCase);
+  if (name == "one-component")
+    return std::unique_ptr<Case>(new OneComponentCase);
+  if (name == "multi-component")
+    return std::unique_ptr<Case>(new MultiComponentCase);
+  if (name == "adaptive-noisy")
+    return std::unique_ptr<Case>(new AdaptiveNoisyCase);
   if (name == "sphere")
     return std::unique_ptr<Case>(new SphereCase(Eigen::Vector3d(64, 64, 64), 40.0, 64.0));
   return nullptr;

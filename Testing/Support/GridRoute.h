@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // What a ParaView user does today to get an isosurface from particles: SPH interpolation onto a
 // regular grid (vtkSPHInterpolator, quintic kernel), contouring (vtkFlyingEdges3D), and keeping
 // the connected piece nearest each seed (vtkPolyDataConnectivityFilter). The benchmark runs it

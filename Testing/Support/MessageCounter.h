@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Counts the error or warning events of a VTK object and keeps the last message, so that tests
 // can require a message without printing it:
 //   vtkNew<lsi::test::MessageCounter> errors;

@@ -26,14 +26,14 @@ namespace cases
 struct SurfaceMetrics
 {
   std::size_t Isopoints = 0;
-  double MeanDistance = 0.0;        // the paper's L
+  double MeanDistance = 0.0; // the paper's L
   double Percentile99Distance = 0.0;
   double MeanNormalAngleDegrees = 0.0;
   double MaxNormalLengthError = 0.0; // max | |n| - 1 |
   std::size_t UnseededIsopoints = 0; // isopoints on components that the seeds do not meet
-  std::size_t SurfaceProbes = 0;      // exact surface points of seeded components checked
-  double MaxGapToIsopoint = 0.0;      // the farthest any of them is from an isopoint
-  double CoveredFraction = 0.0;       // fraction within `coverageRadius`
+  std::size_t SurfaceProbes = 0;     // exact surface points of seeded components checked
+  double MaxGapToIsopoint = 0.0;     // the farthest any of them is from an isopoint
+  double CoveredFraction = 0.0;      // fraction within `coverageRadius`
 };
 
 /// `points`, `normals`: 3 per isopoint. `samples`: the sample positions (exact surface probes

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The tests' one assertion: a failed check prints what failed and is counted, and the test
 // goes on so that one run reports every failure.
 #ifndef TestCheck_h
