@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "LevelSetDataRefinement.h"
+#include "LevelSetIsopoints.h"
 
 #include "LevelSetMLSFit.h"
 

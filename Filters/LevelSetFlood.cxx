@@ -19,7 +19,6 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
   const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  const int stride = geometry.Stride;
   std::vector<char> inside(n, 0);
   std::vector<std::uint32_t> queue;
   for (std::size_t i = 0; i < n; ++i)
@@ -31,18 +30,17 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
     }
   }
   result.SeedSamples = queue.size();
-  for (std::size_t head = 0; head < queue.size() && !stop.Stop(); ++head)
-  {
-    const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
-    for (int m = 1; m < stride; ++m)
-    {
-      if (!inside[ids[m]] && dataOffsets[ids[m]] > 0.0)
+  BreadthFirst(
+    geometry, queue,
+    [&](std::uint32_t j) {
+      if (inside[j] || !(dataOffsets[j] > 0.0))
       {
-        inside[ids[m]] = 1;
-        queue.push_back(ids[m]);
+        return Visit::Skip;
       }
-    }
-  }
+      inside[j] = 1;
+      return Visit::Enqueue;
+    },
+    &stop);
   result.InsideSamples = queue.size();
   return inside;
 }
@@ -73,39 +71,27 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
       }
       pocket.assign(1, start);
       visited[start] = 1;
-      bool isLarge = false;
-      for (std::size_t head = 0; head < pocket.size() && !isLarge; ++head)
-      {
-        const std::uint32_t* ids = geometry.NeighborsOf(pocket[head]);
-        for (int m = 1; m < stride; ++m)
+      const bool isLarge = !BreadthFirst(geometry, pocket, [&](std::uint32_t j) {
+        if (inside[j] || visited[j])
         {
-          const std::uint32_t j = ids[m];
-          if (inside[j] || visited[j])
-          {
-            continue;
-          }
-          if (large[j] || pocket.size() >= bubbleSize)
-          {
-            isLarge = true;
-            break;
-          }
-          visited[j] = 1;
-          pocket.push_back(j);
+          return Visit::Skip;
         }
-      }
+        if (large[j] || pocket.size() >= bubbleSize)
+        {
+          return Visit::Stop;
+        }
+        visited[j] = 1;
+        return Visit::Enqueue;
+      });
+      // A large pocket is remembered, so later searches stop on meeting it; a small one is
+      // filled.
+      std::vector<char>& mark = isLarge ? large : inside;
       for (std::uint32_t j : pocket)
       {
         visited[j] = 0;
-        if (isLarge)
-        {
-          large[j] = 1;
-        }
-        else
-        {
-          inside[j] = 1;
-          ++result.FilledBubbles;
-        }
+        mark[j] = 1;
       }
+      result.FilledBubbles += isLarge ? 0 : pocket.size();
     }
   }
 }

@@ -209,7 +209,6 @@ std::vector<double> WithoutSpuriousPockets(
   const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double> phi)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  const int stride = geometry.Stride;
   auto positive = [&](std::size_t i) { return phi[i] > 0.0; };
   auto disagrees = [&](std::size_t i) { return positive(i) != (dataOffsets[i] > 0.0); };
   std::vector<char> state(n, 0); // 1: in the region being searched, 2: done
@@ -224,27 +223,21 @@ std::vector<double> WithoutSpuriousPockets(
     region.assign(1, static_cast<std::uint32_t>(start));
     state[start] = 1;
     bool pocket = true;
-    for (std::size_t head = 0; head < region.size(); ++head)
-    {
-      const std::uint32_t* ids = geometry.NeighborsOf(region[head]);
-      for (int m = 1; m < stride; ++m)
+    BreadthFirst(geometry, region, [&](std::uint32_t j) {
+      if (positive(j) != positive(start) || state[j] == 1)
       {
-        const std::uint32_t j = ids[m];
-        if (positive(j) != positive(start) || state[j] == 1)
-        {
-          continue;
-        }
-        if (!disagrees(j) || state[j] == 2)
-        {
-          // The region reaches a sample the data support (or, through a one-way neighbour
-          // link, a region already decided): leave it as it is.
-          pocket = false;
-          continue;
-        }
-        state[j] = 1;
-        region.push_back(j);
+        return Visit::Skip;
       }
-    }
+      if (!disagrees(j) || state[j] == 2)
+      {
+        // The region reaches a sample the data support (or, through a one-way neighbour
+        // link, a region already decided): leave it as it is.
+        pocket = false;
+        return Visit::Skip;
+      }
+      state[j] = 1;
+      return Visit::Enqueue;
+    });
     for (std::uint32_t i : region)
     {
       state[i] = 2;

@@ -1,9 +1,10 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Step 5 of the method, isopoints (paper §6): rough points at the zero crossings of phi between
-// neighbouring samples (filtered by an angle criterion), projected by Newton's method onto the
-// zero level of the MLS approximation of phi (eq. 14). Completion (LevelSetCompletion.h) and the
-// refinement on the data (LevelSetDataRefinement.h) then add to and move these points.
+// Steps 5-7 of the method, the isopoint stage. Step 5 (LevelSetIsopoints.cxx, paper §6): rough
+// points at the zero crossings of phi between neighbouring samples (filtered by an angle
+// criterion), projected by Newton's method onto the zero level of the MLS approximation of phi
+// (eq. 14). Step 6 (LevelSetCompletion.cxx, paper Fig. 3): completion on tangent planes. Step 7
+// (LevelSetDataRefinement.cxx, ours): the refinement on the data.
 #ifndef LevelSetIsopoints_h
 #define LevelSetIsopoints_h
 
@@ -60,7 +61,23 @@ std::vector<double> WithoutSpuriousPockets(
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 
-// Pieces shared with the completion.
+/// Step 6, completion: around each isopoint, the empty cells of a small grid on its tangent
+/// plane (Numerics/TangentPlaneCompletion.h) propose new points, projected onto the zero level
+/// like the isopoints themselves, so that the set renders without holes. They are added to
+/// `out`, thinned with it (existing isopoints keep their voxels). `phi` is the level set the
+/// isopoints were extracted from. Returns false only when aborted.
+bool CompleteIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+
+/// Step 7, refinement on the data: the level set only uses the sign of f - f_iso, which places
+/// the surface to a fraction of the spacing. Each isopoint of `out` slides along its normal to
+/// the zero of the MLS fit of `dataOffsets` (f - f_iso per sample) over DataFitScale (n + 1)
+/// samples, at most DataMaximumMove (Numerics/IsopointRefinement.h, SlideOntoDataLevel), and
+/// takes its normal from that fit. Returns false only when aborted.
+bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+
+// Pieces shared by the three steps.
 
 /// Indices of the points (3 doubles each) that come first, in input order, in their cubic voxel
 /// of side `cell`: removes near-duplicates deterministically and bounds the output's density.

@@ -99,6 +99,44 @@ struct Neighborhoods
   const double* Position(std::size_t i) const { return &this->Positions[3 * i]; }
 };
 
+/// What a breadth-first search over the neighbour graph does with a neighbour it meets.
+enum class Visit
+{
+  Skip,    // leave it
+  Enqueue, // append it to the queue (the decision marks it, so it is not met again)
+  Stop     // end the search
+};
+
+/// Breadth-first search over the neighbour graph: for each sample of `queue` in turn (the
+/// starting samples first, then those appended), `decide(j)` for each of its neighbours j.
+/// Returns false when `decide` stopped it or `stop` said to abort.
+template <typename Decide>
+bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& queue, Decide&& decide,
+  SerialAbortCheck* stop = nullptr)
+{
+  for (std::size_t head = 0; head < queue.size(); ++head)
+  {
+    if (stop && stop->Stop())
+    {
+      return false;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      const Visit visit = decide(ids[m]);
+      if (visit == Visit::Stop)
+      {
+        return false;
+      }
+      if (visit == Visit::Enqueue)
+      {
+        queue.push_back(ids[m]);
+      }
+    }
+  }
+  return true;
+}
+
 /// Builds everything from the points. Returns false only when aborted.
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted);

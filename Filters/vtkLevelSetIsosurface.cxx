@@ -2,9 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLevelSetIsosurface.h"
 
-#include "LevelSetCompletion.h"
 #include "LevelSetConvergenceTable.h"
-#include "LevelSetDataRefinement.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetInput.h"
@@ -30,6 +28,7 @@
 #include "vtkTable.h"
 
 #include <cstdint>
+#include <utility>
 
 vtkStandardNewMacro(vtkLevelSetIsosurface);
 
@@ -396,35 +395,33 @@ bool vtkLevelSetIsosurface::ProgressOrAbort(double progress)
 void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "SeedCenter: (" << this->SeedCenter[0] << ", " << this->SeedCenter[1] << ", "
      << this->SeedCenter[2] << ")\n";
-  os << indent << "SeedRadius: " << this->SeedRadius << "\n";
   os << indent << "NumberOfAdditionalSeeds: " << this->GetNumberOfAdditionalSeeds() << "\n";
-  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
-  os << indent << "Epsilon: " << this->Epsilon << "\n";
-  os << indent << "CurvatureEpsilon: " << this->CurvatureEpsilon << "\n";
-  os << indent << "TimeStep: " << this->TimeStep << "\n";
-  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
-  os << indent << "ReinitializationSteps: " << this->ReinitializationSteps << "\n";
-  os << indent << "DistanceRegularization: " << this->DistanceRegularization << "\n";
-  os << indent << "EvolutionScheme: " << this->EvolutionScheme << "\n";
-  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
-  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
-  os << indent << "DataRefinement: " << (this->DataRefinement ? "On" : "Off") << "\n";
-  os << indent << "Initialization: " << this->Initialization << "\n";
-  os << indent << "Completion: " << (this->Completion ? "On" : "Off") << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
-  os << indent << "OutputType: " << this->OutputType << "\n";
-  os << indent << "SplatScale: " << this->SplatScale << "\n";
-  os << indent << "SplatSides: " << this->SplatSides << "\n";
-  os << indent << "InterpolateArrays: " << (this->InterpolateArrays ? "On" : "Off") << "\n";
-  os << indent << "NeighborCacheSize: " << this->NeighborCacheSize << "\n";
-  os << indent << "NeighborSearchCount: " << this->NeighborSearchCount << "\n";
-  os << indent << "NumberOfIterationsPerformed: " << this->NumberOfIterationsPerformed << "\n";
-  os << indent << "Converged: " << this->Converged << "\n";
-  os << indent << "MeanSampleSpacing: " << this->MeanSampleSpacing << "\n";
-  os << indent << "EffectiveEpsilon: " << this->EffectiveEpsilon << "\n";
-  os << indent << "EffectiveCurvatureEpsilon: " << this->EffectiveCurvatureEpsilon << "\n";
-  os << indent << "EffectiveTimeStep: " << this->EffectiveTimeStep << "\n";
+  // Every other member, by name: parameters first, then the last execution's results.
+  const std::pair<const char*, double> members[] = { { "IsoValue", this->IsoValue },
+    { "SeedRadius", this->SeedRadius }, { "NumberOfNeighbors", this->NumberOfNeighbors },
+    { "Epsilon", this->Epsilon }, { "CurvatureEpsilon", this->CurvatureEpsilon },
+    { "TimeStep", this->TimeStep }, { "CurvatureWeight", this->CurvatureWeight },
+    { "ReinitializationSteps", this->ReinitializationSteps },
+    { "DistanceRegularization", this->DistanceRegularization },
+    { "EvolutionScheme", this->EvolutionScheme },
+    { "MaximumNumberOfIterations", this->MaximumNumberOfIterations },
+    { "ConvergenceTolerance", this->ConvergenceTolerance },
+    { "DataRefinement", this->DataRefinement }, { "Initialization", this->Initialization },
+    { "Completion", this->Completion }, { "NumberOfThreads", this->NumberOfThreads },
+    { "OutputType", this->OutputType }, { "SplatScale", this->SplatScale },
+    { "SplatSides", this->SplatSides }, { "InterpolateArrays", this->InterpolateArrays },
+    { "NeighborCacheSize", this->NeighborCacheSize },
+    { "NeighborSearchCount", this->NeighborSearchCount },
+    { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
+    { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },
+    { "Converged", this->Converged }, { "MeanSampleSpacing", this->MeanSampleSpacing },
+    { "EffectiveEpsilon", this->EffectiveEpsilon },
+    { "EffectiveCurvatureEpsilon", this->EffectiveCurvatureEpsilon },
+    { "EffectiveTimeStep", this->EffectiveTimeStep } };
+  for (const auto& member : members)
+  {
+    os << indent << member.first << ": " << member.second << "\n";
+  }
 }

@@ -330,25 +330,16 @@ protected:
   bool InterpolateArrays = true;
   int NeighborCacheSize = 4;
 
-  int NeighborSearchCount = 0;
+  // Read-only results of the last execution (see the getters).
+  int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0;
   vtkIdType NumberOfIsopoints = 0;
-  int NumberOfIterationsPerformed = 0;
   bool Converged = false;
-  double MeanSampleSpacing = 0.0;
-  double EffectiveEpsilon = 0.0;
-  double EffectiveCurvatureEpsilon = 0.0;
-  double EffectiveTimeStep = 0.0;
-  double NeighborSearchSeconds = 0.0;
-  double SpatialSortSeconds = 0.0;
-  double NearestNeighborSeconds = 0.0;
-  double TreeBuildSeconds = 0.0;
-  double StencilSeconds = 0.0;
-  double InitializationSeconds = 0.0;
-  double EvolutionSeconds = 0.0;
-  double IsopointSeconds = 0.0;
-  double CompletionSeconds = 0.0;
-  double DataRefinementSeconds = 0.0;
-  double OutputSeconds = 0.0;
+  double MeanSampleSpacing = 0.0, EffectiveEpsilon = 0.0, EffectiveCurvatureEpsilon = 0.0,
+         EffectiveTimeStep = 0.0;
+  double NeighborSearchSeconds = 0.0, SpatialSortSeconds = 0.0, NearestNeighborSeconds = 0.0,
+         TreeBuildSeconds = 0.0, StencilSeconds = 0.0, InitializationSeconds = 0.0,
+         EvolutionSeconds = 0.0, IsopointSeconds = 0.0, CompletionSeconds = 0.0,
+         DataRefinementSeconds = 0.0, OutputSeconds = 0.0;
 
 private:
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
