@@ -2,22 +2,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkTipsyParticleReader.h"
 
-#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkTipsyParticleReader);
@@ -93,22 +90,24 @@ bool ReadHeader(std::ifstream& file, TipsyHeader& header, std::string& problem)
   problem = "not a Tipsy standard file (inconsistent header or truncated particle data)";
   return false;
 }
+// The three record layouts of a Tipsy standard file, in file order: which float of a record
+// holds what (position at 1-3 and velocity at 4-6 in all of them).
+struct Layout
+{
+  const char* TypeName;
+  int Floats;
+  std::vector<std::pair<const char*, int>> Scalars;
+};
+const Layout Layouts[3] = {
+  { "Gas", 12,
+    { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
+      { "phi", 11 } } },
+  { "DarkMatter", 9, { { "mass", 0 }, { "eps", 7 }, { "phi", 8 } } },
+  { "Stars", 11, { { "mass", 0 }, { "metals", 7 }, { "tform", 8 }, { "eps", 9 }, { "phi", 10 } } },
+};
 } // namespace
 
-vtkTipsyParticleReader::vtkTipsyParticleReader()
-{
-  this->SetNumberOfInputPorts(0);
-}
-
-void vtkTipsyParticleReader::SetFileName(const char* name)
-{
-  const std::string value = name ? name : "";
-  if (value != this->FileName)
-  {
-    this->FileName = value;
-    this->Modified();
-  }
-}
+vtkTipsyParticleReader::vtkTipsyParticleReader() = default;
 
 bool vtkTipsyParticleReader::CanReadFile(const char* name)
 {
@@ -118,103 +117,115 @@ bool vtkTipsyParticleReader::CanReadFile(const char* name)
   return file && ReadHeader(file, header, problem);
 }
 
-int vtkTipsyParticleReader::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+bool vtkTipsyParticleReader::ReadMetaData(
+  std::vector<ParticleType>& types, double& time, vtkFieldData* fields, std::string& problem)
 {
   std::ifstream file(this->FileName, std::ios::binary);
   TipsyHeader header;
-  std::string problem;
-  if (!file || !ReadHeader(file, header, problem))
-  {
-    return 1; // RequestData reports the problem
-  }
-  // One time step: the file's own (a series of files gets its steps from the series reader).
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), &header.Time, 1);
-  const double range[2] = { header.Time, header.Time };
-  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  return 1;
-}
-
-int vtkTipsyParticleReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  std::ifstream file(this->FileName, std::ios::binary);
   if (!file)
   {
-    vtkErrorMacro("Cannot open the file '" << this->FileName << "'.");
-    return 0;
+    problem = "cannot open the file";
+    return false;
   }
-  TipsyHeader header;
-  std::string problem;
   if (!ReadHeader(file, header, problem))
   {
-    vtkErrorMacro("'" << this->FileName << "': " << problem << ".");
-    return 0;
+    return false;
   }
-  const vtkIdType n = header.Gas;
-  std::vector<char> bytes(static_cast<std::size_t>(n) * 48);
-  file.seekg(32);
-  if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+  time = header.Time;
+  this->BigEndian = header.BigEndian;
+  const long long counts[3] = { header.Gas, header.Dark, header.Stars };
+  long long offset = 32;
+  this->TypeKinds.clear();
+  this->TypeOffsets.clear();
+  for (int k = 0; k < 3; ++k)
   {
-    vtkErrorMacro("'" << this->FileName << "': could not read " << n << " gas particles.");
-    return 0;
+    if (counts[k] > 0)
+    {
+      ParticleType type;
+      type.Name = Layouts[k].TypeName;
+      type.Count = counts[k];
+      type.SelectedByDefault = types.empty(); // gas, or the first type there is
+      types.push_back(type);
+      this->TypeKinds.push_back(k);
+      this->TypeOffsets.push_back(offset);
+    }
+    offset += 4LL * Layouts[k].Floats * counts[k];
+  }
+  vtkNew<vtkDoubleArray> timeField;
+  timeField->SetName("Time");
+  timeField->InsertNextValue(header.Time);
+  fields->AddArray(timeField);
+  if (types.empty())
+  {
+    problem = "the file holds no particles";
+    return false;
+  }
+  return true;
+}
+
+bool vtkTipsyParticleReader::ReadParticles(
+  std::size_t type, long long begin, long long end, vtkPolyData* output, std::string& problem)
+{
+  const Layout& layout = Layouts[this->TypeKinds[type]];
+  const std::size_t record = 4 * static_cast<std::size_t>(layout.Floats);
+  const vtkIdType n = static_cast<vtkIdType>(end - begin);
+  std::ifstream file(this->FileName, std::ios::binary);
+  std::vector<char> bytes(static_cast<std::size_t>(n) * record);
+  file.seekg(this->TypeOffsets[type] + begin * static_cast<long long>(record));
+  if (!file || !file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+  {
+    problem = "could not read " + std::to_string(n) + " particles (truncated file?)";
+    return false;
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(n);
-  const char* names[] = { "mass", "rho", "temp", "hsmooth", "metals", "phi" };
-  const int columns[] = { 0, 7, 8, 9, 10, 11 };
-  std::vector<vtkNew<vtkFloatArray>> scalars(6);
-  for (int a = 0; a < 6; ++a)
+  const std::size_t columns = layout.Scalars.size();
+  std::vector<vtkNew<vtkFloatArray>> scalars(columns);
+  for (std::size_t a = 0; a < columns; ++a)
   {
-    scalars[a]->SetName(names[a]);
+    scalars[a]->SetName(layout.Scalars[a].first);
     scalars[a]->SetNumberOfValues(n);
   }
   vtkNew<vtkFloatArray> velocity;
   velocity->SetName("velocity");
   velocity->SetNumberOfComponents(3);
   velocity->SetNumberOfTuples(n);
+  std::vector<float> v(layout.Floats);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    float v[12];
-    for (int c = 0; c < 12; ++c)
+    for (int c = 0; c < layout.Floats; ++c)
     {
-      v[c] = FromBytes<float>(&bytes[48 * i + 4 * c], header.BigEndian);
+      v[c] = FromBytes<float>(&bytes[record * i + 4 * c], this->BigEndian);
     }
     points->SetPoint(i, v[1], v[2], v[3]);
-    velocity->SetTypedTuple(i, v + 4);
-    for (int a = 0; a < 6; ++a)
+    velocity->SetTypedTuple(i, &v[4]);
+    for (std::size_t a = 0; a < columns; ++a)
     {
-      scalars[a]->SetValue(i, v[columns[a]]);
+      scalars[a]->SetValue(i, v[layout.Scalars[a].second]);
     }
   }
   output->SetPoints(points);
-  // One vertex cell per particle, so that ParaView draws them.
-  vtkNew<vtkIdTypeArray> vertexIds;
-  vertexIds->SetNumberOfValues(n);
-  std::iota(vertexIds->Begin(), vertexIds->End(), vtkIdType(0));
-  vtkNew<vtkCellArray> vertices;
-  vertices->SetData(1, vertexIds);
-  output->SetVerts(vertices);
   for (auto& array : scalars)
   {
     output->GetPointData()->AddArray(array);
   }
   output->GetPointData()->AddArray(velocity);
-  output->GetPointData()->SetActiveScalars("rho");
-  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), header.Time);
-  if (header.Dark + header.Stars > 0)
+  if (output->GetPointData()->GetArray("rho"))
   {
-    vtkWarningMacro("'" << this->FileName << "': skipped " << header.Dark << " dark and "
-                        << header.Stars << " star particles (only gas is read).");
+    output->GetPointData()->SetActiveScalars("rho");
+    vtkNew<vtkStringArray> density, smoothingLength;
+    density->SetName("DensityArray");
+    density->InsertNextValue("rho");
+    smoothingLength->SetName("SmoothingLengthArray");
+    smoothingLength->InsertNextValue("hsmooth");
+    output->GetFieldData()->AddArray(density);
+    output->GetFieldData()->AddArray(smoothingLength);
   }
-  return 1;
+  return true;
 }
 
 void vtkTipsyParticleReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << this->FileName << "\n";
 }

@@ -2,36 +2,32 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTipsyParticleReader
- * @brief   Reads the gas (SPH) particles of a Tipsy "standard" binary file.
+ * @brief   Reads the gas, dark-matter and star particles of a Tipsy "standard" binary file.
  *
  * Tipsy standard files (used by ChaNGa, Gasoline, PKDGRAV) hold a 32-byte header (double time;
  * int32 nbodies, ndim, nsph, ndark, nstar; 4 bytes padding), then nsph gas particles of 12
- * float32 each (mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi), then the dark and
- * star particles. The standard byte order is big-endian (XDR); little-endian files are
- * recognised from their header. The output is the gas particles as vertices with the point
- * arrays mass, velocity, rho, temp, hsmooth, metals and phi, stamped with the file's time.
- * Dark-matter and star particles are skipped: isosurfaces are of the gas.
+ * float32 each (mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi), ndark dark-matter
+ * particles of 9 (mass, x, y, z, vx, vy, vz, eps, phi) and nstar star particles of 11 (mass, x,
+ * y, z, vx, vy, vz, metals, tform, eps, phi). The standard byte order is big-endian (XDR);
+ * little-endian files are recognised from their header. Each type's columns become point
+ * arrays (velocity as a vector), gas's rho the active scalars. Particle types ("Gas",
+ * "DarkMatter", "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h
 
 #include "LevelSetIsosurfaceIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkParticleSnapshotReader.h"
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
-class LEVELSETISOSURFACEIO_EXPORT vtkTipsyParticleReader : public vtkPolyDataAlgorithm
+class LEVELSETISOSURFACEIO_EXPORT vtkTipsyParticleReader : public vtkParticleSnapshotReader
 {
 public:
   static vtkTipsyParticleReader* New();
-  vtkTypeMacro(vtkTipsyParticleReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkTipsyParticleReader, vtkParticleSnapshotReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The Tipsy file to read. */
-  void SetFileName(const char* name);
-  const char* GetFileName() const { return this->FileName.c_str(); }
-  ///@}
 
   /** Whether the file looks like a Tipsy standard file (a consistent header and size). */
   static bool CanReadFile(const char* name);
@@ -40,14 +36,18 @@ protected:
   vtkTipsyParticleReader();
   ~vtkTipsyParticleReader() override = default;
 
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  std::string FileName;
+  bool ReadMetaData(std::vector<ParticleType>& types, double& time, vtkFieldData* fields,
+    std::string& problem) override;
+  bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
+    std::string& problem) override;
 
 private:
   vtkTipsyParticleReader(const vtkTipsyParticleReader&) = delete;
   void operator=(const vtkTipsyParticleReader&) = delete;
+
+  bool BigEndian = true;
+  std::vector<int> TypeKinds;         // 0 gas, 1 dark, 2 star, per listed type
+  std::vector<long long> TypeOffsets; // byte offset of each listed type's first record
 };
 
 #endif

@@ -6,11 +6,11 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 packages=(cmake g++ make paraview-dev paraview python3-paraview libeigen3-dev qtbase5-dev
-  libqt5svg5-dev qttools5-dev libqt5opengl5-dev qtxmlpatterns5-dev-tools libutfcpp-dev libhdf5-dev
+  libqt5svg5-dev qttools5-dev libqt5opengl5-dev qtxmlpatterns5-dev-tools libutfcpp-dev libhdf5-dev libhdf5-openmpi-dev
   libnetcdf-dev libogg-dev libtheora-dev libgl2ps-dev libglew-dev libproj-dev liblz4-dev liblzma-dev
   libdouble-conversion-dev libexpat1-dev libfreetype-dev libjpeg-dev libpng-dev libtiff-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libswresample-dev libgdal-dev
-  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy clang-format git)
+  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy python3-h5py clang-format git)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -10,10 +10,13 @@
 #include "TestCheck.h"
 
 #include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
 
 #include <algorithm>
@@ -63,10 +66,16 @@ private:
   bool BigEndian;
 };
 
-// Gas particle i: mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi.
+// Column `column` of particle i of kind k (0 gas: mass, x, y, z, vx, vy, vz, rho, temp,
+// hsmooth, metals, phi; 1 dark: mass, x, y, z, vx, vy, vz, eps, phi; 2 star: mass, x, y, z, vx,
+// vy, vz, metals, tform, eps, phi).
+float Value(int kind, int i, int column)
+{
+  return static_cast<float>(kind * 100 + (i + 1) * 10) + static_cast<float>(column) * 0.5f;
+}
 float GasValue(int i, int column)
 {
-  return static_cast<float>(i + 1) * 10.0f + static_cast<float>(column) * 0.5f;
+  return Value(0, i, column);
 }
 
 constexpr int GasCount = 3, DarkCount = 2, StarCount = 1;
@@ -90,9 +99,19 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
         w.Put<float>(GasValue(i, c));
       }
     }
-    for (int i = 0; i < 9 * DarkCount + 11 * StarCount; ++i)
+    for (int i = 0; i < DarkCount; ++i)
     {
-      w.Put<float>(-1.0f); // dark and star particles, which the reader skips
+      for (int c = 0; c < 9; ++c)
+      {
+        w.Put<float>(Value(1, i, c));
+      }
+    }
+    for (int i = 0; i < StarCount; ++i)
+    {
+      for (int c = 0; c < 11; ++c)
+      {
+        w.Put<float>(Value(2, i, c));
+      }
     }
   }
   if (droppedBytes > 0)
@@ -116,12 +135,14 @@ void TestKnownParticles(bool bigEndian)
   vtkNew<MessageCounter> warnings;
   reader->AddObserver(vtkCommand::WarningEvent, warnings);
   reader->Update();
-  vtkPolyData* out = reader->GetOutput();
-  Check(out->GetNumberOfPoints() == GasCount, order + ": only the gas particles are read");
+  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(out && out->GetNumberOfPoints() == GasCount, order + ": by default the gas particles");
+  if (!out)
+  {
+    return;
+  }
   Check(out->GetNumberOfVerts() == GasCount, order + ": one vertex per particle");
-  Check(
-    warnings->Count == 1 && warnings->Last.find("skipped 2 dark and 1 star") != std::string::npos,
-    order + ": a warning names the skipped particles (got: " + warnings->Last + ")");
+  Check(warnings->Count == 0, order + ": no warning (got: " + warnings->Last + ")");
   Check(std::abs(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) - FileTime) < 1e-12,
     order + ": the file's time");
   double worst = 0.0;
@@ -159,6 +180,57 @@ void TestKnownParticles(bool bigEndian)
   Check(out->GetPointData()->GetScalars() &&
       std::string(out->GetPointData()->GetScalars()->GetName()) == "rho",
     order + ": rho is the active scalar");
+
+  // All three types: a multiblock, one named block per type, every column in its array.
+  Check(reader->GetNumberOfParticleTypeArrays() == 3, order + ": three particle types listed");
+  reader->SetParticleTypeStatus("DarkMatter", 1);
+  reader->SetParticleTypeStatus("Stars", 1);
+  reader->Update();
+  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  Check(blocks && blocks->GetNumberOfBlocks() == 3, order + ": three blocks for three types");
+  if (!blocks || blocks->GetNumberOfBlocks() != 3)
+  {
+    return;
+  }
+  const char* typeNames[] = { "Gas", "DarkMatter", "Stars" };
+  const int counts[] = { GasCount, DarkCount, StarCount };
+  const std::vector<std::pair<const char*, int>> columnsOf[] = {
+    { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
+      { "phi", 11 } },
+    { { "mass", 0 }, { "eps", 7 }, { "phi", 8 } },
+    { { "mass", 0 }, { "metals", 7 }, { "tform", 8 }, { "eps", 9 }, { "phi", 10 } },
+  };
+  worst = 0.0;
+  for (unsigned int k = 0; k < 3; ++k)
+  {
+    vtkPolyData* block = vtkPolyData::SafeDownCast(blocks->GetBlock(k));
+    const char* name = blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME());
+    Check(name && std::string(name) == typeNames[k], order + ": block named " + typeNames[k]);
+    Check(
+      block && block->GetNumberOfPoints() == counts[k] && block->GetNumberOfVerts() == counts[k],
+      order + ": " + typeNames[k] + " has its particles as vertices");
+    if (!block || block->GetNumberOfPoints() != counts[k])
+    {
+      continue;
+    }
+    for (int i = 0; i < counts[k]; ++i)
+    {
+      double x[3];
+      block->GetPoint(i, x);
+      for (int d = 0; d < 3; ++d)
+      {
+        worst = std::max(worst, std::abs(x[d] - Value(k, i, 1 + d)));
+      }
+      for (const auto& column : columnsOf[k])
+      {
+        vtkDataArray* array = block->GetPointData()->GetArray(column.first);
+        worst = array ? std::max(worst, std::abs(array->GetTuple1(i) - Value(k, i, column.second)))
+                      : HUGE_VAL;
+      }
+    }
+  }
+  Check(worst == 0.0,
+    order + ": all three types read back exactly (worst error " + std::to_string(worst) + ")");
   std::remove(path.c_str());
 }
 
@@ -175,7 +247,7 @@ void TestBadFiles()
   const std::string text = "tipsy_test_text.std";
   std::ofstream(text) << "this is not a Tipsy file, only a line of text that is long enough\n";
   const Case cases[] = {
-    { "missing file", "no_such_file.std", "Cannot open" },
+    { "missing file", "no_such_file.std", "cannot open" },
     { "truncated file", truncated, "not a Tipsy standard file" },
     { "text file", text, "not a Tipsy standard file" },
   };
@@ -189,7 +261,8 @@ void TestBadFiles()
     reader->Update();
     Check(errors->Count > 0 && errors->Last.find(c.Expected) != std::string::npos,
       c.What + ": error mentions '" + c.Expected + "' (got: " + errors->Last + ")");
-    Check(reader->GetOutput()->GetNumberOfPoints() == 0, c.What + ": empty output");
+    vtkPointSet* out = vtkPointSet::SafeDownCast(reader->GetOutput());
+    Check(out && out->GetNumberOfPoints() == 0, c.What + ": empty output");
   }
   std::remove(truncated.c_str());
   std::remove(text.c_str());
@@ -202,10 +275,14 @@ void TestRealFile(const std::string& path, vtkIdType expectedGas, double halfExt
   vtkNew<vtkTipsyParticleReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
-  vtkPolyData* out = reader->GetOutput();
-  Check(out->GetNumberOfPoints() == expectedGas,
-    path + ": " + std::to_string(out->GetNumberOfPoints()) + " gas particles, expected " +
-      std::to_string(expectedGas));
+  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(out && out->GetNumberOfPoints() == expectedGas,
+    path + ": " + std::to_string(out ? out->GetNumberOfPoints() : -1) +
+      " gas particles, expected " + std::to_string(expectedGas));
+  if (!out)
+  {
+    return;
+  }
   double bounds[6];
   out->GetBounds(bounds);
   bool inside = true;
@@ -214,6 +291,25 @@ void TestRealFile(const std::string& path, vtkIdType expectedGas, double halfExt
     inside = inside && std::isfinite(b) && std::abs(b) <= halfExtent;
   }
   Check(inside, path + ": coordinates within +-" + std::to_string(halfExtent));
+}
+// The galaxy snapshot has no gas: the first type there is (dark matter) is read by default,
+// and all types give the header's counts, 3,627 dark and 5,321 star particles.
+void TestGalaxy(const std::string& path)
+{
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* dark = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(dark && dark->GetNumberOfPoints() == 3627, path + ": dark matter by default (no gas)");
+  reader->SetParticleTypeStatus("Stars", 1);
+  reader->Update();
+  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  Check(blocks && blocks->GetNumberOfBlocks() == 2 &&
+      vtkPolyData::SafeDownCast(blocks->GetBlock(0))->GetNumberOfPoints() == 3627 &&
+      vtkPolyData::SafeDownCast(blocks->GetBlock(1))->GetNumberOfPoints() == 5321 &&
+      vtkPolyData::SafeDownCast(blocks->GetBlock(1))->GetPointData()->GetArray("tform"),
+    path + ": 3627 dark and 5321 star particles, stars with tform");
+  std::cout << path << ": " << (blocks ? blocks->GetNumberOfPoints() : 0) << " particles\n";
 }
 } // namespace
 
@@ -224,13 +320,14 @@ int main(int argc, char* argv[])
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
   // in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).
-  if (argc != 3)
+  if (argc != 4)
   {
-    std::cerr << "usage: TestTipsyReader GLASS_FILE SHOCK_TUBE_FILE\n";
+    std::cerr << "usage: TestTipsyReader GLASS_FILE SHOCK_TUBE_FILE GALAXY_FILE\n";
     return EXIT_FAILURE;
   }
   TestRealFile(argv[1], 28721, 1.0 + 1e-6);
   TestRealFile(argv[2], 20000, 1.0 + 1e-6);
+  TestGalaxy(argv[3]);
   std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n"
                                       : "Tipsy reader tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;

@@ -1,0 +1,598 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkHDF5SnapshotReader.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtk_hdf5.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <set>
+
+vtkStandardNewMacro(vtkHDF5SnapshotReader);
+
+namespace
+{
+// HDF5 prints its own error stack on every failed call; a reader that probes files must not.
+// This turns the printing off for its lifetime and restores it afterwards.
+class QuietHDF5
+{
+public:
+  QuietHDF5()
+  {
+    H5Eget_auto2(H5E_DEFAULT, &this->Function, &this->Data);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHDF5() { H5Eset_auto2(H5E_DEFAULT, this->Function, this->Data); }
+
+private:
+  H5E_auto2_t Function = nullptr;
+  void* Data = nullptr;
+};
+
+// An HDF5 identifier closed by the given function when it goes out of scope.
+class Handle
+{
+public:
+  Handle(hid_t id, herr_t (*close)(hid_t))
+    : Id(id)
+    , Close(close)
+  {
+  }
+  ~Handle()
+  {
+    if (this->Id >= 0)
+    {
+      this->Close(this->Id);
+    }
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  bool Valid() const { return this->Id >= 0; }
+  operator hid_t() const { return this->Id; }
+
+private:
+  hid_t Id;
+  herr_t (*Close)(hid_t);
+};
+
+bool Exists(hid_t location, const std::string& name)
+{
+  return H5Lexists(location, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+// A numeric attribute as doubles (empty if absent or not numeric).
+std::vector<double> NumericAttribute(hid_t object, const char* name)
+{
+  std::vector<double> values;
+  if (H5Aexists(object, name) <= 0)
+  {
+    return values;
+  }
+  Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attribute), H5Tclose);
+  const H5T_class_t kind = H5Tget_class(type);
+  if (kind != H5T_INTEGER && kind != H5T_FLOAT)
+  {
+    return values;
+  }
+  Handle space(H5Aget_space(attribute), H5Sclose);
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  values.resize(count > 0 ? static_cast<std::size_t>(count) : 0);
+  if (values.empty() || H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) < 0)
+  {
+    values.clear();
+  }
+  return values;
+}
+
+// Every attribute of `object` as a field data array, named prefix + its name: numbers as
+// vtkDoubleArray, strings as vtkStringArray.
+void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData* fields)
+{
+  struct Context
+  {
+    std::string Prefix;
+    vtkFieldData* Fields;
+  } context{ prefix, fields };
+  auto visit = [](hid_t location, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    Context& c = *static_cast<Context*>(data);
+    Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
+    Handle type(H5Aget_type(attribute), H5Tclose);
+    const std::string fieldName = c.Prefix + name;
+    if (H5Tget_class(type) == H5T_STRING)
+    {
+      std::string value;
+      if (H5Tis_variable_str(type) > 0)
+      {
+        char* text = nullptr;
+        Handle memoryType(H5Tcopy(H5T_C_S1), H5Tclose);
+        H5Tset_size(memoryType, H5T_VARIABLE);
+        if (H5Aread(attribute, memoryType, &text) >= 0 && text)
+        {
+          value = text;
+          H5free_memory(text);
+        }
+      }
+      else
+      {
+        std::vector<char> text(H5Tget_size(type) + 1, '\0');
+        if (H5Aread(attribute, type, text.data()) >= 0)
+        {
+          value = text.data();
+        }
+      }
+      vtkNew<vtkStringArray> array;
+      array->SetName(fieldName.c_str());
+      array->InsertNextValue(value);
+      c.Fields->AddArray(array);
+      return 0;
+    }
+    const std::vector<double> values = NumericAttribute(location, name);
+    if (!values.empty())
+    {
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(fieldName.c_str());
+      for (double v : values)
+      {
+        array->InsertNextValue(v);
+      }
+      c.Fields->AddArray(array);
+    }
+    return 0;
+  };
+  hsize_t index = 0;
+  H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index, visit, &context);
+}
+
+// The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
+// of them. Empty if `file` is not named that way.
+std::vector<std::string> PartFileNames(const std::string& file, int parts)
+{
+  static const std::regex numbered(R"((.*)\.([0-9]+)\.(hdf5|h5|HDF5)$)");
+  std::smatch match;
+  std::vector<std::string> names;
+  if (std::regex_match(file, match, numbered))
+  {
+    for (int p = 0; p < parts; ++p)
+    {
+      names.push_back(match[1].str() + "." + std::to_string(p) + "." + match[3].str());
+    }
+  }
+  return names;
+}
+
+// The VTK array and the HDF5 memory type for a dataset's type; null for types we do not read.
+vtkSmartPointer<vtkDataArray> ArrayFor(hid_t type, hid_t& memoryType)
+{
+  const std::size_t size = H5Tget_size(type);
+  int vtkType = -1;
+  switch (H5Tget_class(type))
+  {
+    case H5T_FLOAT:
+      vtkType = size == 4 ? VTK_FLOAT : VTK_DOUBLE;
+      memoryType = size == 4 ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
+      break;
+    case H5T_INTEGER:
+    {
+      const bool isSigned = H5Tget_sign(type) == H5T_SGN_2;
+      if (size <= 1)
+      {
+        vtkType = isSigned ? VTK_TYPE_INT8 : VTK_TYPE_UINT8;
+        memoryType = isSigned ? H5T_NATIVE_INT8 : H5T_NATIVE_UINT8;
+      }
+      else if (size == 2)
+      {
+        vtkType = isSigned ? VTK_TYPE_INT16 : VTK_TYPE_UINT16;
+        memoryType = isSigned ? H5T_NATIVE_INT16 : H5T_NATIVE_UINT16;
+      }
+      else if (size == 4)
+      {
+        vtkType = isSigned ? VTK_TYPE_INT32 : VTK_TYPE_UINT32;
+        memoryType = isSigned ? H5T_NATIVE_INT32 : H5T_NATIVE_UINT32;
+      }
+      else
+      {
+        vtkType = isSigned ? VTK_TYPE_INT64 : VTK_TYPE_UINT64;
+        memoryType = isSigned ? H5T_NATIVE_INT64 : H5T_NATIVE_UINT64;
+      }
+      break;
+    }
+    default:
+      return nullptr;
+  }
+  return vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(vtkType));
+}
+
+// The names of the datasets directly in `group`.
+std::vector<std::string> DatasetNames(hid_t group)
+{
+  std::vector<std::string> names;
+  H5G_info_t info;
+  if (H5Gget_info(group, &info) < 0)
+  {
+    return names;
+  }
+  for (hsize_t i = 0; i < info.nlinks; ++i)
+  {
+    char name[1024] = { 0 };
+    if (H5Lget_name_by_idx(
+          group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT) < 0)
+    {
+      continue;
+    }
+    H5O_info_t object;
+    if (H5Oget_info_by_name(group, name, &object, H5P_DEFAULT) >= 0 &&
+      object.type == H5O_TYPE_DATASET)
+    {
+      names.push_back(name);
+    }
+  }
+  return names;
+}
+
+const char* const DensityNames[] = { "Density", "Densities" };
+const char* const SmoothingLengthNames[] = { "SmoothingLength", "SmoothingLengths" };
+
+template <std::size_t N>
+bool OneOf(const std::string& name, const char* const (&names)[N])
+{
+  return std::find(std::begin(names), std::end(names), name) != std::end(names);
+}
+} // namespace
+
+vtkHDF5SnapshotReader::vtkHDF5SnapshotReader() = default;
+vtkHDF5SnapshotReader::~vtkHDF5SnapshotReader() = default;
+
+std::string vtkHDF5SnapshotReader::ParticleTypeName(int number)
+{
+  static const char* const names[] = { "Gas", "DarkMatter", nullptr, nullptr, "Stars",
+    "BlackHoles" };
+  const std::string part = "PartType" + std::to_string(number);
+  return number >= 0 && number < 6 && names[number] ? std::string(names[number]) + " (" + part + ")"
+                                                    : part;
+}
+
+bool vtkHDF5SnapshotReader::CanReadFile(const char* name)
+{
+  QuietHDF5 quiet;
+  if (!name || H5Fis_hdf5(name) <= 0)
+  {
+    return false;
+  }
+  Handle file(H5Fopen(name, H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.Valid() || !Exists(file, "Header"))
+  {
+    return false;
+  }
+  for (int t = 0; t < 64; ++t)
+  {
+    if (Exists(file, "PartType" + std::to_string(t)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool vtkHDF5SnapshotReader::ReadMetaData(
+  std::vector<ParticleType>& types, double& time, vtkFieldData* fields, std::string& problem)
+{
+  QuietHDF5 quiet;
+  this->Parts.clear();
+  this->TypeNumbers.clear();
+  this->PartCounts.clear();
+  this->MassTable.clear();
+  {
+    std::ifstream exists(this->FileName);
+    if (!exists)
+    {
+      problem = "cannot open the file";
+      return false;
+    }
+  }
+  if (H5Fis_hdf5(this->FileName.c_str()) <= 0)
+  {
+    problem = "not an HDF5 file";
+    return false;
+  }
+  Handle file(H5Fopen(this->FileName.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.Valid())
+  {
+    problem = "the HDF5 library cannot open it (damaged or truncated?)";
+    return false;
+  }
+  if (!Exists(file, "Header"))
+  {
+    problem = "not a particle snapshot: no Header group";
+    return false;
+  }
+  Handle header(H5Gopen2(file, "Header", H5P_DEFAULT), H5Gclose);
+  AttributesToFieldData(header, "", fields);
+  for (const char* group : { "HydroScheme", "Units" })
+  {
+    if (Exists(file, group))
+    {
+      Handle g(H5Gopen2(file, group, H5P_DEFAULT), H5Gclose);
+      AttributesToFieldData(g, std::string(group) + "/", fields);
+    }
+  }
+  const std::vector<double> times = NumericAttribute(header, "Time");
+  time = times.empty() ? 0.0 : times[0];
+  this->MassTable = NumericAttribute(header, "MassTable");
+
+  // The files of the snapshot.
+  const std::vector<double> files = NumericAttribute(header, "NumFilesPerSnapshot");
+  const int parts = files.empty() ? 1 : std::max(1, static_cast<int>(files[0]));
+  if (parts > 1)
+  {
+    this->Parts = PartFileNames(this->FileName, parts);
+    if (this->Parts.empty())
+    {
+      problem = "the snapshot is split over " + std::to_string(parts) +
+        " files (NumFilesPerSnapshot), but this file is not named NAME.K.hdf5";
+      return false;
+    }
+  }
+  else
+  {
+    this->Parts.push_back(this->FileName);
+  }
+
+  // The particle count of every type in every part (NumPart_ThisFile, or the groups' lengths).
+  std::vector<std::vector<long long>> counts; // [part][PartType number]
+  int numberOfTypes = 0;
+  for (const std::string& name : this->Parts)
+  {
+    if (!std::ifstream(name))
+    {
+      problem = "part " + name + " of the snapshot is missing";
+      return false;
+    }
+    Handle part(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!part.Valid() || !Exists(part, "Header"))
+    {
+      problem = "part " + name + " of the snapshot is not a readable snapshot file";
+      return false;
+    }
+    Handle partHeader(H5Gopen2(part, "Header", H5P_DEFAULT), H5Gclose);
+    std::vector<double> thisFile = NumericAttribute(partHeader, "NumPart_ThisFile");
+    std::vector<long long> partCounts;
+    for (int t = 0; t < 64; ++t)
+    {
+      long long count =
+        t < static_cast<int>(thisFile.size()) ? static_cast<long long>(thisFile[t]) : 0;
+      const std::string group = "PartType" + std::to_string(t);
+      if (thisFile.empty() && Exists(part, group + "/Coordinates"))
+      {
+        Handle coordinates(H5Dopen2(part, (group + "/Coordinates").c_str(), H5P_DEFAULT), H5Dclose);
+        Handle space(H5Dget_space(coordinates), H5Sclose);
+        hsize_t dims[2] = { 0, 0 };
+        H5Sget_simple_extent_dims(space, dims, nullptr);
+        count = static_cast<long long>(dims[0]);
+      }
+      if (count < 0)
+      {
+        problem = "negative particle count in NumPart_ThisFile";
+        return false;
+      }
+      if (count > 0 && !Exists(part, group))
+      {
+        problem = "NumPart_ThisFile counts " + std::to_string(count) + " particles of " + group +
+          " in " + name + ", which has no such group";
+        return false;
+      }
+      partCounts.push_back(count);
+      if (count > 0 || Exists(part, group))
+      {
+        numberOfTypes = std::max(numberOfTypes, t + 1);
+      }
+    }
+    counts.push_back(partCounts);
+  }
+  for (int t = 0; t < numberOfTypes; ++t)
+  {
+    long long total = 0;
+    for (const auto& partCounts : counts)
+    {
+      total += partCounts[t];
+    }
+    if (total == 0)
+    {
+      continue;
+    }
+    ParticleType type;
+    type.Name = ParticleTypeName(t);
+    type.Count = total;
+    type.SelectedByDefault = t == 0;
+    types.push_back(type);
+    this->TypeNumbers.push_back(t);
+  }
+  if (types.empty())
+  {
+    problem = "the snapshot holds no particles";
+    return false;
+  }
+  // No gas: select the first type there is, so that opening the file shows something.
+  if (this->TypeNumbers[0] != 0)
+  {
+    types[0].SelectedByDefault = true;
+  }
+  for (const auto& partCounts : counts)
+  {
+    std::vector<long long> listed;
+    for (int t : this->TypeNumbers)
+    {
+      listed.push_back(partCounts[t]);
+    }
+    this->PartCounts.push_back(listed);
+  }
+  return true;
+}
+
+bool vtkHDF5SnapshotReader::ReadParticles(
+  std::size_t type, long long begin, long long end, vtkPolyData* output, std::string& problem)
+{
+  QuietHDF5 quiet;
+  const int number = this->TypeNumbers[type];
+  const std::string group = "PartType" + std::to_string(number);
+  const long long count = end - begin;
+  std::vector<std::string> names;
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays;
+  long long filled = 0;    // particles of this range read so far
+  long long partStart = 0; // index of the part's first particle of this type in the snapshot
+  for (std::size_t p = 0; p < this->Parts.size() && filled < count; ++p)
+  {
+    const long long inPart = this->PartCounts[p][type];
+    const long long from = std::max(begin, partStart), to = std::min(end, partStart + inPart);
+    partStart += inPart;
+    if (from >= to)
+    {
+      continue;
+    }
+    Handle file(H5Fopen(this->Parts[p].c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    Handle particles(file.Valid() ? H5Gopen2(file, group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
+    if (!particles.Valid())
+    {
+      problem = "cannot open " + group + " in " + this->Parts[p];
+      return false;
+    }
+    const std::vector<std::string> here = DatasetNames(particles);
+    if (names.empty())
+    {
+      names = here;
+    }
+    else if (here != names)
+    {
+      problem = this->Parts[p] + " has other datasets in " + group + " than the first part";
+      return false;
+    }
+    arrays.resize(names.size());
+    for (std::size_t d = 0; d < names.size(); ++d)
+    {
+      Handle dataset(H5Dopen2(particles, names[d].c_str(), H5P_DEFAULT), H5Dclose);
+      Handle space(H5Dget_space(dataset), H5Sclose);
+      Handle fileType(H5Dget_type(dataset), H5Tclose);
+      const int rank = H5Sget_simple_extent_ndims(space);
+      hsize_t dims[2] = { 0, 1 };
+      if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0)
+      {
+        continue; // scalars or higher ranks are not per-particle arrays
+      }
+      if (static_cast<long long>(dims[0]) != inPart)
+      {
+        problem = "dataset " + group + "/" + names[d] + " in " + this->Parts[p] + " has " +
+          std::to_string(dims[0]) + " entries, but the file counts " + std::to_string(inPart) +
+          " particles of this type";
+        return false;
+      }
+      hid_t memoryType = -1;
+      if (!arrays[d])
+      {
+        arrays[d] = ArrayFor(fileType, memoryType);
+        if (!arrays[d])
+        {
+          continue; // compound or other types: not a numeric array
+        }
+        arrays[d]->SetName(names[d].c_str());
+        arrays[d]->SetNumberOfComponents(static_cast<int>(rank == 2 ? dims[1] : 1));
+        arrays[d]->SetNumberOfTuples(count);
+      }
+      else
+      {
+        ArrayFor(fileType, memoryType);
+      }
+      const hsize_t start[2] = { static_cast<hsize_t>(from - (partStart - inPart)), 0 };
+      const hsize_t extent[2] = { static_cast<hsize_t>(to - from), dims[1] };
+      H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, extent, nullptr);
+      Handle memory(H5Screate_simple(rank, extent, nullptr), H5Sclose);
+      void* target = arrays[d]->GetVoidPointer(filled * arrays[d]->GetNumberOfComponents());
+      if (H5Dread(dataset, memoryType, memory, space, H5P_DEFAULT, target) < 0)
+      {
+        problem =
+          "cannot read " + group + "/" + names[d] + " in " + this->Parts[p] + " (truncated file?)";
+        return false;
+      }
+    }
+    filled += to - from;
+  }
+
+  vtkPointData* pointData = output->GetPointData();
+  vtkNew<vtkPoints> points;
+  bool havePoints = false, haveMasses = false;
+  std::string density, smoothingLength;
+  for (vtkDataArray* array : arrays)
+  {
+    if (!array)
+    {
+      continue;
+    }
+    const std::string name = array->GetName();
+    if (name == "Coordinates" && array->GetNumberOfComponents() == 3)
+    {
+      points->SetData(array);
+      havePoints = true;
+      continue;
+    }
+    if (name == "ParticleIDs" && array->GetNumberOfComponents() == 1)
+    {
+      vtkNew<vtkIdTypeArray> ids;
+      ids->DeepCopy(array);
+      ids->SetName(name.c_str());
+      pointData->SetGlobalIds(ids);
+      continue;
+    }
+    pointData->AddArray(array);
+    haveMasses = haveMasses || name == "Masses";
+    density = OneOf(name, DensityNames) ? name : density;
+    smoothingLength = OneOf(name, SmoothingLengthNames) ? name : smoothingLength;
+  }
+  if (!havePoints)
+  {
+    problem = group + " has no Coordinates (N x 3) dataset";
+    return false;
+  }
+  output->SetPoints(points);
+  if (!haveMasses && number < static_cast<int>(this->MassTable.size()))
+  {
+    vtkNew<vtkDoubleArray> masses; // equal masses: the Header's MassTable entry
+    masses->SetName("Masses");
+    masses->SetNumberOfValues(count);
+    masses->Fill(this->MassTable[number]);
+    pointData->AddArray(masses);
+  }
+  vtkFieldData* fields = output->GetFieldData();
+  for (const auto& marker : { std::make_pair("DensityArray", density),
+         std::make_pair("SmoothingLengthArray", smoothingLength) })
+  {
+    if (!marker.second.empty())
+    {
+      vtkNew<vtkStringArray> name;
+      name->SetName(marker.first);
+      name->InsertNextValue(marker.second);
+      fields->AddArray(name);
+    }
+  }
+  if (!density.empty())
+  {
+    pointData->SetActiveScalars(density.c_str());
+  }
+  return true;
+}
+
+void vtkHDF5SnapshotReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Parts: " << this->Parts.size() << "\n";
+}

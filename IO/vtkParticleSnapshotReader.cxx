@@ -1,0 +1,234 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkParticleSnapshotReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArraySelection.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <numeric>
+
+vtkParticleSnapshotReader::vtkParticleSnapshotReader()
+{
+  this->SetNumberOfInputPorts(0);
+  // A changed selection changes the output: re-execute.
+  this->ParticleTypeSelection->AddObserver(
+    vtkCommand::ModifiedEvent, this, &vtkParticleSnapshotReader::Modified);
+}
+
+vtkParticleSnapshotReader::~vtkParticleSnapshotReader() = default;
+
+void vtkParticleSnapshotReader::SetFileName(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->FileName)
+  {
+    this->FileName = value;
+    this->Modified();
+  }
+}
+
+int vtkParticleSnapshotReader::GetNumberOfParticleTypeArrays()
+{
+  return this->ParticleTypeSelection->GetNumberOfArrays();
+}
+
+const char* vtkParticleSnapshotReader::GetParticleTypeArrayName(int index)
+{
+  return this->ParticleTypeSelection->GetArrayName(index);
+}
+
+int vtkParticleSnapshotReader::GetParticleTypeArrayStatus(const char* name)
+{
+  return this->ParticleTypeSelection->ArrayIsEnabled(name);
+}
+
+void vtkParticleSnapshotReader::SetParticleTypeStatus(const char* name, int status)
+{
+  this->ParticleTypeSelection->SetArraySetting(name, status);
+}
+
+vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
+{
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetNumberOfValues(count);
+  std::iota(ids->Begin(), ids->End(), vtkIdType(0));
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(1, ids);
+  return cells;
+}
+
+bool vtkParticleSnapshotReader::UpdateMetaData(bool force)
+{
+  if (!force && this->MetaDataFileName == this->FileName && this->MetaDataRead)
+  {
+    return this->MetaDataProblem.empty();
+  }
+  this->Types.clear();
+  this->Time = 0.0;
+  this->Fields->Initialize();
+  this->MetaDataProblem.clear();
+  if (this->FileName.empty())
+  {
+    this->MetaDataProblem = "no file name";
+  }
+  else if (!this->ReadMetaData(this->Types, this->Time, this->Fields, this->MetaDataProblem))
+  {
+    this->Types.clear();
+    if (this->MetaDataProblem.empty())
+    {
+      this->MetaDataProblem = "unreadable";
+    }
+  }
+  this->MetaDataFileName = this->FileName;
+  this->MetaDataRead = true;
+  // New types appear with their default; types the user already set keep their setting.
+  for (const ParticleType& type : this->Types)
+  {
+    if (!this->ParticleTypeSelection->ArrayExists(type.Name.c_str()))
+    {
+      this->ParticleTypeSelection->AddArray(type.Name.c_str(), type.SelectedByDefault);
+    }
+  }
+  return this->MetaDataProblem.empty();
+}
+
+std::vector<std::size_t> vtkParticleSnapshotReader::SelectedTypes()
+{
+  std::vector<std::size_t> selected;
+  for (std::size_t t = 0; t < this->Types.size(); ++t)
+  {
+    if (this->ParticleTypeSelection->ArrayIsEnabled(this->Types[t].Name.c_str()))
+    {
+      selected.push_back(t);
+    }
+  }
+  return selected;
+}
+
+int vtkParticleSnapshotReader::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+int vtkParticleSnapshotReader::RequestDataObject(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // One selected type: a vtkPolyData; several: a multiblock with one block per type.
+  const bool several = this->UpdateMetaData(false) && this->SelectedTypes().size() > 1;
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT());
+  const char* wanted = several ? "vtkMultiBlockDataSet" : "vtkPolyData";
+  if (!output || !output->IsA(wanted))
+  {
+    vtkSmartPointer<vtkDataObject> created;
+    if (several)
+    {
+      created = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+    }
+    else
+    {
+      created = vtkSmartPointer<vtkPolyData>::New();
+    }
+    info->Set(vtkDataObject::DATA_OBJECT(), created);
+  }
+  return 1;
+}
+
+int vtkParticleSnapshotReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  info->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  if (!this->UpdateMetaData(true)) // the file may have changed on disk
+  {
+    return 1; // RequestData reports the problem
+  }
+  // One time step: the snapshot's own (a series of files gets its steps from the series reader).
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), &this->Time, 1);
+  const double range[2] = { this->Time, this->Time };
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkParticleSnapshotReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT());
+  output->Initialize();
+  if (!this->UpdateMetaData(false))
+  {
+    vtkErrorMacro("'" << this->FileName << "': " << this->MetaDataProblem << ".");
+    return 0;
+  }
+  const std::vector<std::size_t> selected = this->SelectedTypes();
+  if (selected.empty())
+  {
+    vtkWarningMacro("'" << this->FileName << "': no particle type selected (ParticleTypes).");
+    return 1;
+  }
+  // This rank's contiguous share of every selected type.
+  const int piece = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  const int pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+    : 1;
+  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(output);
+  for (std::size_t k = 0; k < selected.size(); ++k)
+  {
+    const ParticleType& type = this->Types[selected[k]];
+    const long long begin = type.Count * piece / pieces;
+    const long long end = type.Count * (piece + 1) / pieces;
+    vtkNew<vtkPolyData> particles;
+    std::string problem;
+    if (!this->ReadParticles(selected[k], begin, end, particles, problem))
+    {
+      vtkErrorMacro("'" << this->FileName << "', " << type.Name << ": " << problem << ".");
+      output->Initialize();
+      return 0;
+    }
+    particles->SetVerts(VertexCells(particles->GetNumberOfPoints()));
+    particles->GetFieldData()->PassData(this->Fields);
+    particles->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->Time);
+    if (blocks)
+    {
+      blocks->SetBlock(static_cast<unsigned int>(k), particles);
+      blocks->GetMetaData(static_cast<unsigned int>(k))
+        ->Set(vtkCompositeDataSet::NAME(), type.Name.c_str());
+    }
+    else
+    {
+      output->ShallowCopy(particles);
+    }
+    this->UpdateProgress(static_cast<double>(k + 1) / selected.size());
+    if (this->CheckAbort())
+    {
+      output->Initialize();
+      return 1;
+    }
+  }
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->Time);
+  return 1;
+}
+
+void vtkParticleSnapshotReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  for (int i = 0; i < this->ParticleTypeSelection->GetNumberOfArrays(); ++i)
+  {
+    os << indent << "ParticleType " << this->ParticleTypeSelection->GetArrayName(i) << ": "
+       << (this->ParticleTypeSelection->GetArraySetting(i) ? "on" : "off") << "\n";
+  }
+}

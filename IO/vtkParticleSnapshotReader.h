@@ -1,0 +1,112 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkParticleSnapshotReader
+ * @brief   Base of the particle snapshot readers: particle types, pieces, output assembly.
+ *
+ * A simulation snapshot holds particles of several types (gas, dark matter, stars, ...). A
+ * subclass lists the types a file holds and reads a range of one type's particles; this class
+ * does the rest, the same way for every format:
+ * - the particle type selection (ParticleTypeSelection; gas on, the others off by default);
+ * - the output: vtkPolyData (one vertex cell per particle) when one type is selected, a
+ *   vtkMultiBlockDataSet with one named block per selected type otherwise;
+ * - pieces: under MPI each rank reads its own contiguous share of every selected type;
+ * - the snapshot's time (DATA_TIME_STEP, and one TIME_STEPS entry), errors naming the file, an
+ *   empty output on any problem.
+ */
+#ifndef vtkParticleSnapshotReader_h
+#define vtkParticleSnapshotReader_h
+
+#include "LevelSetIsosurfaceIOModule.h" // for export macro
+#include "vtkDataObjectAlgorithm.h"
+#include "vtkNew.h" // for vtkNew
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkCellArray;
+class vtkDataArraySelection;
+class vtkFieldData;
+class vtkPolyData;
+
+class LEVELSETISOSURFACEIO_EXPORT vtkParticleSnapshotReader : public vtkDataObjectAlgorithm
+{
+public:
+  vtkTypeMacro(vtkParticleSnapshotReader, vtkDataObjectAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The snapshot file (for a snapshot in several files, any one of them). */
+  void SetFileName(const char* name);
+  const char* GetFileName() const { return this->FileName.c_str(); }
+  ///@}
+
+  ///@{
+  /**
+   * Which particle types to read, by name (for example "Gas (PartType0)"). The names are known
+   * after UpdateInformation(). Gas is selected by default, the other types are not.
+   */
+  vtkDataArraySelection* GetParticleTypeSelection() { return this->ParticleTypeSelection; }
+  int GetNumberOfParticleTypeArrays();
+  const char* GetParticleTypeArrayName(int index);
+  int GetParticleTypeArrayStatus(const char* name);
+  void SetParticleTypeStatus(const char* name, int status);
+  ///@}
+
+  /** One vertex cell per point 0 .. count-1. */
+  static vtkNew<vtkCellArray> VertexCells(vtkIdType count);
+
+protected:
+  vtkParticleSnapshotReader();
+  ~vtkParticleSnapshotReader() override;
+
+  /** A particle type of the file: its name in the selection and how many particles it has. */
+  struct ParticleType
+  {
+    std::string Name;
+    long long Count = 0;
+    bool SelectedByDefault = false;
+  };
+
+  /**
+   * Reads what the file holds: its particle types, its time and its field data (header
+   * attributes, units). Returns false with `problem` set (in words, without the file name) when
+   * the file cannot be read.
+   */
+  virtual bool ReadMetaData(
+    std::vector<ParticleType>& types, double& time, vtkFieldData* fields, std::string& problem) = 0;
+
+  /**
+   * Reads particles [begin, end) of type `type` (an index into ReadMetaData's list) into
+   * `output`: points and point arrays (no cells). Returns false with `problem` set.
+   */
+  virtual bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
+    std::string& problem) = 0;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::string FileName;
+
+private:
+  vtkParticleSnapshotReader(const vtkParticleSnapshotReader&) = delete;
+  void operator=(const vtkParticleSnapshotReader&) = delete;
+
+  // Reads the meta data (again if `force` or for a new file name); false on a problem, which
+  // MetaDataProblem describes.
+  bool UpdateMetaData(bool force);
+  // The indices of the selected types that the file has.
+  std::vector<std::size_t> SelectedTypes();
+
+  vtkNew<vtkDataArraySelection> ParticleTypeSelection;
+  std::vector<ParticleType> Types;
+  double Time = 0.0;
+  vtkNew<vtkFieldData> Fields;
+  std::string MetaDataProblem;
+  std::string MetaDataFileName;
+  bool MetaDataRead = false;
+};
+
+#endif

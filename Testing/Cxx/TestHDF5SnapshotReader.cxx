@@ -1,0 +1,254 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The HDF5 snapshot reader on the snapshots make_test_snapshots.py writes (every value known):
+// a GADGET-4 snapshot in two files, an AREPO-style file without smoothing lengths, each class of
+// bad file; then the real SWIFT snapshot of Data/SWIFT.
+//   TestHDF5SnapshotReader TEST_SNAPSHOT_DIR SWIFT_FILE
+#include "vtkHDF5SnapshotReader.h"
+
+#include "MessageCounter.h"
+#include "TestCheck.h"
+
+#include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+using lsi::test::Check;
+using lsi::test::MessageCounter;
+
+// make_test_snapshots.py's gas_value.
+double GasValue(int i, int column)
+{
+  return 1.0 + 0.01 * i + 10.0 * column;
+}
+
+std::string FieldString(vtkPolyData* data, const char* name)
+{
+  vtkStringArray* array =
+    vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+  return array && array->GetNumberOfValues() ? array->GetValue(0) : "";
+}
+
+double FieldNumber(vtkPolyData* data, const char* name, int index = 0)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array && array->GetNumberOfTuples() > index ? array->GetTuple1(index) : NAN;
+}
+
+// Gas particles [first, first + count) of the GADGET-4 snapshot, checked value by value.
+void CheckGas(vtkPolyData* gas, int first, int count, const std::string& what)
+{
+  Check(gas && gas->GetNumberOfPoints() == count && gas->GetNumberOfVerts() == count,
+    what + ": " + std::to_string(count) + " gas particles as vertices");
+  if (!gas || gas->GetNumberOfPoints() != count)
+  {
+    return;
+  }
+  vtkDataArray* density = gas->GetPointData()->GetArray("Density");
+  vtkDataArray* smoothing = gas->GetPointData()->GetArray("SmoothingLength");
+  vtkDataArray* ids = gas->GetPointData()->GetGlobalIds();
+  vtkDataArray* velocity = gas->GetPointData()->GetArray("Velocities");
+  Check(density && smoothing && ids && velocity && velocity->GetNumberOfComponents() == 3,
+    what + ": Density, SmoothingLength, Velocities (3 components), ParticleIDs as global ids");
+  if (!density || !smoothing || !ids || !velocity)
+  {
+    return;
+  }
+  double worst = 0.0;
+  for (int k = 0; k < count; ++k)
+  {
+    const int i = first + k;
+    double x[3];
+    gas->GetPoint(k, x);
+    for (int d = 0; d < 3; ++d)
+    {
+      worst = std::max(worst, std::abs(x[d] - GasValue(i, d)));
+      worst = std::max(worst, std::abs(velocity->GetComponent(k, d) + GasValue(i, d)) / 1e4);
+    }
+    worst = std::max(worst, std::abs(density->GetTuple1(k) - GasValue(i, 3)) / 1e4);
+    worst = std::max(worst, std::abs(smoothing->GetTuple1(k) - GasValue(i, 5)) / 1e4);
+    worst = std::max(worst, std::abs(ids->GetTuple1(k) - (1000 + i)));
+  }
+  Check(worst < 1e-6, what + ": every value in place (worst " + std::to_string(worst) + ")");
+}
+
+void TestMultiFileGadget(const std::string& dir)
+{
+  for (const char* file : { "gadget4_multi.0.hdf5", "gadget4_multi.1.hdf5" })
+  {
+    const std::string path = dir + "/" + file;
+    Check(vtkHDF5SnapshotReader::CanReadFile(path.c_str()), path + ": CanReadFile");
+    vtkNew<vtkHDF5SnapshotReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+    CheckGas(gas, 0, 50, path + " (both files, gas by default)");
+    if (!gas)
+    {
+      continue;
+    }
+    Check(gas->GetPointData()->GetScalars() &&
+        std::string(gas->GetPointData()->GetScalars()->GetName()) == "Density",
+      path + ": Density is the active scalars");
+    Check(FieldString(gas, "DensityArray") == "Density" &&
+        FieldString(gas, "SmoothingLengthArray") == "SmoothingLength",
+      path + ": the density and smoothing-length arrays are named in field data");
+    vtkDataArray* masses = gas->GetPointData()->GetArray("Masses");
+    Check(masses && masses->GetRange()[0] == 0.25 && masses->GetRange()[1] == 0.25,
+      path + ": gas Masses from its dataset");
+    Check(FieldNumber(gas, "Time") == 2.5 && FieldNumber(gas, "BoxSize") == 10.0 &&
+        gas->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) == 2.5,
+      path + ": Time 2.5 and BoxSize 10 from the Header");
+
+    // Two types: a multiblock; dark matter's masses from the MassTable.
+    Check(reader->GetNumberOfParticleTypeArrays() == 2, path + ": two particle types listed");
+    reader->SetParticleTypeStatus(vtkHDF5SnapshotReader::ParticleTypeName(1).c_str(), 1);
+    reader->Update();
+    vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+    Check(blocks && blocks->GetNumberOfBlocks() == 2, path + ": gas and dark matter as 2 blocks");
+    if (blocks && blocks->GetNumberOfBlocks() == 2)
+    {
+      vtkPolyData* dark = vtkPolyData::SafeDownCast(blocks->GetBlock(1));
+      vtkDataArray* darkMasses = dark ? dark->GetPointData()->GetArray("Masses") : nullptr;
+      Check(dark && dark->GetNumberOfPoints() == 40 && darkMasses &&
+          darkMasses->GetRange()[0] == 0.5 && darkMasses->GetRange()[1] == 0.5,
+        path + ": 40 dark-matter particles with Masses 0.5 from the MassTable");
+      Check(std::string(blocks->GetMetaData(1u)->Get(vtkCompositeDataSet::NAME())) ==
+          "DarkMatter (PartType1)",
+        path + ": the block is named after its type");
+    }
+  }
+
+  // Pieces, as MPI ranks ask for them: two halves, one across the file boundary.
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName((dir + "/gadget4_multi.0.hdf5").c_str());
+  for (int piece = 0; piece < 2; ++piece)
+  {
+    reader->UpdatePiece(piece, 2, 0);
+    CheckGas(vtkPolyData::SafeDownCast(reader->GetOutput()), 25 * piece, 25,
+      "piece " + std::to_string(piece) + " of 2");
+  }
+  reader->UpdatePiece(1, 3, 0);
+  CheckGas(vtkPolyData::SafeDownCast(reader->GetOutput()), 16, 17, "piece 1 of 3");
+}
+
+void TestArepoLike(const std::string& dir)
+{
+  const std::string path = dir + "/arepo_like.hdf5";
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(gas && gas->GetNumberOfPoints() == 60, path + ": 60 gas particles");
+  if (!gas)
+  {
+    return;
+  }
+  Check(FieldString(gas, "SmoothingLengthArray").empty() &&
+      FieldString(gas, "DensityArray") == "Density",
+    path + ": no smoothing-length array named, the density named");
+  Check(FieldNumber(gas, "BoxSize", 2) == 6.0 && FieldNumber(gas, "Time") == 0.5,
+    path + ": BoxSize as a 3-vector, Time 0.5");
+  reader->SetParticleTypeStatus("Gas (PartType0)", 0);
+  reader->SetParticleTypeStatus("Stars (PartType4)", 1);
+  reader->Update();
+  vtkPolyData* stars = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(stars && stars->GetNumberOfPoints() == 7 &&
+      stars->GetPointData()->GetArray("GFM_StellarFormationTime"),
+    path + ": stars alone: 7, with their formation times");
+}
+
+void TestBadFiles(const std::string& dir)
+{
+  struct Case
+  {
+    const char* File;
+    const char* Expected;
+    bool Readable; // CanReadFile may say yes: the problem shows only when reading
+  };
+  const Case cases[] = {
+    { "no_such_file.hdf5", "cannot open the file", false },
+    { "bad_text.hdf5", "not an HDF5 file", false },
+    { "bad_not_snapshot.hdf5", "no Header group", false },
+    { "bad_truncated.hdf5", "", false },
+    { "bad_inconsistent.hdf5", "has 19 entries, but the file counts 20", true },
+    { "bad_missing_part.0.hdf5", "bad_missing_part.1.hdf5 of the snapshot is missing", true },
+  };
+  for (const Case& c : cases)
+  {
+    const std::string path = dir + "/" + c.File;
+    Check(vtkHDF5SnapshotReader::CanReadFile(path.c_str()) == c.Readable,
+      path + ": CanReadFile is " + (c.Readable ? "true" : "false"));
+    vtkNew<vtkHDF5SnapshotReader> reader;
+    reader->SetFileName(path.c_str());
+    vtkNew<MessageCounter> errors;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->Update();
+    Check(errors->Count > 0 && errors->Last.find(c.File) != std::string::npos &&
+        errors->Last.find(c.Expected) != std::string::npos,
+      path + ": an error naming the file and '" + c.Expected + "' (got: " + errors->Last + ")");
+    vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutput());
+    Check(out && out->GetNumberOfPoints() == 0, path + ": empty output");
+    const std::size_t quote = errors->Last.find('\'');
+    std::cout << c.File << " -> "
+              << (quote == std::string::npos ? errors->Last : errors->Last.substr(quote)) << "\n";
+  }
+}
+
+void TestSwift(const std::string& path)
+{
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(gas && gas->GetNumberOfPoints() == 32768, path + ": 32,768 gas particles");
+  if (!gas)
+  {
+    return;
+  }
+  vtkDataArray* density = gas->GetPointData()->GetScalars();
+  Check(density && std::string(density->GetName()) == "Densities" &&
+      FieldString(gas, "SmoothingLengthArray") == "SmoothingLengths" &&
+      gas->GetPointData()->GetArray("Masses"),
+    path + ": SWIFT's plural names recognised (Densities active, SmoothingLengths named)");
+  Check(FieldString(gas, "HydroScheme/Kernel function") == "Quintic spline (M6)" &&
+      std::abs(FieldNumber(gas, "HydroScheme/Kernel gamma") - 2.195775) < 1e-6,
+    path + ": the kernel from HydroScheme (got '" +
+      FieldString(gas, "HydroScheme/Kernel function") + "')");
+  Check(std::abs(FieldNumber(gas, "BoxSize", 2) - 6.2831853071) < 1e-9,
+    path + ": BoxSize (2 pi)^3 as a 3-vector");
+  std::cout << path << ": " << gas->GetNumberOfPoints() << " particles, "
+            << gas->GetPointData()->GetNumberOfArrays() << " arrays, "
+            << gas->GetFieldData()->GetNumberOfArrays() << " field data arrays\n";
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc != 3)
+  {
+    std::cerr << "usage: TestHDF5SnapshotReader TEST_SNAPSHOT_DIR SWIFT_FILE\n";
+    return EXIT_FAILURE;
+  }
+  TestMultiFileGadget(argv[1]);
+  TestArepoLike(argv[1]);
+  TestBadFiles(argv[1]);
+  TestSwift(argv[2]);
+  std::cout << (lsi::test::Failures() ? "HDF5 reader tests FAILED\n"
+                                      : "HDF5 reader tests passed\n");
+  return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
