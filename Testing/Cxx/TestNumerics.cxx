@@ -7,6 +7,7 @@
 #include "LevelSetUpdate.h"
 #include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
+#include "SPHKernels.h"
 #include "SpatialOrder.h"
 #include "Splats.h"
 #include "TangentBasis.h"
@@ -480,9 +481,40 @@ void TestTangentBasis()
   Check(worst < 1e-14, "tangent basis orthonormal and right-handed, splat corners in the plane");
 }
 
+// Each SPH kernel integrates to 1 over its support (4 pi int W r^2 dr, Simpson's rule), for two
+// support radii (the kernel scales as 1 / H^3), and is positive inside, zero at and beyond H.
+void TestSPHKernels()
+{
+  for (lsi::SPHKernel kernel :
+    { lsi::SPHKernel::CubicSpline, lsi::SPHKernel::QuinticSpline, lsi::SPHKernel::WendlandC2 })
+  {
+    for (double H : { 1.0, 0.003 })
+    {
+      const int steps = 3000; // even
+      double integral = 0.0;
+      for (int s = 0; s <= steps; ++s)
+      {
+        const double r = H * s / steps;
+        const double weight = (s == 0 || s == steps) ? 1.0 : (s % 2 ? 4.0 : 2.0);
+        integral +=
+          weight * 4.0 * 3.14159265358979323846 * r * r * lsi::SPHKernelValue(kernel, r, H);
+      }
+      integral *= H / steps / 3.0;
+      std::cout << "SPH kernel " << static_cast<int>(kernel) << ", H " << H << ": integral "
+                << integral << "\n";
+      Check(std::abs(integral - 1.0) < 1e-6, "SPH kernel integrates to 1");
+    }
+    Check(lsi::SPHKernelValue(kernel, 0.999, 1.0) > 0.0 &&
+        lsi::SPHKernelValue(kernel, 1.0, 1.0) == 0.0 &&
+        lsi::SPHKernelValue(kernel, 2.0, 1.0) == 0.0,
+      "SPH kernel positive inside its support, zero at and beyond it");
+  }
+}
+
 int main()
 {
   TestTangentBasis();
+  TestSPHKernels();
   TestSpatialOrder();
   TestJoinedTree();
   TestRosenthalLinsen();

@@ -1,0 +1,157 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""pvpython TestReaders.py PLUGIN DATA_DIR SNAPSHOT_DIR [SHARED_DATA_DIR]
+
+Opens particle files as a ParaView user does (OpenDataFile, File > Open's route: the reader is
+chosen by ParaView's reader factory) and checks particle counts per type, array names and
+lengths, masses, Time and BoxSize:
+- DATA_DIR (the repository's Data/): the three ChaNGa Tipsy files and the SWIFT snapshot;
+- SNAPSHOT_DIR: the snapshots make_test_snapshots.py writes (a GADGET-4 snapshot in two files,
+  an AREPO-style file);
+- SHARED_DATA_DIR (optional, ../shared/data when it is beside the clone): every HDF5 and Tipsy
+  file there, the GADGET-4 gas sphere as a time series of four snapshots.
+Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
+Isosurface on a snapshot's own density."""
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import LoadPlugin, OpenDataFile
+
+plugin, data_dir, snapshot_dir = sys.argv[1:4]
+shared = sys.argv[4] if len(sys.argv) > 4 else None
+LoadPlugin(plugin, ns=globals())
+failures = []
+
+
+def check(ok, what):
+    print(("ok      " if ok else "FAILED  ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def open_file(path, types=None):
+    reader = OpenDataFile(path)
+    check(reader is not None, "%s: ParaView finds a reader" % os.path.basename(path))
+    if reader is None:
+        return None, None
+    reader.UpdatePipelineInformation()
+    if types is not None:
+        reader.ParticleTypes = types
+    reader.UpdatePipeline()
+    return reader, servermanager.Fetch(reader)
+
+
+def field(data, name, index=0):
+    array = data.GetFieldData().GetArray(name)
+    return array.GetValue(index) if array is not None else None
+
+
+def check_points(data, name, count, arrays, masses=None, time=None, box=None):
+    """`data`: a vtkPolyData of one type; `arrays`: names that must be there, each with one
+    tuple per particle; `masses`: (min, max) of the Masses/mass array."""
+    check(data is not None and data.GetNumberOfPoints() == count,
+          "%s: %d particles (got %s)" % (name, count,
+                                         data.GetNumberOfPoints() if data else None))
+    if data is None:
+        return
+    point_data = data.GetPointData()
+    for a in arrays:
+        array = point_data.GetArray(a)
+        check(array is not None and array.GetNumberOfTuples() == count,
+              "%s: array %s with %d tuples" % (name, a, count))
+    if masses is not None:
+        mass = point_data.GetArray("Masses") or point_data.GetArray("mass")
+        rng = mass.GetRange() if mass is not None else None
+        check(rng is not None and abs(rng[0] - masses[0]) <= 1e-5 * abs(masses[0]) and
+              abs(rng[1] - masses[1]) <= 1e-5 * abs(masses[1]),
+              "%s: masses in [%g, %g] (got %s)" % (name, masses[0], masses[1], rng))
+    if time is not None:
+        check(field(data, "Time") is not None and abs(field(data, "Time") - time) < 1e-9,
+              "%s: Time %g (got %s)" % (name, time, field(data, "Time")))
+    if box is not None:
+        check(field(data, "BoxSize") is not None and abs(field(data, "BoxSize") - box) < 1e-9,
+              "%s: BoxSize %g (got %s)" % (name, box, field(data, "BoxSize")))
+
+
+def blocks(data):
+    return [data.GetBlock(i) for i in range(data.GetNumberOfBlocks())]
+
+
+tipsy_gas = ["mass", "velocity", "rho", "temp", "hsmooth", "metals", "phi"]
+# The repository's real files.
+changa = os.path.join(data_dir, "ChaNGa")
+_, glass = open_file(os.path.join(changa, "adiabtophat_glass_28721.bin"))
+check_points(glass, "Evrard glass", 28721, tipsy_gas, masses=(3.48177e-05, 3.48177e-05))
+_, tube = open_file(os.path.join(changa, "shocktube.std"))
+check_points(tube, "shock tube", 20000, tipsy_gas, time=1.0)
+_, galaxy = open_file(os.path.join(changa, "changa_run581.20000"), ["DarkMatter", "1", "Stars", "1"])
+parts = blocks(galaxy) if galaxy is not None and galaxy.IsA("vtkMultiBlockDataSet") else [None, None]
+check_points(parts[0], "galaxy dark matter", 3627, ["mass", "velocity", "eps", "phi"])
+check_points(parts[1], "galaxy stars", 5321, ["mass", "velocity", "metals", "tform", "eps", "phi"])
+_, swift = open_file(os.path.join(data_dir, "SWIFT", "swift_robertsflow_g32.hdf5"))
+check_points(swift, "SWIFT Roberts flow", 32768,
+             ["Densities", "SmoothingLengths", "Masses", "Velocities", "InternalEnergies"],
+             masses=(0.00756989, 0.00756989), time=0.0, box=6.2831853071)
+
+# Snapshots the tests wrote.
+_, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),
+                      ["Gas (PartType0)", "1", "DarkMatter (PartType1)", "1"])
+parts = blocks(gadget) if gadget is not None and gadget.IsA("vtkMultiBlockDataSet") else [None, None]
+check_points(parts[0], "GADGET-4 in two files, gas", 50,
+             ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
+             masses=(0.25, 0.25), time=2.5, box=10.0)
+check_points(parts[1], "GADGET-4 in two files, dark matter", 40, ["Velocities", "Masses"],
+             masses=(0.5, 0.5))
+_, arepo = open_file(os.path.join(snapshot_dir, "arepo_like.hdf5"))
+check_points(arepo, "AREPO-style, no SmoothingLength", 60, ["Density", "Masses"], time=0.5,
+             box=4.0)
+
+# ../shared/data, when it is beside the clone: every HDF5 and Tipsy file.
+if shared:
+    _, cube = open_file(os.path.join(shared, "changa_cube300.tbin"))
+    check_points(cube, "ChaNGa cube300 (dark matter only)", 110592, ["mass", "eps", "phi"],
+                 time=0.05)
+    _, sod = open_file(os.path.join(shared, "swift_sodshock3d_glass_002.hdf5"))
+    check_points(sod, "SWIFT Sod shock glass", 50653,
+                 ["Density", "SmoothingLength", "Masses", "Acceleration", "InternalEnergy"],
+                 box=1.0)
+    for name in ["adiabtophat_glass_28721.bin", "shocktube.std", "changa_run581.20000"]:
+        _, data = open_file(os.path.join(shared, name))
+        check(data is not None and data.GetNumberOfPoints() > 0, "shared %s opens" % name)
+    _, swift2 = open_file(os.path.join(shared, "swift_robertsflow_g32.hdf5"))
+    check_points(swift2, "shared SWIFT Roberts flow", 32768, ["Densities"])
+    series = [os.path.join(shared, "gadget4_gassphere", "snapshot_%03d.hdf5" % k)
+              for k in (1, 5, 10, 15)]
+    reader = OpenDataFile(series)
+    reader.UpdatePipelineInformation()
+    times = list(reader.TimestepValues)
+    check(len(times) == 4 and abs(times[1] - 1.001953125) < 1e-9,
+          "GADGET-4 gas sphere: a time series of 4 snapshots (times %s)" % times)
+    for t in times:
+        reader.UpdatePipeline(t)
+        data = servermanager.Fetch(reader)
+        check_points(data, "gas sphere at t=%g" % t, 1000,
+                     ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
+                     time=t)
+
+# No array named by hand: Particle Density on the galaxy's dark matter, then the level set on
+# the SWIFT snapshot's own density (its active scalars).
+galaxy_dark, _ = open_file(os.path.join(changa, "changa_run581.20000"))
+density = ParticleDensity(Input=galaxy_dark)
+density.UpdatePipeline()
+dark = servermanager.Fetch(density)
+rho = dark.GetPointData().GetScalars()
+check(rho is not None and rho.GetName() == "Density" and rho.GetRange()[0] > 0,
+      "Particle Density on the galaxy's dark matter: Density, positive, the active scalars")
+surface = LevelSetIsosurface(Input=density, IsoValue=sorted(
+    rho.GetValue(i) for i in range(rho.GetNumberOfTuples()))[dark.GetNumberOfPoints() * 9 // 10],
+    SeedRadius=0)
+surface.UpdatePipeline()
+isosurface = servermanager.Fetch(surface)
+check(isosurface.GetNumberOfPoints() > 0 and isosurface.GetPointData().GetArray("Density"),
+      "Level-Set Isosurface of that density (90th percentile), no array named: %d points"
+      % isosurface.GetNumberOfPoints())
+
+print("%d failures" % len(failures))
+sys.exit(1 if failures else 0)
