@@ -1,16 +1,19 @@
 # SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""pvbatch gallery.py PLUGIN DATA_DIR GLASS_FILE OUT_DIR: the README's gallery.
+"""pvbatch gallery.py PLUGIN DATA_DIR GLASS_FILE GALAXY_FILE OUT_DIR: the README's gallery.
 
 - one-component: the paper's field (§8.2) at 2M samples, the default splat surface;
 - multi-component: our multi-component field at 2M samples, seeded in two of its blobs: the
   extracted components in colour, the exact isosurface of all components in faint grey (what
   the seeds did not touch stays out);
 - evrard: the Evrard collapse glass (28,721 real SPH particles, Data/ChaNGa). Its density is
-  estimated from the particles by SPH summation (cubic-spline kernel over each particle's 64
-  nearest neighbours), the isosurface is that density at 1/pi (where the analytic profile
+  estimated from the particles by the plugin's Particle Density filter (SPH summation, cubic
+  spline over each particle's 64 nearest neighbours), the isosurface is that density at 1/pi (where the analytic profile
   rho = 1/(2 pi r) puts the sphere r = 0.5), coloured by the distance from the centre: the
-  colour shows where the particle estimate departs from the exact sphere.
+  colour shows where the particle estimate departs from the exact sphere;
+- galaxy: the dark matter of a ChaNGa galaxy snapshot (3,627 particles, Data/ChaNGa), which
+  carries no density: Particle Density, then the level set at the median density seeded at the
+  centre of mass, coloured by the particles' speed interpolated onto the surface.
 
 DATA_DIR holds one_component_2M.vtp, multi_component_2M.vtp and multi_component_exact.vtp from
 LevelSetGenerateData (Scripts/make-gallery.sh makes them)."""
@@ -19,15 +22,13 @@ import os
 import sys
 
 import numpy as np
-from scipy.spatial import cKDTree
 from paraview import servermanager
-from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, LoadPlugin, Render,
-                             SaveScreenshot, Show, TrivialProducer, XMLPolyDataReader)
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from paraview.simple import (Calculator, ColorBy, CreateView, GetColorTransferFunction,
+                             GetScalarBar, LoadPlugin, Render, SaveScreenshot, Show,
+                             XMLPolyDataReader)
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-plugin, data_dir, glass_file, out_dir = sys.argv[1:5]
+plugin, data_dir, glass_file, galaxy_file, out_dir = sys.argv[1:6]
 LoadPlugin(plugin, ns=globals())
 
 
@@ -82,29 +83,16 @@ save(view, "gallery_multi_component.png")
 
 # Evrard glass: SPH-summation density of the real particles.
 glass = TipsyParticleReader(FileNames=[glass_file])
-data = servermanager.Fetch(glass)
-x = vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
-mass = vtk_to_numpy(data.GetPointData().GetArray("mass")).astype(np.float64)
-distances, neighbours = cKDTree(x).query(x, k=64)
-h = distances[:, -1] / 2.0  # the cubic spline reaches 2h: 64 neighbours inside
-q = distances / h[:, None]
-w = np.where(q < 1, 1 - 1.5 * q**2 + 0.75 * q**3, np.where(q < 2, 0.25 * (2 - q)**3, 0.0))
-density = (mass[neighbours] * w).sum(axis=1) / (math.pi * h**3)
-cloud = vtkPolyData()
-cloud.ShallowCopy(data)
-for name, values in (("sph_density", density), ("radius", np.linalg.norm(x, axis=1))):
-    array = numpy_to_vtk(values, deep=1)
-    array.SetName(name)
-    cloud.GetPointData().AddArray(array)
-source = TrivialProducer()
-source.GetClientSideObject().SetOutput(cloud)
-surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "sph_density"],
+density = ParticleDensity(Input=glass)
+radius = Calculator(Input=density, ResultArrayName="radius", Function="mag(coords)")
+surface = LevelSetIsosurface(Input=radius, Scalars=["POINTS", "Density"],
                              IsoValue=1.0 / math.pi, SeedCenter=[0, 0, 0], SeedRadius=0.2)
 surface.UpdatePipeline()
 out = surface.GetClientSideObject().GetOutputDataObject(0)
 r = vtk_to_numpy(out.GetPointData().GetArray("radius"))
 print("evrard: %d particles, %d splats; SPH-density isosurface at 1/pi: radius %.4f +- %.4f "
-      "(exact sphere 0.5)" % (len(x), out.GetNumberOfPolys(), r.mean(), r.std()))
+      "(exact sphere 0.5)" % (servermanager.Fetch(glass).GetNumberOfPoints(),
+                              out.GetNumberOfPolys(), r.mean(), r.std()))
 view = new_view([2.0, -1.6, 1.2], [0, 0, 0])
 display = Show(surface, view)
 ColorBy(display, ("POINTS", "radius"))
@@ -118,5 +106,32 @@ bar = GetScalarBar(lut, view)
 bar.Title, bar.ComponentTitle = "distance from the centre", ""
 bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
 save(view, "gallery_evrard.png")
+
+# A galaxy's dark matter: no density in the file; Particle Density, then the level set.
+galaxy = TipsyParticleReader(FileNames=[galaxy_file])
+density = ParticleDensity(Input=galaxy)
+speed = Calculator(Input=density, ResultArrayName="speed", Function="mag(velocity)")
+speed.UpdatePipeline()
+data = servermanager.Fetch(speed)
+x = vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
+m = vtk_to_numpy(data.GetPointData().GetArray("mass")).astype(np.float64)
+centre = list((x * m[:, None]).sum(axis=0) / m.sum())
+median = float(np.median(vtk_to_numpy(data.GetPointData().GetArray("Density"))))
+surface = LevelSetIsosurface(Input=speed, Scalars=["POINTS", "Density"], IsoValue=median,
+                             SeedCenter=centre, SeedRadius=0.3)  # the Calculator made speed active
+surface.UpdatePipeline()
+out = surface.GetClientSideObject().GetOutputDataObject(0)
+print("galaxy: %d dark-matter particles, density isosurface at the median %.4g: %d splats"
+      % (len(x), median, out.GetNumberOfPolys()))
+view = new_view([3.0, -4.5, 3.5], centre)
+display = Show(surface, view)
+ColorBy(display, ("POINTS", "speed"))
+lut = GetColorTransferFunction("speed")
+lut.ApplyPreset("Viridis (matplotlib)", True)
+display.SetScalarBarVisibility(view, True)
+bar = GetScalarBar(lut, view)
+bar.Title, bar.ComponentTitle = "speed", ""
+bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+save(view, "gallery_galaxy.png")
 sys.stdout.flush()
 os._exit(0)  # skip the render windows' teardown (it can raise an X error under Xvfb)

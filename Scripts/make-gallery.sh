@@ -16,4 +16,5 @@ mkdir -p "$data" "$here/Documentation/gallery"
 LSI_MULTI_SEEDS="44,64,64,14,70,64,64,14" LSI_MULTI_ISO=0.5 xvfb-run -a pvbatch \
   "$here/Scripts/gallery.py" \
   "$here/build/lib/paraview-5.11/plugins/LevelSetIsosurface/LevelSetIsosurface.so" "$data" \
-  "$here/Data/ChaNGa/adiabtophat_glass_28721.bin" "$here/Documentation/gallery"
+  "$here/Data/ChaNGa/adiabtophat_glass_28721.bin" "$here/Data/ChaNGa/changa_run581.20000" \
+  "$here/Documentation/gallery"
