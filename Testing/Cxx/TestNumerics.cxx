@@ -504,6 +504,18 @@ void TestSPHKernels()
                 << integral << "\n";
       Check(std::abs(integral - 1.0) < 1e-6, "SPH kernel integrates to 1");
     }
+    // Known values of the published forms at q = 0 and q = 1/2 (support 1): cubic spline
+    // 8/pi and 8/pi * 1/4; quintic (3^7 / (40 pi)) (1 - 6 (2/3)^5 + 15 (1/3)^5) and
+    // (3^7 / (40 pi)) ((1/2)^5 - 6 (1/6)^5); Wendland C2 21/(2 pi) and 21/(2 pi) 3/16.
+    const double pi = 3.14159265358979323846, quintic = 2187.0 / (40.0 * pi);
+    const double expected[3][2] = { { 8.0 / pi, 2.0 / pi },
+      { quintic * (1.0 - 6.0 * std::pow(2.0 / 3.0, 5) + 15.0 * std::pow(1.0 / 3.0, 5)),
+        quintic * (std::pow(0.5, 5) - 6.0 * std::pow(1.0 / 6.0, 5)) },
+      { 21.0 / (2.0 * pi), 21.0 / (2.0 * pi) * 3.0 / 16.0 } };
+    const int k = static_cast<int>(kernel);
+    Check(std::abs(lsi::SPHKernelValue(kernel, 0.0, 1.0) - expected[k][0]) < 1e-12 &&
+        std::abs(lsi::SPHKernelValue(kernel, 0.5, 1.0) - expected[k][1]) < 1e-12,
+      "SPH kernel values at q = 0 and 1/2");
     Check(lsi::SPHKernelValue(kernel, 0.999, 1.0) > 0.0 &&
         lsi::SPHKernelValue(kernel, 1.0, 1.0) == 0.0 &&
         lsi::SPHKernelValue(kernel, 2.0, 1.0) == 0.0,
