@@ -93,6 +93,21 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
   return std::string();
 }
 
+std::string NonFiniteParameter(const std::vector<std::pair<const char*, double>>& named)
+{
+  for (const auto& parameter : named)
+  {
+    if (!std::isfinite(parameter.second))
+    {
+      std::ostringstream problem;
+      problem << parameter.first << " is " << parameter.second
+              << "; every parameter must be a finite number.";
+      return problem.str();
+    }
+  }
+  return std::string();
+}
+
 std::string CheckNeighborhoods(const Neighborhoods& geometry)
 {
   std::ostringstream problem;

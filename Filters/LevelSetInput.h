@@ -9,6 +9,7 @@
 #include "LevelSetNeighborhoods.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkDataArray;
@@ -22,6 +23,10 @@ namespace lsi
 std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
   int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
   std::vector<double>& values);
+
+/// A parameter that is NaN or infinite (a clamp macro lets NaN through): its name, or "".
+/// `named` lists each parameter's name and value.
+std::string NonFiniteParameter(const std::vector<std::pair<const char*, double>>& named);
 
 /// Problems only the neighbour search reveals: duplicate points, all points on a plane or line.
 std::string CheckNeighborhoods(const Neighborhoods& geometry);

@@ -171,6 +171,23 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 
 bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double>& values)
 {
+  std::vector<std::pair<const char*, double>> parameters = { { "IsoValue", this->IsoValue },
+    { "SeedCenter[0]", this->SeedCenter[0] }, { "SeedCenter[1]", this->SeedCenter[1] },
+    { "SeedCenter[2]", this->SeedCenter[2] }, { "SeedRadius", this->SeedRadius },
+    { "Epsilon", this->Epsilon }, { "CurvatureEpsilon", this->CurvatureEpsilon },
+    { "TimeStep", this->TimeStep }, { "CurvatureWeight", this->CurvatureWeight },
+    { "DistanceRegularization", this->DistanceRegularization },
+    { "ConvergenceTolerance", this->ConvergenceTolerance }, { "SplatScale", this->SplatScale } };
+  for (double value : this->AdditionalSeeds)
+  {
+    parameters.emplace_back("AdditionalSeeds", value);
+  }
+  const std::string badParameter = lsi::NonFiniteParameter(parameters);
+  if (!badParameter.empty())
+  {
+    vtkErrorMacro(<< badParameter);
+    return false;
+  }
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
   const std::string problem = lsi::CheckInput(input, scalars, association, this->NumberOfNeighbors,
@@ -302,6 +319,13 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
     return false;
   }
   this->Converged = evolution.Converged();
+  if (!this->Converged)
+  {
+    vtkWarningMacro("The evolution stopped at MaximumNumberOfIterations ("
+      << this->MaximumNumberOfIterations
+      << ") before its stopping rule held: the front was still moving, so the surface may be "
+         "wrong. Raise MaximumNumberOfIterations, or check TimeStep and Epsilon.");
+  }
   return !this->ProgressOrAbort(EvolutionStage[1]);
 }
 

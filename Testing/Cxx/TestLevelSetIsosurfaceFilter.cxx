@@ -276,6 +276,44 @@ void TestBadInput()
     ExpectError(filter, "NaN or infinite", "infinite value");
   }
   {
+    // NaN passes the clamp macros (infinity does not: they clamp it to a finite bound): every
+    // parameter is checked before any work.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<std::pair<const char*, void (vtkLevelSetIsosurface::*)(double)>> setters = {
+      { "CurvatureWeight", &vtkLevelSetIsosurface::SetCurvatureWeight },
+      { "SplatScale", &vtkLevelSetIsosurface::SetSplatScale },
+      { "SeedRadius", &vtkLevelSetIsosurface::SetSeedRadius },
+      { "ConvergenceTolerance", &vtkLevelSetIsosurface::SetConvergenceTolerance },
+      { "DistanceRegularization", &vtkLevelSetIsosurface::SetDistanceRegularization },
+      { "TimeStep", &vtkLevelSetIsosurface::SetTimeStep },
+      { "Epsilon", &vtkLevelSetIsosurface::SetEpsilon }
+    };
+    for (const auto& setter : setters)
+    {
+      vtkNew<vtkLevelSetIsosurface> filter;
+      Configure(filter, data);
+      (filter.GetPointer()->*setter.second)(nan);
+      const std::string expected = std::string(setter.first) + " is nan";
+      ExpectError(filter, expected, expected.c_str());
+    }
+  }
+  {
+    // An evolution that hits MaximumNumberOfIterations says so; a converged one does not.
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetInitialization(vtkLevelSetIsosurface::SEED_SPHERES);
+    filter->SetMaximumNumberOfIterations(1);
+    vtkNew<MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->Update();
+    Check(warnings->Count == 1 &&
+        warnings->Last.find("MaximumNumberOfIterations (1)") != std::string::npos,
+      "not converged: a warning (got: " + warnings->Last + ")");
+    filter->SetMaximumNumberOfIterations(500);
+    filter->Update();
+    Check(filter->GetConverged() && warnings->Count == 1, "converged: no further warning");
+  }
+  {
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, data);
     filter->SetIsoValue(1000.0);
