@@ -572,22 +572,7 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     masses->Fill(this->MassTable[number]);
     pointData->AddArray(masses);
   }
-  vtkFieldData* fields = output->GetFieldData();
-  for (const auto& marker : { std::make_pair("DensityArray", density),
-         std::make_pair("SmoothingLengthArray", smoothingLength) })
-  {
-    if (!marker.second.empty())
-    {
-      vtkNew<vtkStringArray> name;
-      name->SetName(marker.first);
-      name->InsertNextValue(marker.second);
-      fields->AddArray(name);
-    }
-  }
-  if (!density.empty())
-  {
-    pointData->SetActiveScalars(density.c_str());
-  }
+  MarkSPHArrays(output, density, smoothingLength);
   return true;
 }
 

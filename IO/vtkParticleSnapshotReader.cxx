@@ -11,10 +11,13 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 
 #include <numeric>
+#include <utility>
 
 vtkParticleSnapshotReader::vtkParticleSnapshotReader()
 {
@@ -64,6 +67,26 @@ vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
   vtkNew<vtkCellArray> cells;
   cells->SetData(1, ids);
   return cells;
+}
+
+void vtkParticleSnapshotReader::MarkSPHArrays(
+  vtkPolyData* particles, const std::string& density, const std::string& smoothingLength)
+{
+  for (const auto& marker : { std::make_pair("DensityArray", density),
+         std::make_pair("SmoothingLengthArray", smoothingLength) })
+  {
+    if (!marker.second.empty())
+    {
+      vtkNew<vtkStringArray> name;
+      name->SetName(marker.first);
+      name->InsertNextValue(marker.second);
+      particles->GetFieldData()->AddArray(name);
+    }
+  }
+  if (!density.empty())
+  {
+    particles->GetPointData()->SetActiveScalars(density.c_str());
+  }
 }
 
 bool vtkParticleSnapshotReader::UpdateMetaData(bool force)

@@ -83,6 +83,14 @@ protected:
   virtual bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
     std::string& problem) = 0;
 
+  /**
+   * Marks the density and smoothing-length arrays of `particles` (empty names: none): the density
+   * becomes the active scalars, and field data "DensityArray" and "SmoothingLengthArray" name
+   * them, so that filters find them without the user naming them.
+   */
+  static void MarkSPHArrays(
+    vtkPolyData* particles, const std::string& density, const std::string& smoothingLength);
+
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

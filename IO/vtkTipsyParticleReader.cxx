@@ -10,7 +10,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStringArray.h"
 
 #include <cstdint>
 #include <cstring>
@@ -211,16 +210,9 @@ bool vtkTipsyParticleReader::ReadParticles(
     output->GetPointData()->AddArray(array);
   }
   output->GetPointData()->AddArray(velocity);
-  if (output->GetPointData()->GetArray("rho"))
+  if (output->GetPointData()->GetArray("rho")) // gas
   {
-    output->GetPointData()->SetActiveScalars("rho");
-    vtkNew<vtkStringArray> density, smoothingLength;
-    density->SetName("DensityArray");
-    density->InsertNextValue("rho");
-    smoothingLength->SetName("SmoothingLengthArray");
-    smoothingLength->InsertNextValue("hsmooth");
-    output->GetFieldData()->AddArray(density);
-    output->GetFieldData()->AddArray(smoothingLength);
+    MarkSPHArrays(output, "rho", "hsmooth");
   }
   return true;
 }
