@@ -38,9 +38,10 @@ EvolutionSettings ChooseEvolutionSettings(
   EvolutionCoefficients& c = settings.Coefficients;
   c.Epsilon = requested.Epsilon > 0.0 ? requested.Epsilon : automatic.Epsilon;
   c.CurvatureEpsilon = requested.CurvatureEpsilon > 0.0 ? requested.CurvatureEpsilon : c.Epsilon;
-  c.TimeStep = requested.TimeStep > 0.0 ? requested.TimeStep
-                                        : AutomaticTimeStep(c.Epsilon, requested.CurvatureWeight);
-  c.CurvatureWeight = requested.CurvatureWeight;
+  c.TimeStep = requested.TimeStep > 0.0
+    ? requested.TimeStep
+    : AutomaticTimeStep(c.Epsilon, requested.CurvatureWeight, scale.Spacing);
+  c.CurvatureWeight = CurvatureWeightForSpacing(requested.CurvatureWeight, scale.Spacing);
   c.DistanceRegularization =
     requested.Method == Scheme::WithoutReinitialization ? requested.DistanceRegularization : 0.0;
   settings.Method = requested.Method;

@@ -129,13 +129,16 @@ public:
 
   ///@{
   /** Time step dt. 0 (default): automatic, 0.45 eps^2 (the paper's [0.3, 0.6] eps^2), limited so
-   * that CurvatureWeight x dt <= 0.4. */
+   * that CurvatureWeight x dt <= 0.4 spacing^2. */
   vtkSetClampMacro(TimeStep, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TimeStep, double);
   ///@}
 
   ///@{
-  /** Weight lambda of the mean-curvature (smoothing) term. Default 0.05. */
+  /** Weight lambda of the mean-curvature (smoothing) term, without units: the term's
+   * coefficient is lambda times the mean sample spacing at the isovalue (the paper's lambda at
+   * spacing 1), so that the same data in any unit of length give the same surface.
+   * Default 0.05. */
   vtkSetClampMacro(CurvatureWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(CurvatureWeight, double);
   ///@}

@@ -207,6 +207,24 @@ void TestTheorem1()
   Check(c.TimeStep >= 0.3 * c.Epsilon * c.Epsilon && c.TimeStep <= 0.6 * c.Epsilon * c.Epsilon,
     "automatic dt in [0.3, 0.6] eps^2");
   Check(lsi::ChooseParameters(1.0, 1.0).TimeStep * 1.0 < 0.5, "automatic lambda dt < 0.5");
+  // No unit of length: at spacing s every length-valued choice is s times the one at spacing 1,
+  // dt s^2 times, and the curvature coefficient lambda s (so lambda dt delta kappa scales as s).
+  for (double s : { 1e-3, 7.0, 1e3 })
+  {
+    for (double lambda : { 0.05, 1.0 })
+    {
+      const lsi::AutomaticChoice one = lsi::ChooseParameters(1.0, lambda);
+      const lsi::AutomaticChoice scaled = lsi::ChooseParameters(s, lambda);
+      Check(std::abs(scaled.Epsilon / (s * one.Epsilon) - 1.0) < 1e-12 &&
+          std::abs(scaled.TimeStep / (s * s * one.TimeStep) - 1.0) < 1e-12 &&
+          std::abs(scaled.ReinitializationTimeStep / (s * one.ReinitializationTimeStep) - 1.0) <
+            1e-12 &&
+          std::abs(lsi::CurvatureWeightForSpacing(lambda, s) /
+              (s * lsi::CurvatureWeightForSpacing(lambda, 1.0)) -
+            1.0) < 1e-12,
+        "automatic parameters scale with the spacing (no unit of length)");
+    }
+  }
 }
 
 void TestReinitialization()
