@@ -38,6 +38,15 @@ if surface.IsoValue != 0.0:
     failures.append("IsoValue keyword was overridden: %s" % surface.IsoValue)
 if list(surface.SeedCenter) != [33, 29, 31] or surface.SeedRadius != 6.0:
     failures.append("seed keywords were overridden: %s %s" % (surface.SeedCenter, surface.SeedRadius))
+# Keywords equal to the C++ defaults survive too (issue 14: SeedCenter=[0, 0, 0] and SeedRadius=0,
+# "every component", were replaced by the data's centre and a tenth of its extent).
+whole = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                           SeedCenter=[0, 0, 0], SeedRadius=0)
+print("SeedCenter=[0, 0, 0], SeedRadius=0 as keywords: %s %s"
+      % (list(whole.SeedCenter), whole.SeedRadius))
+if list(whole.SeedCenter) != [0, 0, 0] or whole.SeedRadius != 0:
+    failures.append("SeedCenter=[0, 0, 0], SeedRadius=0 keywords were overridden: %s %s"
+                    % (list(whole.SeedCenter), whole.SeedRadius))
 # Without seed keywords the seed sphere sits in the middle of the data, a tenth of its extent.
 placed = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0)
 center, seed_radius = list(placed.SeedCenter), placed.SeedRadius
