@@ -47,6 +47,19 @@ print("SeedCenter=[0, 0, 0], SeedRadius=0 as keywords: %s %s"
 if list(whole.SeedCenter) != [0, 0, 0] or whole.SeedRadius != 0:
     failures.append("SeedCenter=[0, 0, 0], SeedRadius=0 keywords were overridden: %s %s"
                     % (list(whole.SeedCenter), whole.SeedRadius))
+# Every other property given as a keyword equal to its XML default keeps it.
+xml_defaults = dict(Epsilon=0.0, CurvatureEpsilon=0.0, TimeStep=0.0, CurvatureWeight=0.05,
+                    DistanceRegularization=0.1, ConvergenceTolerance=0.0001, SplatScale=1.0,
+                    NumberOfNeighbors=26, ReinitializationSteps=2, MaximumNumberOfIterations=500,
+                    NeighborCacheSize=4, NumberOfThreads=0, SplatSides=8, Completion=1,
+                    DataRefinement=1, InterpolateArrays=1)
+for name, value in xml_defaults.items():
+    keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                                   **{name: value})
+    if keyworded.GetPropertyValue(name) != value:
+        failures.append("%s=%s as a keyword became %s"
+                        % (name, value, keyworded.GetPropertyValue(name)))
+print("%d properties kept their keyword values" % len(xml_defaults))
 # Without seed keywords the seed sphere sits in the middle of the data, a tenth of its extent.
 placed = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0)
 center, seed_radius = list(placed.SeedCenter), placed.SeedRadius
