@@ -225,46 +225,43 @@ private:
   std::vector<std::pair<std::thread, std::shared_ptr<TreeBuild>>> Builds;
 };
 
-// Runs the tasks on threads of their own and the last one on the calling thread.
-void RunOnThreads(std::vector<std::function<void()>>& tasks)
+// Runs the tasks on at most `threads` threads (the calling one included), each thread taking
+// the next task not yet started.
+void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
 {
-  std::vector<std::thread> threads;
-  for (std::size_t t = 0; t + 1 < tasks.size(); ++t)
+  std::atomic<std::size_t> next(0);
+  auto work = [&]() {
+    for (std::size_t t = next++; t < tasks.size(); t = next++)
+    {
+      tasks[t]();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads && static_cast<std::size_t>(t) < tasks.size(); ++t)
   {
-    threads.emplace_back(tasks[t]);
+    helpers.emplace_back(work);
   }
-  if (!tasks.empty())
+  work();
+  for (std::thread& helper : helpers)
   {
-    tasks.back()();
-  }
-  for (std::thread& thread : threads)
-  {
-    thread.join();
+    helper.join();
   }
 }
 
-// The kd-tree is built in as many pieces as vtkSMPTools has threads (a power of two, at most
-// 8), each piece on its own thread.
-int TreeSplitLevels()
-{
-  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  int levels = 0;
-  while (levels < 3 && (2 << levels) <= threads)
-  {
-    ++levels;
-  }
-  return levels;
-}
+// The kd-tree is built in 8 pieces (cut at median planes), whatever the number of threads: the
+// tree decides the samples' storage order, and with it the order of every result, so it must
+// not depend on the threads or the output would (the pieces are then shared among the threads).
+constexpr int TreeSplitLevels = 3;
 
 bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
 {
   auto build = std::make_shared<TreeBuild>();
   build->Positions = std::move(out.Positions); // the buffer moves, the index will point into it
   const std::size_t n = out.NumberOfSamples;
-  const int splitLevels = TreeSplitLevels();
-  std::thread worker([build, splitLevels]() {
-    build->Index.reset(
-      new PointCloudIndex(build->Positions, build->TreeOrder, splitLevels, RunOnThreads));
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  std::thread worker([build, threads]() {
+    build->Index.reset(new PointCloudIndex(build->Positions, build->TreeOrder, TreeSplitLevels,
+      [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); }));
     build->Done = true;
   });
   while (!build->Done)
