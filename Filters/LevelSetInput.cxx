@@ -50,6 +50,11 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
     problem << "The array '" << name << "' has " << scalars->GetNumberOfComponents()
             << " components; a scalar (1 component) is required.";
   }
+  else if (scalars->GetNumberOfTuples() != n)
+  {
+    problem << "The array '" << name << "' has " << scalars->GetNumberOfTuples() << " values for "
+            << n << " points: a malformed point array.";
+  }
   if (!problem.str().empty())
   {
     return problem.str();

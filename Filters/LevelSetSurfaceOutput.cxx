@@ -136,9 +136,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   {
     vtkDataArray* array = inputData->GetArray(a);
     if (!array || !array->GetName() || array->GetDataType() == VTK_BIT ||
-      surface->GetPointData()->GetArray(array->GetName()))
+      surface->GetPointData()->GetArray(array->GetName()) ||
+      array->GetNumberOfTuples() != static_cast<vtkIdType>(geometry.NumberOfSamples))
     {
-      continue;
+      continue; // malformed arrays (a tuple count other than the points') are left out too
     }
     vtkSmartPointer<vtkDataArray> source = array;
     if (!array->HasStandardMemoryLayout())

@@ -314,6 +314,44 @@ void TestBadInput()
     Check(filter->GetConverged() && warnings->Count == 1, "converged: no further warning");
   }
   {
+    // A malformed scalar array, shorter than the points: an error, not a read past its end.
+    vtkNew<vtkPolyData> shortArray = Ball(5000);
+    vtkDoubleArray::SafeDownCast(shortArray->GetPointData()->GetArray("f"))
+      ->SetNumberOfTuples(4000);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, shortArray);
+    ExpectError(filter, "has 4000 values for 5000 points", "malformed scalar array");
+  }
+  {
+    // A malformed extra array is left out of the interpolation, not read past its end.
+    vtkNew<vtkPolyData> extra = Ball(5000);
+    vtkNew<vtkDoubleArray> shortArray;
+    shortArray->SetName("short");
+    shortArray->SetNumberOfValues(100);
+    shortArray->Fill(1.0);
+    extra->GetPointData()->AddArray(shortArray);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, extra);
+    filter->Update();
+    Check(filter->GetOutput(0)->GetNumberOfPoints() > 0 &&
+        !filter->GetOutput(0)->GetPointData()->GetArray("short") &&
+        filter->GetOutput(0)->GetPointData()->GetArray("f"),
+      "a malformed extra array is not interpolated; the others are");
+  }
+  {
+    // An unnamed scalar with a NaN: the message is complete (no null name streamed).
+    vtkNew<vtkPolyData> unnamed = Ball(5000);
+    vtkDataArray* f = unnamed->GetPointData()->GetArray("f");
+    f->SetTuple1(35, std::numeric_limits<double>::quiet_NaN());
+    f->SetName(nullptr);
+    unnamed->GetPointData()->SetScalars(f);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, unnamed);
+    filter->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+    ExpectError(filter, "NaN or infinite value at point 35", "unnamed array with a NaN");
+  }
+  {
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, data);
     filter->SetIsoValue(1000.0);
