@@ -52,6 +52,7 @@
 #define vtkLevelSetIsosurface_h
 
 #include "LevelSetIsosurfaceFiltersModule.h" // for export macro
+#include "vtkLevelSetMacros.h"               // for vtkSetClampWarnMacro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <functional> // for std::function
@@ -110,27 +111,27 @@ public:
 
   ///@{
   /** Number of nearest neighbours of each sample for the MLS fits. Default 26. */
-  vtkSetClampMacro(NumberOfNeighbors, int, 4, 200);
+  vtkSetClampWarnMacro(NumberOfNeighbors, int, 4, 200);
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}
 
   ///@{
   /** Width eps of the smoothed delta and sign of the main term (band: |phi| < 2 eps).
    * 0 (default): automatic, 2.5 x the mean sample spacing. */
-  vtkSetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampWarnMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Epsilon, double);
   ///@}
 
   ///@{
   /** Width eps' of the smoothed delta of the curvature term. 0 (default): equal to eps. */
-  vtkSetClampMacro(CurvatureEpsilon, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampWarnMacro(CurvatureEpsilon, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(CurvatureEpsilon, double);
   ///@}
 
   ///@{
   /** Time step dt. 0 (default): automatic, 0.45 eps^2 (the paper's [0.3, 0.6] eps^2), limited so
    * that CurvatureWeight x dt <= 0.4 spacing^2. */
-  vtkSetClampMacro(TimeStep, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampWarnMacro(TimeStep, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TimeStep, double);
   ///@}
 
@@ -139,20 +140,20 @@ public:
    * coefficient is lambda times the mean sample spacing at the isovalue (the paper's lambda at
    * spacing 1), so that the same data in any unit of length give the same surface.
    * Default 0.05. */
-  vtkSetClampMacro(CurvatureWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampWarnMacro(CurvatureWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(CurvatureWeight, double);
   ///@}
 
   ///@{
   /** Pseudo-time steps of the reinitialisation (eq. 10) after each iteration. Default 2. */
-  vtkSetClampMacro(ReinitializationSteps, int, 0, 100);
+  vtkSetClampWarnMacro(ReinitializationSteps, int, 0, 100);
   vtkGetMacro(ReinitializationSteps, int);
   ///@}
 
   ///@{
   /** Weight mu of the distance-regularisation term of the scheme without reinitialisation
    * (eq. 13). Default 0.1. Unused by the default scheme. */
-  vtkSetClampMacro(DistanceRegularization, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampWarnMacro(DistanceRegularization, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DistanceRegularization, double);
   ///@}
 
@@ -162,7 +163,7 @@ public:
    * or ROSENTHAL_LINSEN (2: the earlier method the paper compares against, eq. 16 with
    * reinitialisation; phi relaxes towards (f - f_iso) / |grad f|).
    */
-  vtkSetClampMacro(EvolutionScheme, int, VARIATIONAL_WITH_REINITIALIZATION, ROSENTHAL_LINSEN);
+  vtkSetClampWarnMacro(EvolutionScheme, int, VARIATIONAL_WITH_REINITIALIZATION, ROSENTHAL_LINSEN);
   vtkGetMacro(EvolutionScheme, int);
   void SetEvolutionSchemeToWithReinitialization()
   {
@@ -177,7 +178,7 @@ public:
 
   ///@{
   /** Upper bound on the iterations. Default 500. */
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
+  vtkSetClampWarnMacro(MaximumNumberOfIterations, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfIterations, int);
   ///@}
 
@@ -185,7 +186,7 @@ public:
   /** Stopping rule: the evolution stops when, for 3 iterations in a row, at most this fraction
    * of the band's samples changed sign for the first time (the front no longer advances
    * anywhere). Default 0.0001. */
-  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkSetClampWarnMacro(ConvergenceTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceTolerance, double);
   ///@}
 
@@ -222,7 +223,7 @@ public:
    * boundary, so the evolution only smooths the front (a few iterations instead of tens).
    * SEED_SPHERES: the paper's start, the signed distance to the seed spheres.
    */
-  vtkSetClampMacro(Initialization, int, SEED_SPHERES, FLOOD);
+  vtkSetClampWarnMacro(Initialization, int, SEED_SPHERES, FLOOD);
   vtkGetMacro(Initialization, int);
   void SetInitializationToSeedSpheres() { this->SetInitialization(SEED_SPHERES); }
   void SetInitializationToFlood() { this->SetInitialization(FLOOD); }
@@ -236,7 +237,7 @@ public:
   ///@{
   /** What port 0 holds: SPLATS (default), a closed surface of small oriented polygons that any
    * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). */
-  vtkSetClampMacro(OutputType, int, ISOPOINTS, SPLATS);
+  vtkSetClampWarnMacro(OutputType, int, ISOPOINTS, SPLATS);
   vtkGetMacro(OutputType, int);
   void SetOutputTypeToIsopoints() { this->SetOutputType(ISOPOINTS); }
   void SetOutputTypeToSplats() { this->SetOutputType(SPLATS); }
@@ -245,13 +246,13 @@ public:
   ///@{
   /** Splat radius (the "SplatRadius" array, and the size of the polygons) relative to the
    * distance from each isopoint to its 6th nearest isopoint. Default 1. */
-  vtkSetClampMacro(SplatScale, double, 0.01, 100.0);
+  vtkSetClampWarnMacro(SplatScale, double, 0.01, 100.0);
   vtkGetMacro(SplatScale, double);
   ///@}
 
   ///@{
   /** Corners of each splat polygon. Default 8. */
-  vtkSetClampMacro(SplatSides, int, 3, 64);
+  vtkSetClampWarnMacro(SplatSides, int, 3, 64);
   vtkGetMacro(SplatSides, int);
   ///@}
 
@@ -268,13 +269,13 @@ public:
   /** How many particle geometries (e.g. time steps) keep their neighbourhoods for reuse.
    * Each costs roughly 200 bytes per particle with 26 neighbours (neighbour lists, positions,
    * kd-tree, and MLS stencils where the surface passed). Default 4. */
-  vtkSetClampMacro(NeighborCacheSize, int, 1, 1000);
+  vtkSetClampWarnMacro(NeighborCacheSize, int, 1, 1000);
   vtkGetMacro(NeighborCacheSize, int);
   ///@}
 
   ///@{
   /** Threads for the parallel loops; 0 (default) uses all cores. */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkSetClampWarnMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 

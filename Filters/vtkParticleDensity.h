@@ -22,6 +22,7 @@
 #define vtkParticleDensity_h
 
 #include "LevelSetIsosurfaceFiltersModule.h" // for export macro
+#include "vtkLevelSetMacros.h"               // for vtkSetClampWarnMacro
 #include "vtkPointSetAlgorithm.h"
 
 class LEVELSETISOSURFACEFILTERS_EXPORT vtkParticleDensity : public vtkPointSetAlgorithm
@@ -33,7 +34,7 @@ public:
 
   ///@{
   /** Particles inside each kernel's support, the particle itself included. Default 64. */
-  vtkSetClampMacro(NumberOfNeighbors, int, 2, 1000);
+  vtkSetClampWarnMacro(NumberOfNeighbors, int, 2, 1000);
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}
 
@@ -45,7 +46,7 @@ public:
   };
   ///@{
   /** The SPH kernel. Default CUBIC_SPLINE. */
-  vtkSetClampMacro(Kernel, int, CUBIC_SPLINE, WENDLAND_C2);
+  vtkSetClampWarnMacro(Kernel, int, CUBIC_SPLINE, WENDLAND_C2);
   vtkGetMacro(Kernel, int);
   void SetKernelToCubicSpline() { this->SetKernel(CUBIC_SPLINE); }
   void SetKernelToQuinticSpline() { this->SetKernel(QUINTIC_SPLINE); }

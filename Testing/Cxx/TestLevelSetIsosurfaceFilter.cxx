@@ -298,6 +298,24 @@ void TestBadInput()
     }
   }
   {
+    // Out-of-range values are clamped with a warning naming the property and the value used.
+    vtkNew<vtkLevelSetIsosurface> filter;
+    vtkNew<MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->SetNumberOfNeighbors(500);
+    Check(filter->GetNumberOfNeighbors() == 200 && warnings->Count == 1 &&
+        warnings->Last.find("NumberOfNeighbors 500 is outside [4, 200]: 200 is used") !=
+          std::string::npos,
+      "NumberOfNeighbors 500: clamped to 200 with a warning (got: " + warnings->Last + ")");
+    filter->SetEpsilon(std::numeric_limits<double>::infinity());
+    Check(
+      warnings->Count == 2 && warnings->Last.find("Epsilon inf is outside") != std::string::npos,
+      "Epsilon inf: clamped with a warning (got: " + warnings->Last + ")");
+    filter->SetNumberOfNeighbors(30);
+    Check(filter->GetNumberOfNeighbors() == 30 && warnings->Count == 2,
+      "an in-range value: no warning");
+  }
+  {
     // An evolution that hits MaximumNumberOfIterations says so; a converged one does not.
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, data);
