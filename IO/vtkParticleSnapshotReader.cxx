@@ -215,7 +215,8 @@ int vtkParticleSnapshotReader::RequestData(
     const long long end = type.Count * (piece + 1) / pieces;
     vtkNew<vtkPolyData> particles;
     std::string problem;
-    if (!this->ReadParticles(selected[k], begin, end, particles, problem))
+    // A rank whose share is empty (more ranks than particles of a type) reads nothing.
+    if (begin < end && !this->ReadParticles(selected[k], begin, end, particles, problem))
     {
       vtkErrorMacro("'" << this->FileName << "', " << type.Name << ": " << problem << ".");
       output->Initialize();

@@ -144,6 +144,19 @@ void TestMultiFileGadget(const std::string& dir)
   }
   reader->UpdatePiece(1, 3, 0);
   CheckGas(vtkPolyData::SafeDownCast(reader->GetOutput()), 16, 17, "piece 1 of 3");
+  // More pieces than particles: the empty pieces read nothing and report no error.
+  vtkNew<MessageCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  long long total = 0;
+  for (int piece = 0; piece < 64; ++piece)
+  {
+    reader->UpdatePiece(piece, 64, 0);
+    total +=
+      reader->GetOutput() ? vtkPolyData::SafeDownCast(reader->GetOutput())->GetNumberOfPoints() : 0;
+  }
+  Check(total == 50 && errors->Count == 0,
+    "64 pieces of 50 particles: all read once, no error (got " + std::to_string(total) + ", " +
+      std::to_string(errors->Count) + " errors)");
 }
 
 void TestArepoLike(const std::string& dir)
