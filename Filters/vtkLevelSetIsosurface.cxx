@@ -27,6 +27,7 @@
 #include "vtkSMPTools.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 
@@ -359,6 +360,22 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
     return false;
   }
   this->DataRefinementSeconds = SecondsSince(partStart);
+  if (isopoints.Points.empty())
+  {
+    // Valid inputs, no surface: say why, rather than return an empty output silently.
+    const auto above = std::count_if(
+      dataOffsets.begin(), dataOffsets.end(), [](double offset) { return offset > 0.0; });
+    const auto inside =
+      std::count_if(evolvedPhi.begin(), evolvedPhi.end(), [](double phi) { return phi > 0.0; });
+    vtkWarningMacro("No isosurface was found: "
+      << above << " of " << dataOffsets.size() << " samples lie above IsoValue " << this->IsoValue
+      << ", " << inside
+      << " of them in the seeded region after the evolution. A component needs more samples "
+         "than one neighbourhood (NumberOfNeighbors + 1 = "
+      << geometry.Stride
+      << ") to be found: lower IsoValue, move or enlarge the seed, or use fewer "
+         "NumberOfNeighbors.");
+  }
   this->IsopointSeconds = SecondsSince(start);
   this->StencilSeconds = geometry.StencilSeconds;
   if (geometry.SingularSamples > 0)

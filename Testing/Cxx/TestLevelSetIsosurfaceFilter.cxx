@@ -316,6 +316,32 @@ void TestBadInput()
       "an in-range value: no warning");
   }
   {
+    // Valid inputs but no surface (two samples above the isovalue, fewer than a neighbourhood):
+    // an empty surface with a warning that says why, never silently.
+    std::vector<double> values;
+    vtkDataArray* f = data->GetPointData()->GetArray("f");
+    for (vtkIdType i = 0; i < f->GetNumberOfTuples(); ++i)
+    {
+      values.push_back(f->GetTuple1(i));
+    }
+    std::sort(values.rbegin(), values.rend());
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetSeedRadius(0); // every component
+    filter->SetIsoValue(0.5 * (values[1] + values[2]));
+    vtkNew<MessageCounter> warnings, errors;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->Update();
+    std::cout << "two samples above the isovalue: " << filter->GetOutput(0)->GetNumberOfPoints()
+              << " isopoints; warnings " << warnings->Count << " (" << warnings->Last
+              << "), errors " << errors->Count << " (" << errors->Last << ")\n";
+    Check(filter->GetOutput(0)->GetNumberOfPoints() > 0 ||
+        warnings->Last.find("No isosurface was found: 2 of 5000 samples lie above IsoValue") !=
+          std::string::npos,
+      "an empty surface comes with a warning that says why");
+  }
+  {
     // An evolution that hits MaximumNumberOfIterations says so; a converged one does not.
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, data);
