@@ -119,18 +119,53 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
 // their covariance is negligible against the largest.
 bool IsFlat(const std::vector<double>& positions)
 {
+  // The covariance of the bulk: points outside the 1st-99th percentile range of any axis are
+  // left out, so that a few far outliers cannot make 3D data look flat (their own variance
+  // would dwarf the others).
   const std::size_t n = positions.size() / 3;
+  double low[3], high[3];
+  std::vector<double> axis(n);
+  for (int k = 0; k < 3; ++k)
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      axis[i] = positions[3 * i + k];
+    }
+    const std::size_t a = n / 100, b = n - 1 - n / 100;
+    std::nth_element(axis.begin(), axis.begin() + a, axis.end());
+    low[k] = axis[a];
+    std::nth_element(axis.begin(), axis.begin() + b, axis.end());
+    high[k] = axis[b];
+  }
+  auto inBulk = [&](std::size_t i) {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (positions[3 * i + k] < low[k] || positions[3 * i + k] > high[k])
+      {
+        return false;
+      }
+    }
+    return true;
+  };
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::size_t count = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    mean += Eigen::Vector3d(&positions[3 * i]);
+    if (inBulk(i))
+    {
+      mean += Eigen::Vector3d(&positions[3 * i]);
+      ++count;
+    }
   }
-  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  mean /= static_cast<double>(std::max<std::size_t>(count, 1));
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (std::size_t i = 0; i < n; ++i)
   {
-    const Eigen::Vector3d d = Eigen::Vector3d(&positions[3 * i]) - mean;
-    covariance.noalias() += d * d.transpose();
+    if (inBulk(i))
+    {
+      const Eigen::Vector3d d = Eigen::Vector3d(&positions[3 * i]) - mean;
+      covariance.noalias() += d * d.transpose();
+    }
   }
   const Eigen::Vector3d eigenvalues =
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)

@@ -316,6 +316,27 @@ void TestBadInput()
       "an in-range value: no warning");
   }
   {
+    // One far outlier does not make 3D data look flat ("all points on a plane or line" was
+    // reported): the surface of the ball is found as without it.
+    vtkNew<vtkPolyData> outlier = Ball(5000);
+    outlier->GetPoints()->SetPoint(123, 1e10, 30.0, 30.0);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, outlier);
+    vtkNew<MessageCounter> errors;
+    filter->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->Update();
+    std::cout << "one outlier at 1e10: " << filter->GetOutput(0)->GetNumberOfPoints()
+              << " isopoints, errors " << errors->Count << " " << errors->Last << "\n";
+    vtkNew<vtkLevelSetIsosurface> clean;
+    Configure(clean, data);
+    clean->Update();
+    const double ratio = static_cast<double>(filter->GetOutput(0)->GetNumberOfPoints()) /
+      static_cast<double>(clean->GetOutput(0)->GetNumberOfPoints());
+    std::cout << "  without the outlier: " << clean->GetOutput(0)->GetNumberOfPoints() << "\n";
+    Check(errors->Count == 0 && ratio > 0.9 && ratio < 1.1,
+      "one outlier at 1e10: no flatness error, the surface found as without it");
+  }
+  {
     // Valid inputs but no surface (two samples above the isovalue, fewer than a neighbourhood):
     // an empty surface with a warning that says why, never silently.
     std::vector<double> values;
