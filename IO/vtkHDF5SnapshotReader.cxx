@@ -173,46 +173,62 @@ std::vector<std::string> PartFileNames(const std::string& file, int parts)
   return names;
 }
 
-// The VTK array and the HDF5 memory type for a dataset's type; null for types we do not read.
-vtkSmartPointer<vtkDataArray> ArrayFor(hid_t type, hid_t& memoryType)
+// The VTK array type for a dataset's type (the same class, size and sign), or -1 for types we do
+// not read (compound, strings, ...).
+int ArrayTypeFor(hid_t type)
 {
   const std::size_t size = H5Tget_size(type);
-  int vtkType = -1;
+  const bool isSigned = H5Tget_sign(type) == H5T_SGN_2;
   switch (H5Tget_class(type))
   {
     case H5T_FLOAT:
-      vtkType = size == 4 ? VTK_FLOAT : VTK_DOUBLE;
-      memoryType = size == 4 ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
-      break;
+      return size == 4 ? VTK_FLOAT : VTK_DOUBLE;
     case H5T_INTEGER:
-    {
-      const bool isSigned = H5Tget_sign(type) == H5T_SGN_2;
       if (size <= 1)
       {
-        vtkType = isSigned ? VTK_TYPE_INT8 : VTK_TYPE_UINT8;
-        memoryType = isSigned ? H5T_NATIVE_INT8 : H5T_NATIVE_UINT8;
+        return isSigned ? VTK_TYPE_INT8 : VTK_TYPE_UINT8;
       }
-      else if (size == 2)
+      if (size == 2)
       {
-        vtkType = isSigned ? VTK_TYPE_INT16 : VTK_TYPE_UINT16;
-        memoryType = isSigned ? H5T_NATIVE_INT16 : H5T_NATIVE_UINT16;
+        return isSigned ? VTK_TYPE_INT16 : VTK_TYPE_UINT16;
       }
-      else if (size == 4)
+      if (size == 4)
       {
-        vtkType = isSigned ? VTK_TYPE_INT32 : VTK_TYPE_UINT32;
-        memoryType = isSigned ? H5T_NATIVE_INT32 : H5T_NATIVE_UINT32;
+        return isSigned ? VTK_TYPE_INT32 : VTK_TYPE_UINT32;
       }
-      else
-      {
-        vtkType = isSigned ? VTK_TYPE_INT64 : VTK_TYPE_UINT64;
-        memoryType = isSigned ? H5T_NATIVE_INT64 : H5T_NATIVE_UINT64;
-      }
-      break;
-    }
+      return isSigned ? VTK_TYPE_INT64 : VTK_TYPE_UINT64;
     default:
-      return nullptr;
+      return -1;
   }
-  return vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(vtkType));
+}
+
+// The HDF5 memory type of a VTK array type from ArrayTypeFor: what H5Dread converts into, so
+// that a dataset stored with another type in another part of the snapshot still lands right.
+hid_t MemoryTypeFor(int arrayType)
+{
+  switch (arrayType)
+  {
+    case VTK_FLOAT:
+      return H5T_NATIVE_FLOAT;
+    case VTK_DOUBLE:
+      return H5T_NATIVE_DOUBLE;
+    case VTK_TYPE_INT8:
+      return H5T_NATIVE_INT8;
+    case VTK_TYPE_UINT8:
+      return H5T_NATIVE_UINT8;
+    case VTK_TYPE_INT16:
+      return H5T_NATIVE_INT16;
+    case VTK_TYPE_UINT16:
+      return H5T_NATIVE_UINT16;
+    case VTK_TYPE_INT32:
+      return H5T_NATIVE_INT32;
+    case VTK_TYPE_UINT32:
+      return H5T_NATIVE_UINT32;
+    case VTK_TYPE_INT64:
+      return H5T_NATIVE_INT64;
+    default:
+      return H5T_NATIVE_UINT64;
+  }
 }
 
 // The names of the datasets directly in `group`.
@@ -497,28 +513,25 @@ bool vtkHDF5SnapshotReader::ReadParticles(
           " particles of this type";
         return false;
       }
-      hid_t memoryType = -1;
       if (!arrays[d])
       {
-        arrays[d] = ArrayFor(fileType, memoryType);
-        if (!arrays[d])
+        const int arrayType = ArrayTypeFor(fileType);
+        if (arrayType < 0)
         {
           continue; // compound or other types: not a numeric array
         }
+        arrays[d] = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(arrayType));
         arrays[d]->SetName(names[d].c_str());
         arrays[d]->SetNumberOfComponents(static_cast<int>(rank == 2 ? dims[1] : 1));
         arrays[d]->SetNumberOfTuples(count);
-      }
-      else
-      {
-        ArrayFor(fileType, memoryType);
       }
       const hsize_t start[2] = { static_cast<hsize_t>(from - (partStart - inPart)), 0 };
       const hsize_t extent[2] = { static_cast<hsize_t>(to - from), dims[1] };
       H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, extent, nullptr);
       Handle memory(H5Screate_simple(rank, extent, nullptr), H5Sclose);
       void* target = arrays[d]->GetVoidPointer(filled * arrays[d]->GetNumberOfComponents());
-      if (H5Dread(dataset, memoryType, memory, space, H5P_DEFAULT, target) < 0)
+      if (H5Dread(dataset, MemoryTypeFor(arrays[d]->GetDataType()), memory, space, H5P_DEFAULT,
+            target) < 0)
       {
         problem =
           "cannot read " + group + "/" + names[d] + " in " + this->Parts[p] + " (truncated file?)";

@@ -8,7 +8,8 @@ tests can check each one.
 - gadget4_multi.0.hdf5, gadget4_multi.1.hdf5: one GADGET-4 snapshot split over two files
   (NumFilesPerSnapshot 2): 50 gas (30 + 20) with GADGET's singular names (Density,
   SmoothingLength, InternalEnergy), 40 dark matter (25 + 15) without a Masses dataset (MassTable),
-  ParticleIDs, scalar BoxSize 10, Time 2.5.
+  ParticleIDs, scalar BoxSize 10, Time 2.5; Density is float32 in the first file, float64 in
+  the second.
 - arepo_like.hdf5: AREPO style, no SmoothingLength: 60 gas with Masses and Density, 7 stars
   (PartType4) with GFM_StellarFormationTime, BoxSize as a 3-vector, Time 0.5.
 - bad_not_snapshot.hdf5 (HDF5 without a Header), bad_truncated.hdf5 (half of arepo_like.hdf5),
@@ -38,12 +39,12 @@ def header(f, this_file, total, mass_table, time, box, files=1):
     h.attrs["NumFilesPerSnapshot"] = np.int32(files)
 
 
-def gas(group, first, count, smoothing=True, masses=True):
+def gas(group, first, count, smoothing=True, masses=True, density_type=np.float32):
     i = np.arange(first, first + count)
     xyz = np.stack([gas_value(i, 0), gas_value(i, 1), gas_value(i, 2)], axis=1)
     group["Coordinates"] = xyz.astype(np.float64)
     group["Velocities"] = (-xyz).astype(np.float32)
-    group["Density"] = gas_value(i, 3).astype(np.float32)
+    group["Density"] = gas_value(i, 3).astype(density_type)
     group["InternalEnergy"] = gas_value(i, 4).astype(np.float32)
     group["ParticleIDs"] = (1000 + i).astype(np.uint64)
     if smoothing:
@@ -67,7 +68,10 @@ def main(out):
         with h5py.File(path("gadget4_multi.%d.hdf5" % part), "w") as f:
             header(f, [gn, dn, 0, 0, 0, 0], [50, 40, 0, 0, 0, 0], [0, 0.5, 0, 0, 0, 0], 2.5,
                    np.float64(10.0), files=2)
-            gas(f.create_group("PartType0"), g0, gn)
+            # The second file stores Density as float64, the first as float32: both are read
+            # into one array, converted by HDF5.
+            gas(f.create_group("PartType0"), g0, gn,
+                density_type=np.float64 if part else np.float32)
             dark(f.create_group("PartType1"), d0, dn)
             f.create_group("Config").attrs["NTYPES"] = np.int32(6)
     # AREPO style: no smoothing lengths, stars, BoxSize as a vector.
