@@ -35,6 +35,9 @@ struct IsopointSettings
   int DataFitScale = 2;
   double DataMaximumMove = 0.5;
   int DataIterations = 3;
+  // On the SPH field (exact, smooth): reach in local sample spacings, and Newton steps.
+  double SPHMaximumMove = 1.0;
+  int SPHIterations = 8;
 };
 
 struct IsopointSet
@@ -76,6 +79,14 @@ bool CompleteIsopoints(const Neighborhoods& geometry, const std::vector<double>&
 /// takes its normal from that fit. Returns false only when aborted.
 bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+
+class SPHField;
+
+/// Step 7 on SPH data: like RefineIsopointsOnData, but onto the SPH field's level `isoValue`
+/// (LevelSetSPHField.h), with the kernel's analytic gradient as the normal, and a reach of
+/// SPHMaximumMove times the spacing of the sample nearest to each isopoint.
+bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
+  double isoValue, const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 
 // Pieces shared by the three steps.
 

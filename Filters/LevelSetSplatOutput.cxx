@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSplatOutput.h"
 
+#include "IsopointRefinement.h"
+#include "LevelSetSPHField.h"
 #include "Splats.h"
 
 #include "vtkCellArray.h"
@@ -14,11 +16,15 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 namespace lsi
 {
 
-bool MakeSplatPolygons(
-  vtkPolyData* isopoints, int sides, vtkPolyData* splats, const AbortCheck& aborted)
+bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
+  vtkPolyData* splats, const AbortCheck& aborted)
 {
   const vtkIdType count = isopoints->GetNumberOfPoints();
   vtkPointData* pointData = isopoints->GetPointData();
@@ -30,6 +36,7 @@ bool MakeSplatPolygons(
   cornerPoints->SetDataTypeToDouble();
   cornerPoints->SetNumberOfPoints(corners);
   double* xyz = static_cast<double*>(cornerPoints->GetData()->GetVoidPointer(0));
+  std::vector<float> cornerNormals(field ? 3 * static_cast<std::size_t>(corners) : 0);
   const bool completed = ParallelForInBlocks(
     static_cast<std::size_t>(count),
     [&](std::size_t begin, std::size_t end) {
@@ -38,8 +45,34 @@ bool MakeSplatPolygons(
         double c[3], n[3];
         isopoints->GetPoint(static_cast<vtkIdType>(i), c);
         normals->GetTuple(static_cast<vtkIdType>(i), n);
-        DiskCorners(Eigen::Vector3d(c), Eigen::Vector3d(n).normalized(),
-          radii->GetComponent(static_cast<vtkIdType>(i), 0), sides, &xyz[3 * i * sides]);
+        const double radius = radii->GetComponent(static_cast<vtkIdType>(i), 0);
+        const Eigen::Vector3d normal = Eigen::Vector3d(n).normalized();
+        DiskCorners(Eigen::Vector3d(c), normal, radius, sides, &xyz[3 * i * sides]);
+        for (int k = 0; field && k < sides; ++k)
+        {
+          double* corner = &xyz[3 * (i * sides + k)];
+          Eigen::Vector3d p(corner), gradient;
+          auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
+            field->Evaluate(x.data(), value, g.data());
+            value -= isoValue;
+            return std::isfinite(value);
+          };
+          Eigen::Vector3d cornerNormal = normal;
+          if (SlideOntoDataLevel(p, normal, evaluate, radius, 4, gradient))
+          {
+            double value;
+            field->Evaluate(p.data(), value, gradient.data());
+            if (gradient.squaredNorm() > 0.0)
+            {
+              cornerNormal = -gradient.normalized();
+              std::copy(p.data(), p.data() + 3, corner);
+            }
+          }
+          for (int d = 0; d < 3; ++d)
+          {
+            cornerNormals[3 * (i * sides + k) + d] = static_cast<float>(cornerNormal[d]);
+          }
+        }
       }
     },
     aborted);
@@ -82,6 +115,16 @@ bool MakeSplatPolygons(
     copy->SetNumberOfComponents(source->GetNumberOfComponents());
     copy->SetNumberOfTuples(corners);
     source->GetTuples(owner, copy);
+    if (field && copy->GetName() && std::string(copy->GetName()) == "Normals")
+    {
+      for (vtkIdType k = 0; k < corners; ++k)
+      {
+        for (int d = 0; d < 3; ++d)
+        {
+          copy->SetComponent(k, d, cornerNormals[3 * k + d]);
+        }
+      }
+    }
     cornerData->AddArray(copy);
   }
   cornerData->SetActiveNormals("Normals");

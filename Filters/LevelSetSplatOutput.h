@@ -12,12 +12,16 @@ class vtkPolyData;
 
 namespace lsi
 {
+class SPHField;
 
 /// Fills `splats` with `sides` corners per point of `isopoints` and one polygon per point; every
 /// point array of `isopoints` (normals, radius, interpolated data) is copied to the corners of
-/// its polygon. Returns false only when aborted.
-bool MakeSplatPolygons(
-  vtkPolyData* isopoints, int sides, vtkPolyData* splats, const AbortCheck& aborted);
+/// its polygon. With an SPH field (`field` not null), each corner then slides along its splat's
+/// normal onto the field's level `isoValue` (at most the splat's radius) and takes the field's
+/// normal there: the polygons bend with the surface, so the corners lie on it and their normals
+/// are the field's, instead of tangent-plane approximations. Returns false only when aborted.
+bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
+  vtkPolyData* splats, const AbortCheck& aborted);
 
 } // namespace lsi
 

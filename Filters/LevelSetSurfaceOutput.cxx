@@ -3,6 +3,7 @@
 #include "LevelSetSurfaceOutput.h"
 
 #include "LevelSetMLSFit.h"
+#include "LevelSetSPHField.h"
 #include "NearestNeighbors.h"
 #include "Splats.h"
 
@@ -92,9 +93,42 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
     aborted, 8192);
 }
 
+bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& field,
+  const std::vector<double>& points, const std::vector<vtkDataArray*>& sources,
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted)
+{
+  const std::size_t count = points.size() / 3;
+  return ParallelForInBlocks(
+    count,
+    [&](std::size_t begin, std::size_t end) {
+      std::vector<std::pair<std::uint32_t, double>> weights;
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        weights.clear();
+        field.ForEachWeight(&points[3 * i],
+          [&](std::uint32_t j, double w) { weights.emplace_back(j, w); });
+        for (std::size_t a = 0; a < sources.size(); ++a)
+        {
+          const int components = sources[a]->GetNumberOfComponents();
+          for (int c = 0; c < components; ++c)
+          {
+            double value = 0.0;
+            for (const auto& weight : weights)
+            {
+              value += weight.second * sources[a]->GetComponent(geometry.Order[weight.first], c);
+            }
+            targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);
+          }
+        }
+      }
+    },
+    aborted, 8192);
+}
+
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
-  const char* activeScalars, vtkPolyData* surface, const AbortCheck& aborted)
+  const char* activeScalars, const SPHField* field, vtkPolyData* surface,
+  const AbortCheck& aborted)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -166,8 +200,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
   std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
   const std::size_t fitCount = 2 * static_cast<std::size_t>(geometry.Stride);
-  if (!InterpolatePointArrays(
-        geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
+  if (field ? !InterpolatePointArraysSPH(
+                geometry, *field, isopoints.Points, sourceList, targetList, aborted)
+            : !InterpolatePointArrays(
+                geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
   {
     return false;
   }

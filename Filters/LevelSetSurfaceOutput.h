@@ -19,15 +19,19 @@ class vtkPolyData;
 
 namespace lsi
 {
+class SPHField;
 
 /// Fills `surface` with the isopoints (no cells), "Normals", "SplatRadius" (`splatScale` times
 /// the distance to the 6th nearest isopoint) and, if `interpolateArrays`, every numeric array
 /// of `inputData` (input point order) interpolated over 2 (n + 1) samples; `activeScalars` (the
 /// isosurface's own scalar) becomes the active scalars, as Contour does. Returns false only when
 /// aborted.
+/// With an SPH field (`field` not null) the arrays are its interpolants instead
+/// (InterpolatePointArraysSPH).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
-  const char* activeScalars, vtkPolyData* surface, const AbortCheck& aborted);
+  const char* activeScalars, const SPHField* field, vtkPolyData* surface,
+  const AbortCheck& aborted);
 
 /// Splat radius of each point (3 doubles per point): `factor` times the distance to its
 /// `neighbors`-th nearest other point. Returns false only when aborted.
@@ -41,6 +45,12 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
 /// singular the nearest sample's value is copied. Returns false only when aborted.
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted);
+
+/// Like InterpolatePointArrays, with the SPH field's interpolant: A(x) = sum_j (m_j / rho_j)
+/// A_j W(|x - x_j|, H_j) (LevelSetSPHField.h). Returns false only when aborted.
+bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& field,
+  const std::vector<double>& points, const std::vector<vtkDataArray*>& sources,
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted);
 
 } // namespace lsi

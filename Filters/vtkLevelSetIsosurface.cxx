@@ -10,6 +10,7 @@
 #include "LevelSetNeighborCache.h"
 #include "LevelSetParameters.h"
 #include "LevelSetParticleOutput.h"
+#include "LevelSetSPHField.h"
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetSplatOutput.h"
 #include "LevelSetSurfaceOutput.h"
@@ -39,7 +40,8 @@ using lsi::Clock;
 using lsi::SecondsSince;
 
 // Each stage reports its progress over its own part of [0, 1], in proportion to its time.
-constexpr double NeighborStage[2] = { 0.02, 0.35 };
+constexpr double NeighborStage[2] = { 0.02, 0.33 };
+constexpr double SPHFieldStage[2] = { 0.33, 0.35 };
 constexpr double InitializationStage[2] = { 0.35, 0.45 };
 constexpr double EvolutionStage[2] = { 0.45, 0.8 };
 constexpr double IsopointStage[2] = { 0.8, 0.92 };
@@ -141,8 +143,21 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
+  std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples
+  if (!this->BuildSPHField(input, *geometry, values, field))
+  {
+    return false;
+  }
   std::vector<double> dataOffsets, dataSign; // f - f_iso and its sign, in storage order
-  lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
+  if (!field)
+  {
+    lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
+  }
+  else if (!lsi::SPHOffsetsAtSamples(*geometry, *field, this->IsoValue, dataOffsets, dataSign,
+             this->Stage(SPHFieldStage)))
+  {
+    return false;
+  }
   const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign);
   const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
   std::vector<double> phi;
@@ -156,11 +171,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   lsi::IsopointSet isopoints;
-  if (!this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, isopoints))
+  if (!this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, field.get(), isopoints))
   {
     return false;
   }
-  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, surfaceOutput))
+  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(), surfaceOutput))
   {
     return false;
   }
@@ -178,7 +193,8 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
     { "Epsilon", this->Epsilon }, { "CurvatureEpsilon", this->CurvatureEpsilon },
     { "TimeStep", this->TimeStep }, { "CurvatureWeight", this->CurvatureWeight },
     { "DistanceRegularization", this->DistanceRegularization },
-    { "ConvergenceTolerance", this->ConvergenceTolerance }, { "SplatScale", this->SplatScale } };
+    { "ConvergenceTolerance", this->ConvergenceTolerance }, { "SplatScale", this->SplatScale },
+    { "SupportPerSmoothingLength", this->SupportPerSmoothingLength } };
   for (double value : this->AdditionalSeeds)
   {
     parameters.emplace_back("AdditionalSeeds", value);
@@ -298,6 +314,43 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   return true;
 }
 
+bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+  const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field)
+{
+  this->UsedSPHField = false;
+  lsi::SPHFieldRequest request;
+  request.Model = this->Field;
+  request.Kernel = this->Kernel;
+  request.SupportPerSmoothingLength = this->SupportPerSmoothingLength;
+  request.SmoothingLengthArray = this->SmoothingLengthArray;
+  request.MassArray = this->MassArray;
+  request.DensityArray = this->DensityArray;
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  lsi::SPHFieldArrays arrays;
+  std::string problem, choice;
+  const bool sph = lsi::FindSPHArrays(input, scalars, request, arrays, problem, choice);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return false;
+  }
+  vtkDebugMacro(<< choice);
+  if (!sph)
+  {
+    return true;
+  }
+  field.reset(new lsi::SPHField(geometry, arrays, values, problem));
+  if (!field->Valid())
+  {
+    vtkErrorMacro(<< problem);
+    field.reset();
+    return false;
+  }
+  this->UsedSPHField = true;
+  return true;
+}
+
 bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataSign, const std::vector<double>& dataOffsets,
   const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations)
@@ -332,7 +385,7 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
 
 bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<double>& evolvedPhi,
-  const lsi::SurfaceScale& scale, lsi::IsopointSet& isopoints)
+  const lsi::SurfaceScale& scale, const lsi::SPHField* field, lsi::IsopointSet& isopoints)
 {
   // Sub-stages in proportion to their times at 2M samples: isopoints 28%, completion 48%,
   // refinement on the data 24%.
@@ -354,8 +407,10 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   this->CompletionSeconds = SecondsSince(partStart);
   partStart = Clock::now();
   if (settings.RefineOnData && !isopoints.Points.empty() &&
-    !lsi::RefineIsopointsOnData(
-      geometry, dataOffsets, settings, isopoints, lsi::SubRange(stage, 0.76, 1.0)))
+    !(field ? lsi::RefineIsopointsOnSPHField(geometry, *field, this->IsoValue, settings, isopoints,
+                lsi::SubRange(stage, 0.76, 1.0))
+            : lsi::RefineIsopointsOnData(
+                geometry, dataOffsets, settings, isopoints, lsi::SubRange(stage, 0.76, 1.0))))
   {
     return false;
   }
@@ -389,14 +444,15 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
 }
 
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
-  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints, vtkPolyData* output)
+  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
+  const lsi::SPHField* field, vtkPolyData* output)
 {
   const auto start = Clock::now();
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
   vtkNew<vtkPolyData> surface;
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, isopoints, this->SplatScale,
-        this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, surface,
+        this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field, surface,
         this->Stage(SurfaceStage)))
   {
     return false;
@@ -404,7 +460,8 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   this->NumberOfIsopoints = surface->GetNumberOfPoints();
   if (this->OutputType == SPLATS)
   {
-    if (!lsi::MakeSplatPolygons(surface, this->SplatSides, output, this->Stage(SplatStage)))
+    if (!lsi::MakeSplatPolygons(
+          surface, this->SplatSides, field, this->IsoValue, output, this->Stage(SplatStage)))
     {
       return false;
     }
@@ -439,6 +496,9 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedCenter: (" << this->SeedCenter[0] << ", " << this->SeedCenter[1] << ", "
      << this->SeedCenter[2] << ")\n";
   os << indent << "NumberOfAdditionalSeeds: " << this->GetNumberOfAdditionalSeeds() << "\n";
+  os << indent << "SmoothingLengthArray: " << this->SmoothingLengthArray << "\n";
+  os << indent << "MassArray: " << this->MassArray << "\n";
+  os << indent << "DensityArray: " << this->DensityArray << "\n";
   // Every other member, by name: parameters first, then the last execution's results.
   const std::pair<const char*, double> members[] = { { "IsoValue", this->IsoValue },
     { "SeedRadius", this->SeedRadius }, { "NumberOfNeighbors", this->NumberOfNeighbors },
@@ -453,7 +513,9 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
     { "Completion", this->Completion }, { "NumberOfThreads", this->NumberOfThreads },
     { "OutputType", this->OutputType }, { "SplatScale", this->SplatScale },
     { "SplatSides", this->SplatSides }, { "InterpolateArrays", this->InterpolateArrays },
-    { "NeighborCacheSize", this->NeighborCacheSize },
+    { "NeighborCacheSize", this->NeighborCacheSize }, { "Field", this->Field },
+    { "Kernel", this->Kernel }, { "SupportPerSmoothingLength", this->SupportPerSmoothingLength },
+    { "UsedSPHField", this->UsedSPHField },
     { "NeighborSearchCount", this->NeighborSearchCount },
     { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
     { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },

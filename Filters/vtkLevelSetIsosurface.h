@@ -23,8 +23,9 @@
  * 5. isopoints: zero crossings between neighbours projected by Newton's method onto the zero
  *    level of the MLS approximation (LevelSetIsopoints);
  * 6. completion on tangent planes, so that the set renders without holes (LevelSetCompletion);
- * 7. refinement on the data: each isopoint slides to the zero of an MLS fit of f - IsoValue
- *    (LevelSetDataRefinement);
+ * 7. refinement on the data: each isopoint slides to the zero of f - IsoValue, where f is the
+ *    SPH field on particles with smoothing lengths and masses (LevelSetSPHField, see Field), else
+ *    an MLS fit of the samples (LevelSetDataRefinement);
  * 8. outputs (LevelSetSurfaceOutput, LevelSetSplatOutput, LevelSetParticleOutput,
  *    LevelSetConvergenceTable).
  *
@@ -57,6 +58,7 @@
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
 #include <vector>     // for std::vector
 
 class vtkPoints;
@@ -68,6 +70,7 @@ struct EvolutionSettings;
 struct IsopointSet;
 struct Neighborhoods;
 struct RequestedParameters;
+class SPHField;
 struct SurfaceScale;
 }
 
@@ -211,6 +214,65 @@ public:
   vtkBooleanMacro(DataRefinement, bool);
   ///@}
 
+  enum Fields
+  {
+    AUTOMATIC_FIELD = 0, // the SPH field when the input has smoothing lengths and masses
+    MLS_FIELD = 1,       // the MLS fit of the samples, always
+    SPH_FIELD = 2        // the SPH field, or an error if the input cannot give it
+  };
+  ///@{
+  /**
+   * Which field the surface is the isosurface of, in the refinement on the data, the normals
+   * and the interpolated arrays. AUTOMATIC_FIELD (default): on SPH particles (a smoothing
+   * length array and a mass array, as the readers and Particle Density mark them) the field the
+   * simulation defines, rho(x) = sum_j m_j W(|x - x_j|, H_j) for the density and
+   * A(x) = sum_j (m_j / rho_j) A_j W(|x - x_j|, H_j) for any other array, with each particle's
+   * own support H_j (not normalised); the samples' signs come from it too. On other point data
+   * (sensors, no smoothing lengths) the MLS fit of the samples. MLS_FIELD and SPH_FIELD force
+   * one; SPH_FIELD is an error without smoothing lengths and masses.
+   */
+  vtkSetClampWarnMacro(Field, int, AUTOMATIC_FIELD, SPH_FIELD);
+  vtkGetMacro(Field, int);
+  ///@}
+
+  enum Kernels
+  {
+    AUTOMATIC_KERNEL = 0, // the kernel the reader marked ("SPHKernel"), else the cubic spline
+    CUBIC_SPLINE = 1,     // M4: GADGET, GIZMO, Gasoline, ChaNGa
+    QUINTIC_SPLINE = 2,   // M6: SWIFT's default
+    WENDLAND_C2 = 3
+  };
+  ///@{
+  /** The SPH kernel of the field (see Field). Default AUTOMATIC_KERNEL. */
+  vtkSetClampWarnMacro(Kernel, int, AUTOMATIC_KERNEL, WENDLAND_C2);
+  vtkGetMacro(Kernel, int);
+  ///@}
+
+  ///@{
+  /**
+   * The kernel's support radius H per smoothing length h, H = SupportPerSmoothingLength h.
+   * 0 (default): as the reader marked it ("SupportPerSmoothingLength" field data: GADGET and
+   * GIZMO 1, SWIFT its Kernel gamma, Tipsy 2), else 2 for an array named hsmooth, else 1.
+   */
+  vtkSetClampWarnMacro(SupportPerSmoothingLength, double, 0.0, 100.0);
+  vtkGetMacro(SupportPerSmoothingLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * The point arrays of the SPH field. Empty (default): the arrays the reader marked
+   * (field data "SmoothingLengthArray", "MassArray", "DensityArray"), else the usual names
+   * (SmoothingLength(s), hsmooth; Masses, Mass, mass; Density, Densities, rho). Without a
+   * density array the densities are summed from the masses.
+   */
+  vtkSetStdStringFromCharMacro(SmoothingLengthArray);
+  vtkGetCharFromStdStringMacro(SmoothingLengthArray);
+  vtkSetStdStringFromCharMacro(MassArray);
+  vtkGetCharFromStdStringMacro(MassArray);
+  vtkSetStdStringFromCharMacro(DensityArray);
+  vtkGetCharFromStdStringMacro(DensityArray);
+  ///@}
+
   enum Initializations
   {
     SEED_SPHERES = 0, // the paper: phi starts as the distance to the seed spheres
@@ -285,6 +347,7 @@ public:
   vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);
+  vtkGetMacro(UsedSPHField, bool); // whether the last run used the SPH field (see Field)
   vtkGetMacro(MeanSampleSpacing, double);
   vtkGetMacro(EffectiveEpsilon, double);
   vtkGetMacro(EffectiveCurvatureEpsilon, double);
@@ -333,11 +396,15 @@ protected:
   int SplatSides = 8;
   bool InterpolateArrays = true;
   int NeighborCacheSize = 4;
+  int Field = AUTOMATIC_FIELD;
+  int Kernel = AUTOMATIC_KERNEL;
+  double SupportPerSmoothingLength = 0.0;
+  std::string SmoothingLengthArray, MassArray, DensityArray;
 
   // Read-only results of the last execution (see the getters).
   int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0;
   vtkIdType NumberOfIsopoints = 0;
-  bool Converged = false;
+  bool Converged = false, UsedSPHField = false;
   double MeanSampleSpacing = 0.0, EffectiveEpsilon = 0.0, EffectiveCurvatureEpsilon = 0.0,
          EffectiveTimeStep = 0.0;
   double NeighborSearchSeconds = 0.0, SpatialSortSeconds = 0.0, NearestNeighborSeconds = 0.0,
@@ -359,14 +426,16 @@ private:
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
     std::vector<double>& phi);
+  bool BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field);
   bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataSign,
     const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
     std::vector<double>& phi, vtkTable* iterations);
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
-    lsi::IsopointSet& isopoints);
+    const lsi::SPHField* field, lsi::IsopointSet& isopoints);
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const lsi::IsopointSet& isopoints, vtkPolyData* output);
+    const lsi::IsopointSet& isopoints, const lsi::SPHField* field, vtkPolyData* output);
 
   // The user's parameters, for the step files.
   lsi::RequestedParameters RequestedParameters() const;

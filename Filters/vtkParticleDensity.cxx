@@ -140,8 +140,26 @@ int vtkParticleDensity::RequestData(
   output->GetPointData()->AddArray(support);
   output->GetPointData()->AddArray(density);
   output->GetPointData()->SetActiveScalars("Density");
-  NameInFieldData(output->GetFieldData(), "DensityArray", "Density");
-  NameInFieldData(output->GetFieldData(), "SmoothingLengthArray", "SmoothingLength");
+  if (!masses) // the unit masses the density assumed, so that the SPH field can use them
+  {
+    vtkNew<vtkDoubleArray> ones;
+    ones->SetName("Masses");
+    ones->SetNumberOfValues(n);
+    ones->Fill(1.0);
+    output->GetPointData()->AddArray(ones);
+  }
+  // What the SPH field of this density is: vtkLevelSetIsosurface reads these markers.
+  vtkFieldData* fields = output->GetFieldData();
+  NameInFieldData(fields, "DensityArray", "Density");
+  NameInFieldData(fields, "SmoothingLengthArray", "SmoothingLength");
+  NameInFieldData(fields, "MassArray", masses ? masses->GetName() : "Masses");
+  const char* kernelNames[] = { "CubicSpline", "QuinticSpline", "WendlandC2" };
+  NameInFieldData(fields, "SPHKernel", kernelNames[this->Kernel]);
+  vtkNew<vtkDoubleArray> supportFactor; // SmoothingLength is the support radius itself
+  supportFactor->SetName("SupportPerSmoothingLength");
+  supportFactor->InsertNextValue(1.0);
+  fields->RemoveArray("SupportPerSmoothingLength");
+  fields->AddArray(supportFactor);
   return 1;
 }
 

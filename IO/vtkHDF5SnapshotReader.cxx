@@ -15,6 +15,8 @@
 #include "vtk_hdf5.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <regex>
@@ -154,6 +156,48 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
   };
   hsize_t index = 0;
   H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index, visit, &context);
+}
+
+// The SPH kernel a file names, as the readers mark it ("CubicSpline", "QuinticSpline",
+// "WendlandC2"), and its support per smoothing length. SWIFT writes HydroScheme attributes
+// "Kernel function" (e.g. "Quintic spline (M6)") and "Kernel gamma" (support = gamma h);
+// GADGET-4 writes its compile flags in Config (WENDLAND_C2_KERNEL) and h is the support.
+// Anything else keeps GADGET's cubic spline with h = H.
+void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLength)
+{
+  if (Exists(file, "HydroScheme"))
+  {
+    Handle scheme(H5Gopen2(file, "HydroScheme", H5P_DEFAULT), H5Gclose);
+    vtkNew<vtkFieldData> attributes;
+    AttributesToFieldData(scheme, "", attributes);
+    if (auto* name = vtkStringArray::SafeDownCast(attributes->GetAbstractArray("Kernel function")))
+    {
+      std::string lower = name->GetValue(0);
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (lower.find("quintic") != std::string::npos)
+      {
+        kernel = "QuinticSpline";
+      }
+      else if (lower.find("wendland c2") != std::string::npos)
+      {
+        kernel = "WendlandC2";
+      }
+    }
+    const std::vector<double> gamma = NumericAttribute(scheme, "Kernel gamma");
+    if (!gamma.empty() && gamma[0] > 0.0 && std::isfinite(gamma[0]))
+    {
+      supportPerSmoothingLength = gamma[0];
+    }
+  }
+  else if (Exists(file, "Config"))
+  {
+    Handle config(H5Gopen2(file, "Config", H5P_DEFAULT), H5Gclose);
+    if (H5Aexists(config, "WENDLAND_C2_KERNEL") > 0)
+    {
+      kernel = "WendlandC2";
+    }
+  }
 }
 
 // The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
@@ -310,6 +354,8 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
   this->TypeNumbers.clear();
   this->PartCounts.clear();
   this->MassTable.clear();
+  this->Kernel = "CubicSpline";
+  this->SupportPerSmoothingLength = 1.0;
   {
     std::ifstream exists(this->FileName);
     if (!exists)
@@ -344,6 +390,7 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
       AttributesToFieldData(g, std::string(group) + "/", fields);
     }
   }
+  ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength);
   const std::vector<double> times = NumericAttribute(header, "Time");
   time = times.empty() ? 0.0 : times[0];
   this->MassTable = NumericAttribute(header, "MassTable");
@@ -544,7 +591,9 @@ bool vtkHDF5SnapshotReader::ReadParticles(
   vtkPointData* pointData = output->GetPointData();
   vtkNew<vtkPoints> points;
   bool havePoints = false, haveMasses = false;
-  std::string density, smoothingLength;
+  SPHMarkers markers;
+  markers.Kernel = this->Kernel;
+  markers.SupportPerSmoothingLength = this->SupportPerSmoothingLength;
   for (vtkDataArray* array : arrays)
   {
     if (!array)
@@ -568,8 +617,9 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     }
     pointData->AddArray(array);
     haveMasses = haveMasses || name == "Masses";
-    density = OneOf(name, DensityNames) ? name : density;
-    smoothingLength = OneOf(name, SmoothingLengthNames) ? name : smoothingLength;
+    markers.Density = OneOf(name, DensityNames) ? name : markers.Density;
+    markers.SmoothingLength =
+      OneOf(name, SmoothingLengthNames) ? name : markers.SmoothingLength;
   }
   if (!havePoints)
   {
@@ -584,8 +634,10 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     masses->SetNumberOfValues(count);
     masses->Fill(this->MassTable[number]);
     pointData->AddArray(masses);
+    haveMasses = true;
   }
-  MarkSPHArrays(output, density, smoothingLength);
+  markers.Mass = haveMasses ? "Masses" : "";
+  MarkSPHArrays(output, markers);
   return true;
 }
 

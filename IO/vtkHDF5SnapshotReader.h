@@ -64,6 +64,10 @@ private:
   std::vector<int> TypeNumbers;                   // PartType number of each listed type
   std::vector<std::vector<long long>> PartCounts; // [part][listed type]: particles in that file
   std::vector<double> MassTable;                  // per PartType number
+  // The SPH kernel and its support per smoothing length (SWIFT's HydroScheme "Kernel function"
+  // and "Kernel gamma"; GADGET-4's Config WENDLAND_C2_KERNEL; else GADGET's cubic spline, h = H).
+  std::string Kernel = "CubicSpline";
+  double SupportPerSmoothingLength = 1.0;
 };
 
 #endif

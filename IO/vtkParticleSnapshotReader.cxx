@@ -6,6 +6,7 @@
 #include "vtkCommand.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArraySelection.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -69,23 +70,33 @@ vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
   return cells;
 }
 
-void vtkParticleSnapshotReader::MarkSPHArrays(
-  vtkPolyData* particles, const std::string& density, const std::string& smoothingLength)
+void vtkParticleSnapshotReader::MarkSPHArrays(vtkPolyData* particles, const SPHMarkers& markers)
 {
-  for (const auto& marker : { std::make_pair("DensityArray", density),
-         std::make_pair("SmoothingLengthArray", smoothingLength) })
+  vtkFieldData* fields = particles->GetFieldData();
+  const bool smoothed = !markers.SmoothingLength.empty();
+  for (const auto& marker : { std::make_pair("DensityArray", markers.Density),
+         std::make_pair("SmoothingLengthArray", markers.SmoothingLength),
+         std::make_pair("MassArray", markers.Mass),
+         std::make_pair("SPHKernel", smoothed ? markers.Kernel : std::string()) })
   {
     if (!marker.second.empty())
     {
       vtkNew<vtkStringArray> name;
       name->SetName(marker.first);
       name->InsertNextValue(marker.second);
-      particles->GetFieldData()->AddArray(name);
+      fields->AddArray(name);
     }
   }
-  if (!density.empty())
+  if (smoothed)
   {
-    particles->GetPointData()->SetActiveScalars(density.c_str());
+    vtkNew<vtkDoubleArray> support;
+    support->SetName("SupportPerSmoothingLength");
+    support->InsertNextValue(markers.SupportPerSmoothingLength);
+    fields->AddArray(support);
+  }
+  if (!markers.Density.empty())
+  {
+    particles->GetPointData()->SetActiveScalars(markers.Density.c_str());
   }
 }
 

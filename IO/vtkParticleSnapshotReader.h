@@ -84,12 +84,25 @@ protected:
     std::string& problem) = 0;
 
   /**
-   * Marks the density and smoothing-length arrays of `particles` (empty names: none): the density
-   * becomes the active scalars, and field data "DensityArray" and "SmoothingLengthArray" name
-   * them, so that filters find them without the user naming them.
+   * What a snapshot says about its SPH field: the names of its density, smoothing-length and mass
+   * arrays (empty: none), its kernel ("CubicSpline", "QuinticSpline" or "WendlandC2") and the
+   * kernel's support radius per smoothing length (GADGET: 1, SWIFT: its Kernel gamma, Tipsy: 2).
    */
-  static void MarkSPHArrays(
-    vtkPolyData* particles, const std::string& density, const std::string& smoothingLength);
+  struct SPHMarkers
+  {
+    std::string Density, SmoothingLength, Mass;
+    std::string Kernel = "CubicSpline";
+    double SupportPerSmoothingLength = 1.0;
+  };
+
+  /**
+   * Marks the SPH arrays of `particles`: the density becomes the active scalars, and field data
+   * "DensityArray", "SmoothingLengthArray", "MassArray", "SPHKernel" and
+   * "SupportPerSmoothingLength" say what they are, so that filters (vtkLevelSetIsosurface's SPH
+   * field) find them without the user naming them. The kernel is only marked with a smoothing
+   * length.
+   */
+  static void MarkSPHArrays(vtkPolyData* particles, const SPHMarkers& markers);
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

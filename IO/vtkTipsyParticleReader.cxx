@@ -212,7 +212,12 @@ bool vtkTipsyParticleReader::ReadParticles(
   output->GetPointData()->AddArray(velocity);
   if (output->GetPointData()->GetArray("rho")) // gas
   {
-    MarkSPHArrays(output, "rho", "hsmooth");
+    SPHMarkers markers; // Gasoline and ChaNGa: the cubic spline's support is 2 hsmooth
+    markers.Density = "rho";
+    markers.SmoothingLength = "hsmooth";
+    markers.Mass = "mass";
+    markers.SupportPerSmoothingLength = 2.0;
+    MarkSPHArrays(output, markers);
   }
   return true;
 }

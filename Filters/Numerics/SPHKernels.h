@@ -7,7 +7,9 @@
 #ifndef SPHKernels_h
 #define SPHKernels_h
 
+#include <cctype>
 #include <cmath>
+#include <string>
 
 namespace lsi
 {
@@ -46,6 +48,81 @@ inline double SPHKernelValue(SPHKernel kernel, double r, double H)
       return norm * (21.0 / (2.0 * pi)) * std::pow(1.0 - q, 4) * (1.0 + 4.0 * q);
   }
   return 0.0;
+}
+
+/// dW/dr (r, H): the radial derivative, <= 0 on [0, H), 0 beyond. The gradient of W(|x - x_j|, H)
+/// with respect to x is dW/dr * (x - x_j) / r (and 0 at r = 0, where every kernel is flat).
+inline double SPHKernelDerivative(SPHKernel kernel, double r, double H)
+{
+  const double pi = 3.14159265358979323846;
+  const double q = r / H;
+  if (!(q < 1.0))
+  {
+    return 0.0;
+  }
+  const double norm = 1.0 / (H * H * H * H); // d/dr = (1/H) d/dq
+  switch (kernel)
+  {
+    case SPHKernel::CubicSpline:
+      return norm * (8.0 / pi) *
+        (q <= 0.5 ? -12.0 * q + 18.0 * q * q : -6.0 * (1.0 - q) * (1.0 - q));
+    case SPHKernel::QuinticSpline:
+    {
+      const double a = 1.0 - q, b = 2.0 / 3.0 - q, c = 1.0 / 3.0 - q;
+      double w = -5.0 * std::pow(a, 4);
+      w += b > 0.0 ? 30.0 * std::pow(b, 4) : 0.0;
+      w -= c > 0.0 ? 75.0 * std::pow(c, 4) : 0.0;
+      return norm * (2187.0 / (40.0 * pi)) * w;
+    }
+    case SPHKernel::WendlandC2:
+      return norm * (21.0 / (2.0 * pi)) * (-20.0 * q * std::pow(1.0 - q, 3));
+  }
+  return 0.0;
+}
+
+/// The kernel a snapshot names (SWIFT's HydroScheme "Kernel function", e.g. "Quintic spline
+/// (M6)", "Wendland C2"), or `fallback` when the name is none of the three.
+inline SPHKernel SPHKernelFromName(const std::string& name, SPHKernel fallback)
+{
+  std::string lower(name);
+  for (char& c : lower)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  if (lower.find("quintic") != std::string::npos || lower.find("m6") != std::string::npos)
+  {
+    return SPHKernel::QuinticSpline;
+  }
+  if (lower.find("wendland") != std::string::npos && lower.find("c2") != std::string::npos)
+  {
+    return SPHKernel::WendlandC2;
+  }
+  if (lower.find("cubic") != std::string::npos || lower.find("m4") != std::string::npos)
+  {
+    return SPHKernel::CubicSpline;
+  }
+  return fallback;
+}
+
+/// Adds c W(|x - xj|, H) to `value` and its gradient in x to `gradient` (3 doubles).
+inline void AccumulateKernel(SPHKernel kernel, const double* x, const double* xj, double H,
+  double c, double& value, double* gradient)
+{
+  const double d[3] = { x[0] - xj[0], x[1] - xj[1], x[2] - xj[2] };
+  const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(r < H))
+  {
+    return;
+  }
+  value += c * SPHKernelValue(kernel, r, H);
+  if (r > 0.0)
+  {
+    const double slope = c * SPHKernelDerivative(kernel, r, H) / r;
+    for (int k = 0; k < 3; ++k)
+    {
+      gradient[k] += slope * d[k];
+    }
+  }
 }
 
 } // namespace lsi

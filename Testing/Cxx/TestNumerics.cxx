@@ -541,10 +541,60 @@ void TestSPHKernels()
   }
 }
 
+// dW/dr against central differences of W, at points of every piece of each kernel; the
+// gradient AccumulateKernel adds against differences of the value it adds; names as SWIFT
+// writes them.
+void TestSPHKernelGradients()
+{
+  double worst = 0.0;
+  for (lsi::SPHKernel kernel :
+    { lsi::SPHKernel::CubicSpline, lsi::SPHKernel::QuinticSpline, lsi::SPHKernel::WendlandC2 })
+  {
+    for (double H : { 1.0, 0.003 })
+    {
+      for (double q : { 0.1, 0.3, 0.45, 0.55, 0.7, 0.9, 0.99 })
+      {
+        const double r = q * H, step = 1e-6 * H;
+        const double numeric = (lsi::SPHKernelValue(kernel, r + step, H) -
+                                 lsi::SPHKernelValue(kernel, r - step, H)) /
+          (2.0 * step);
+        const double analytic = lsi::SPHKernelDerivative(kernel, r, H);
+        const double scale = lsi::SPHKernelValue(kernel, 0.0, H) / H;
+        worst = std::max(worst, std::abs(numeric - analytic) / scale);
+      }
+    }
+    const double x[3] = { 0.31, -0.2, 0.15 }, xj[3] = { 0.0, 0.05, 0.0 };
+    double value = 0.0, gradient[3] = { 0, 0, 0 };
+    lsi::AccumulateKernel(kernel, x, xj, 0.8, 2.5, value, gradient);
+    for (int k = 0; k < 3; ++k)
+    {
+      double xp[3] = { x[0], x[1], x[2] }, xm[3] = { x[0], x[1], x[2] };
+      xp[k] += 1e-6;
+      xm[k] -= 1e-6;
+      double vp = 0.0, vm = 0.0, unused[3] = { 0, 0, 0 };
+      lsi::AccumulateKernel(kernel, xp, xj, 0.8, 2.5, vp, unused);
+      lsi::AccumulateKernel(kernel, xm, xj, 0.8, 2.5, vm, unused);
+      worst = std::max(worst, std::abs((vp - vm) / 2e-6 - gradient[k]) / (2.5 * 10.0));
+    }
+  }
+  std::cout << "SPH kernel derivatives: worst relative difference " << worst << "\n";
+  Check(worst < 1e-6, "SPH kernel derivative matches differences of the kernel");
+  Check(lsi::SPHKernelFromName("Quintic spline (M6)", lsi::SPHKernel::CubicSpline) ==
+        lsi::SPHKernel::QuinticSpline &&
+      lsi::SPHKernelFromName("Wendland C2", lsi::SPHKernel::CubicSpline) ==
+        lsi::SPHKernel::WendlandC2 &&
+      lsi::SPHKernelFromName("Cubic spline (M4)", lsi::SPHKernel::QuinticSpline) ==
+        lsi::SPHKernel::CubicSpline &&
+      lsi::SPHKernelFromName("Wendland C6", lsi::SPHKernel::CubicSpline) ==
+        lsi::SPHKernel::CubicSpline,
+    "SPH kernel names as SWIFT writes them");
+}
+
 int main()
 {
   TestTangentBasis();
   TestSPHKernels();
+  TestSPHKernelGradients();
   TestSpatialOrder();
   TestJoinedTree();
   TestRosenthalLinsen();

@@ -1,0 +1,277 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetSPHField.h"
+
+#include "LevelSetSplines.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+namespace lsi
+{
+namespace
+{
+// The array a reader's field data marker (a one-string array) names, or "".
+std::string Marker(vtkPointSet* input, const char* marker)
+{
+  auto* names = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray(marker));
+  return names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : std::string();
+}
+
+// The array named by the user, else by the marker, else by one of the usual names.
+vtkDataArray* FindArray(vtkPointSet* input, const std::string& requested, const char* marker,
+  std::initializer_list<const char*> usual, std::string& name)
+{
+  vtkPointData* data = input->GetPointData();
+  name = !requested.empty() ? requested : Marker(input, marker);
+  if (!name.empty() || !requested.empty())
+  {
+    return data->GetArray(name.c_str());
+  }
+  for (const char* candidate : usual)
+  {
+    if (vtkDataArray* array = data->GetArray(candidate))
+    {
+      name = candidate;
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+SPHKernel KernelFromMarker(const std::string& marker)
+{
+  if (marker == "QuinticSpline")
+  {
+    return SPHKernel::QuinticSpline;
+  }
+  return marker == "WendlandC2" ? SPHKernel::WendlandC2 : SPHKernel::CubicSpline;
+}
+
+const char* KernelName(SPHKernel kernel)
+{
+  switch (kernel)
+  {
+    case SPHKernel::QuinticSpline:
+      return "quintic spline";
+    case SPHKernel::WendlandC2:
+      return "Wendland C2";
+    default:
+      return "cubic spline";
+  }
+}
+} // namespace
+
+bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequest& request,
+  SPHFieldArrays& arrays, std::string& problem, std::string& choice)
+{
+  problem.clear();
+  arrays = SPHFieldArrays();
+  if (request.Model == 1)
+  {
+    choice = "Field: the MLS fit of the samples (Field is set to MLS).";
+    return false;
+  }
+  std::string hName, mName, rhoName;
+  arrays.SmoothingLength = FindArray(input, request.SmoothingLengthArray, "SmoothingLengthArray",
+    { "SmoothingLength", "SmoothingLengths", "hsmooth" }, hName);
+  arrays.Mass = FindArray(input, request.MassArray, "MassArray", { "Masses", "Mass", "mass" }, mName);
+  arrays.Density = FindArray(
+    input, request.DensityArray, "DensityArray", { "Density", "Densities", "rho" }, rhoName);
+  const vtkIdType n = input->GetNumberOfPoints();
+  for (auto named : { std::make_pair(arrays.SmoothingLength, hName),
+         std::make_pair(arrays.Mass, mName), std::make_pair(arrays.Density, rhoName) })
+  {
+    if (named.first &&
+      (named.first->GetNumberOfComponents() != 1 || named.first->GetNumberOfTuples() != n))
+    {
+      problem = "The SPH array '" + named.second + "' must have one component and one value per point (" +
+        std::to_string(n) + ").";
+      return false;
+    }
+  }
+  if (!arrays.SmoothingLength || !arrays.Mass)
+  {
+    const std::string missing = !arrays.SmoothingLength
+      ? "no smoothing length array" + (hName.empty() ? std::string() : " '" + hName + "'")
+      : "no mass array" + (mName.empty() ? std::string() : " '" + mName + "'");
+    if (request.Model == 2)
+    {
+      problem = "Field is SPH, but the input has " + missing +
+        ". Name the arrays (SmoothingLengthArray, MassArray), or compute them with Particle "
+        "Density.";
+      return false;
+    }
+    choice = "Field: the MLS fit of the samples (the input has " + missing + ").";
+    return false;
+  }
+  arrays.ValuesAreDensity =
+    arrays.Density && (scalars == arrays.Density || (scalars && scalars->GetName() &&
+                                                      rhoName == scalars->GetName()));
+  arrays.Kernel = request.Kernel > 0 ? static_cast<SPHKernel>(request.Kernel - 1)
+                                     : KernelFromMarker(Marker(input, "SPHKernel"));
+  arrays.SupportPerSmoothingLength = request.SupportPerSmoothingLength;
+  if (!(arrays.SupportPerSmoothingLength > 0.0))
+  {
+    vtkDataArray* marked = vtkDataArray::SafeDownCast(
+      input->GetFieldData()->GetAbstractArray("SupportPerSmoothingLength"));
+    // Without a marker: GADGET's convention (h is the support), or Tipsy's (2 h) for hsmooth.
+    arrays.SupportPerSmoothingLength = marked && marked->GetNumberOfTuples() > 0
+      ? marked->GetTuple1(0)
+      : (hName == "hsmooth" ? 2.0 : 1.0);
+  }
+  choice = std::string("Field: the SPH interpolant, ") + KernelName(arrays.Kernel) +
+    " kernel with support " + std::to_string(arrays.SupportPerSmoothingLength) + " x '" + hName +
+    "', masses '" + mName + "', " +
+    (arrays.ValuesAreDensity ? "the density summed from the masses."
+        : arrays.Density      ? "volumes m / rho from '" + rhoName + "'."
+                              : "volumes m / rho with rho summed from the masses.");
+  return true;
+}
+
+SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
+  const std::vector<double>& values, std::string& problem)
+  : Geometry(geometry)
+  , Kernel(arrays.Kernel)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  this->H.resize(n);
+  this->Coefficient.assign(n, 0.0);
+  this->Volume.assign(n, 0.0);
+  std::vector<double> mass(n);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const vtkIdType id = geometry.Order[j];
+    this->H[j] = arrays.SupportPerSmoothingLength * arrays.SmoothingLength->GetTuple1(id);
+    mass[j] = arrays.Mass->GetTuple1(id);
+    if (!(this->H[j] > 0.0) || !std::isfinite(this->H[j]) || !(mass[j] >= 0.0) ||
+      !std::isfinite(mass[j]))
+    {
+      problem = "Particle " + std::to_string(id) + " has smoothing length " +
+        std::to_string(arrays.SmoothingLength->GetTuple1(id)) + " and mass " +
+        std::to_string(mass[j]) +
+        ": the SPH field needs positive finite smoothing lengths and non-negative masses.";
+      return;
+    }
+  }
+  if (n > 0)
+  {
+    this->Nodes.reserve(2 * (n / 8 + 1));
+    this->Nodes.emplace_back();
+    this->Build(0, 0, static_cast<std::uint32_t>(n));
+  }
+  // rho_j: stored, or the scalar itself, or summed here (the tree is ready).
+  std::vector<double> rho(n);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const vtkIdType id = geometry.Order[j];
+    if (arrays.Density)
+    {
+      rho[j] = arrays.Density->GetTuple1(id);
+    }
+    else
+    {
+      double value = 0.0;
+      this->ForEachSupportHolding(geometry.Position(j), [&](std::uint32_t k) {
+        const double* xj = geometry.Position(j);
+        const double* xk = geometry.Position(k);
+        const double r = std::sqrt((xj[0] - xk[0]) * (xj[0] - xk[0]) +
+          (xj[1] - xk[1]) * (xj[1] - xk[1]) + (xj[2] - xk[2]) * (xj[2] - xk[2]));
+        value += mass[k] * SPHKernelValue(this->Kernel, r, this->H[k]);
+      });
+      rho[j] = value;
+    }
+    if (!(rho[j] > 0.0) || !std::isfinite(rho[j]))
+    {
+      problem = "Particle " + std::to_string(id) + " has density " + std::to_string(rho[j]) +
+        ": the SPH field needs positive finite densities for its volumes m / rho.";
+      return;
+    }
+    this->Volume[j] = mass[j] / rho[j];
+    this->Coefficient[j] = arrays.ValuesAreDensity ? mass[j] : this->Volume[j] * values[id];
+  }
+  this->IsValid = true;
+}
+
+void SPHField::Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end)
+{
+  constexpr std::uint32_t leafSize = 8;
+  this->Nodes[index].Begin = begin;
+  this->Nodes[index].End = end;
+  if (end - begin <= leafSize)
+  {
+    Node& leaf = this->Nodes[index];
+    leaf.MaximumSupport = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      leaf.Lower[k] = leaf.Upper[k] = this->Geometry.Position(begin)[k];
+    }
+    for (std::uint32_t j = begin; j < end; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        leaf.Lower[k] = std::min(leaf.Lower[k], this->Geometry.Position(j)[k]);
+        leaf.Upper[k] = std::max(leaf.Upper[k], this->Geometry.Position(j)[k]);
+      }
+      leaf.MaximumSupport = std::max(leaf.MaximumSupport, this->H[j]);
+    }
+    return;
+  }
+  // Children in two consecutive slots; Nodes may grow (and move) during the recursion.
+  const std::uint32_t left = static_cast<std::uint32_t>(this->Nodes.size());
+  this->Nodes.emplace_back();
+  this->Nodes.emplace_back();
+  const std::uint32_t middle = begin + (end - begin) / 2;
+  this->Build(left, begin, middle);
+  this->Build(left + 1, middle, end);
+  Node& node = this->Nodes[index];
+  const Node& a = this->Nodes[left];
+  const Node& b = this->Nodes[left + 1];
+  node.Left = left;
+  for (int k = 0; k < 3; ++k)
+  {
+    node.Lower[k] = std::min(a.Lower[k], b.Lower[k]);
+    node.Upper[k] = std::max(a.Upper[k], b.Upper[k]);
+  }
+  node.MaximumSupport = std::max(a.MaximumSupport, b.MaximumSupport);
+}
+
+void SPHField::Evaluate(const double* x, double& value, double* gradient) const
+{
+  value = 0.0;
+  gradient[0] = gradient[1] = gradient[2] = 0.0;
+  this->ForEachSupportHolding(x, [&](std::uint32_t j) {
+    AccumulateKernel(
+      this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j], value, gradient);
+  });
+}
+
+bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,
+  std::vector<double>& dataOffsets, std::vector<double>& dataSign, const AbortCheck& aborted)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  dataOffsets.resize(n);
+  dataSign.resize(n);
+  return ParallelForInBlocks(
+    n,
+    [&](std::size_t begin, std::size_t end) {
+      for (std::size_t j = begin; j < end; ++j)
+      {
+        double value, gradient[3];
+        field.Evaluate(geometry.Position(j), value, gradient);
+        dataOffsets[j] = value - isoValue;
+        dataSign[j] = Sign(dataOffsets[j]);
+      }
+    },
+    aborted, 8192);
+}
+
+} // namespace lsi

@@ -1,0 +1,154 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The field an SPH simulation defines (docs: sph-conventions.md), used instead of the MLS fit
+// when the particles carry smoothing lengths and masses:
+//   density:        rho(x) = sum_j m_j W(|x - x_j|, H_j)
+//   any array A:      A(x) = sum_j (m_j / rho_j) A_j W(|x - x_j|, H_j)
+// with each particle's own support radius H_j = SupportPerSmoothingLength * h_j (scatter form,
+// as GADGET and SWIFT define it, not normalised). Its gradient is the kernel's analytic one.
+// The refinement on the data, the output normals and the interpolated arrays use it.
+#ifndef LevelSetSPHField_h
+#define LevelSetSPHField_h
+
+#include "LevelSetNeighborhoods.h"
+#include "SPHKernels.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkPointSet;
+
+namespace lsi
+{
+
+/// What the user set (the filter's properties); empty or 0 means "as the reader marked it".
+struct SPHFieldRequest
+{
+  int Model = 0;  // 0: automatic, 1: MLS always, 2: SPH field (an error if it cannot be built)
+  int Kernel = 0; // 0: automatic, else SPHKernel + 1
+  double SupportPerSmoothingLength = 0.0;
+  std::string SmoothingLengthArray, MassArray, DensityArray;
+};
+
+/// The input arrays of the SPH field, found from the request, the field data markers the readers
+/// and vtkParticleDensity write (DensityArray, SmoothingLengthArray, MassArray, SPHKernel,
+/// SupportPerSmoothingLength), and the usual names.
+struct SPHFieldArrays
+{
+  vtkDataArray* SmoothingLength = nullptr;
+  vtkDataArray* Mass = nullptr;
+  vtkDataArray* Density = nullptr; // null when unknown: computed by summation
+  bool ValuesAreDensity = false;   // the isosurface's scalar is the density itself
+  SPHKernel Kernel = SPHKernel::CubicSpline;
+  double SupportPerSmoothingLength = 1.0;
+};
+
+/// Whether the SPH field applies: true with `arrays` filled when the input carries smoothing
+/// lengths and masses (and the request does not say MLS). `problem` is set when the request
+/// asks for the SPH field and the input cannot give it, or an array is malformed; `choice`
+/// says in words which field is used and why, for the filter's log.
+bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequest& request,
+  SPHFieldArrays& arrays, std::string& problem, std::string& choice);
+
+/// The SPH field over the samples, stored in their storage order (Neighborhoods::Order).
+class SPHField
+{
+public:
+  /// `values` are the scalar's values in input order. Returns a field with Valid() false (and
+  /// `problem` set) when a smoothing length, mass or density is not positive and finite.
+  SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
+    const std::vector<double>& values, std::string& problem);
+
+  bool Valid() const { return this->IsValid; }
+
+  /// The field f(x) and its gradient.
+  void Evaluate(const double* x, double& value, double* gradient) const;
+
+  /// Calls visit(sample, weight) for every sample j whose support holds x, with weight
+  /// (m_j / rho_j) W(|x - x_j|, H_j): the interpolation weights of any array.
+  template <typename Visit>
+  void ForEachWeight(const double* x, Visit&& visit) const;
+
+  /// The support radius H_j of sample j (storage order).
+  double Support(std::size_t j) const { return this->H[j]; }
+
+private:
+  struct Node
+  {
+    double Lower[3], Upper[3];
+    double MaximumSupport;
+    std::uint32_t Begin, End; // samples [Begin, End) in storage order
+    std::uint32_t Left = 0;   // children Left and Left + 1; 0: a leaf
+  };
+  // Fills Nodes[index] for samples [begin, end), and its subtree.
+  void Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end);
+  template <typename Visit>
+  void ForEachSupportHolding(const double* x, Visit&& visit) const;
+
+  const Neighborhoods& Geometry;
+  SPHKernel Kernel;
+  std::vector<double> H;           // support radius per sample
+  std::vector<double> Coefficient; // m_j (density) or (m_j / rho_j) f_j
+  std::vector<double> Volume;      // m_j / rho_j
+  std::vector<Node> Nodes;         // a bounding-volume hierarchy over storage order
+  bool IsValid = false;
+};
+
+template <typename Visit>
+void SPHField::ForEachSupportHolding(const double* x, Visit&& visit) const
+{
+  // The storage order is the kd-tree's leaf order, so contiguous ranges are compact boxes; a
+  // node is entered when x is within the largest support of its samples.
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double outside = std::max(node.Lower[k] - x[k], x[k] - node.Upper[k]);
+      d2 += outside > 0.0 ? outside * outside : 0.0;
+    }
+    if (!(d2 < node.MaximumSupport * node.MaximumSupport))
+    {
+      continue;
+    }
+    if (node.Left == 0)
+    {
+      for (std::uint32_t j = node.Begin; j < node.End; ++j)
+      {
+        visit(j);
+      }
+      continue;
+    }
+    stack[top++] = node.Left;
+    stack[top++] = node.Left + 1;
+  }
+}
+
+template <typename Visit>
+void SPHField::ForEachWeight(const double* x, Visit&& visit) const
+{
+  this->ForEachSupportHolding(x, [&](std::uint32_t j) {
+    const double* xj = this->Geometry.Position(j);
+    const double d[3] = { x[0] - xj[0], x[1] - xj[1], x[2] - xj[2] };
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (r < this->H[j])
+    {
+      visit(j, this->Volume[j] * SPHKernelValue(this->Kernel, r, this->H[j]));
+    }
+  });
+}
+
+/// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
+/// sign at the samples as the field itself gives it. Returns false only when aborted.
+bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,
+  std::vector<double>& dataOffsets, std::vector<double>& dataSign, const AbortCheck& aborted);
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,476 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""pvpython Scripts/sph_comparison.py PLUGIN SHARED_DATA_DIR [--json FILE] [--cases a,b]
+
+Issue 13's benchmark on real particle data: for each case, the isosurface of the SPH field the
+particles define, rho(x) = sum_j m_j W(|x - x_j|, H_j) with the file's kernel and smoothing
+lengths, extracted by
+  - this filter, default output (splats: every polygon corner is scored) and Isopoints;
+  - ParaView's SPH grid route: vtkSPHInterpolator (same kernel family, one global SpatialStep
+    from the median support at the isovalue, volumes from mass and density) on an image of
+    half that step, Flying Edges, the connected region at the seed;
+  - yt (python3-yt, when installed): load_particles with masses and smoothing lengths, SPH
+    deposition (use_sph_normalization False) on an arbitrary grid of step h/4, Flying Edges.
+The truth is computed here, independently of the filter's code, in numpy: the SPH field on a
+grid of step (median support at the isovalue) / 10, contoured by Flying Edges, each vertex then
+moved by two Newton steps on the exact field onto its level. Scores, in units of the local
+smoothing length h (the file's own h of the particle nearest the point):
+  distance  mean distance from the output's points to the true surface;
+  normal    mean angle between the output's normals and the SPH field's exact gradient at the
+            point (unsigned for the grid routes, whose orientation is a convention);
+  cover     fraction of the true component's vertices within h/2 of the output (points for
+            isopoints, polygons for splats and meshes), and the largest such distance.
+Prints a table per case and writes JSON."""
+import json
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from paraview import servermanager
+from paraview.simple import Delete, LoadPlugin, OpenDataFile
+from vtkmodules.numpy_interface import dataset_adapter as dsa
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellLocator, vtkImageData, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D, vtkPolyDataConnectivityFilter
+from vtkmodules.vtkFiltersPoints import (vtkSPHCubicKernel, vtkSPHInterpolator,
+                                         vtkSPHQuinticKernel)
+
+PI = np.pi
+
+
+# --- kernels, with q = r / H on [0, 1) (H the support) ---------------------------------------
+def kernel_w(name, q):
+    q = np.asarray(q, dtype=float)
+    w = np.zeros_like(q)
+    inside = q < 1.0
+    qi = q[inside]
+    if name == "CubicSpline":
+        w[inside] = (8.0 / PI) * np.where(qi <= 0.5, 1 - 6 * qi**2 + 6 * qi**3, 2 * (1 - qi) ** 3)
+    elif name == "QuinticSpline":
+        a, b, c = 1 - qi, np.maximum(2 / 3 - qi, 0), np.maximum(1 / 3 - qi, 0)
+        w[inside] = 2187.0 / (40 * PI) * (a**5 - 6 * b**5 + 15 * c**5)
+    else:  # WendlandC2
+        w[inside] = 21.0 / (2 * PI) * (1 - qi) ** 4 * (1 + 4 * qi)
+    return w
+
+
+def kernel_dw(name, q):
+    q = np.asarray(q, dtype=float)
+    d = np.zeros_like(q)
+    inside = q < 1.0
+    qi = q[inside]
+    if name == "CubicSpline":
+        d[inside] = (8.0 / PI) * np.where(qi <= 0.5, -12 * qi + 18 * qi**2, -6 * (1 - qi) ** 2)
+    elif name == "QuinticSpline":
+        a, b, c = 1 - qi, np.maximum(2 / 3 - qi, 0), np.maximum(1 / 3 - qi, 0)
+        d[inside] = 2187.0 / (40 * PI) * (-5 * a**4 + 30 * b**4 - 75 * c**4)
+    else:
+        d[inside] = 21.0 / (2 * PI) * (-20 * qi * (1 - qi) ** 3)
+    return d
+
+
+class SPHTruth:
+    """The SPH density field of the particles, evaluated exactly (scatter form)."""
+
+    def __init__(self, x, m, H, kernel):
+        self.x, self.m, self.H, self.kernel = x, m, H, kernel
+        self.tree = cKDTree(x)
+        self.Hmax = H.max()
+
+    def evaluate(self, points):
+        points = np.atleast_2d(points)
+        value = np.zeros(len(points))
+        grad = np.zeros((len(points), 3))
+        lists = self.tree.query_ball_point(points, self.Hmax)
+        counts = np.array([len(l) for l in lists])
+        if counts.sum() == 0:
+            return value, grad
+        owner = np.repeat(np.arange(len(points)), counts)
+        j = np.concatenate([np.asarray(l, dtype=np.int64) for l in lists if len(l)])
+        d = points[owner] - self.x[j]
+        r = np.linalg.norm(d, axis=1)
+        H = self.H[j]
+        q = r / H
+        keep = q < 1
+        owner, j, d, r, H, q = owner[keep], j[keep], d[keep], r[keep], H[keep], q[keep]
+        w = self.m[j] * kernel_w(self.kernel, q) / H**3
+        np.add.at(value, owner, w)
+        dw = self.m[j] * kernel_dw(self.kernel, q) / H**4
+        safe = np.where(r > 0, r, 1.0)
+        g = (dw / safe)[:, None] * d * (r > 0)[:, None]
+        for k in range(3):
+            np.add.at(grad[:, k], owner, g[:, k])
+        return value, grad
+
+    def on_grid(self, origin, step, dims):
+        field = np.zeros(dims[::-1])  # z, y, x
+        for j in range(len(self.x)):
+            lo = np.maximum(np.floor((self.x[j] - self.H[j] - origin) / step).astype(int), 0)
+            hi = np.minimum(np.ceil((self.x[j] + self.H[j] - origin) / step).astype(int) + 1, dims)
+            if np.any(hi <= lo):
+                continue
+            gx = origin[0] + step * np.arange(lo[0], hi[0])
+            gy = origin[1] + step * np.arange(lo[1], hi[1])
+            gz = origin[2] + step * np.arange(lo[2], hi[2])
+            r2 = ((gz[:, None, None] - self.x[j, 2]) ** 2 + (gy[None, :, None] - self.x[j, 1]) ** 2
+                  + (gx[None, None, :] - self.x[j, 0]) ** 2)
+            field[lo[2]:hi[2], lo[1]:hi[1], lo[0]:hi[0]] += (
+                self.m[j] * kernel_w(self.kernel, np.sqrt(r2) / self.H[j]) / self.H[j] ** 3)
+        return field
+
+
+def image_of(field, origin, step, name="rho"):
+    image = vtkImageData()
+    nz, ny, nx = field.shape
+    image.SetDimensions(nx, ny, nz)
+    image.SetOrigin(*origin)
+    image.SetSpacing(step, step, step)
+    array = numpy_to_vtk(field.ravel().copy(), deep=1)
+    array.SetName(name)
+    image.GetPointData().SetScalars(array)
+    return image
+
+
+def contour(image, iso, seed, array="rho"):
+    edges = vtkFlyingEdges3D()
+    edges.SetInputData(image)
+    edges.SetInputArrayToProcess(0, 0, 0, 0, array)
+    edges.SetValue(0, iso)
+    edges.ComputeNormalsOn()
+    edges.Update()
+    whole = vtkPolyData()
+    whole.DeepCopy(edges.GetOutput())
+    connect = vtkPolyDataConnectivityFilter()
+    connect.SetInputData(whole)
+    connect.SetExtractionModeToClosestPointRegion()
+    connect.SetClosestPoint(*seed)
+    connect.Update()
+    region = vtkPolyData()
+    region.DeepCopy(connect.GetOutput())
+    return whole, region
+
+
+def points_of(poly):
+    if poly.GetNumberOfPoints() == 0:
+        return np.zeros((0, 3))
+    return vtk_to_numpy(poly.GetPoints().GetData()).astype(float)
+
+
+def used_points(poly):
+    """The points of a polydata that its cells use (a connectivity output keeps all)."""
+    ids = vtkIdList()
+    used = set()
+    for c in range(poly.GetNumberOfCells()):
+        poly.GetCellPoints(c, ids)
+        used.update(ids.GetId(i) for i in range(ids.GetNumberOfIds()))
+    idx = np.array(sorted(used), dtype=np.int64)
+    return idx
+
+
+class Scorer:
+    def __init__(self, truth, iso, h_file, x, seed, bounds_pad):
+        self.truth, self.iso, self.x = truth, iso, x
+        self.h_tree = cKDTree(x)
+        self.h_file = h_file
+        # The truth: SPH field on a fine grid around the particles above a third of the
+        # isovalue, contoured, vertices moved onto the exact level.
+        rho_at_particles, _ = truth.evaluate(x)
+        near = rho_at_particles > iso / 3.0
+        if not near.any():
+            near[:] = True
+        at_iso = np.abs(np.log(np.maximum(rho_at_particles, 1e-300) / iso)) < np.log(2.0)
+        self.H_iso = np.median(truth.H[at_iso]) if at_iso.any() else np.median(truth.H)
+        lo = x[near].min(axis=0) - truth.H[near].max() - bounds_pad
+        hi = x[near].max(axis=0) + truth.H[near].max() + bounds_pad
+        step = self.H_iso / 10.0
+        dims = np.minimum(np.ceil((hi - lo) / step).astype(int) + 1, 320)
+        step = max(((hi - lo) / (dims - 1)).max(), step)
+        dims = np.ceil((hi - lo) / step).astype(int) + 1
+        self.grid_step = step
+        self.lo, self.hi = lo, lo + step * (dims - 1)
+        t = time.time()
+        field = truth.on_grid(lo, step, dims)
+        self.truth_seconds = time.time() - t
+        whole, region = contour(image_of(field, lo, step), iso, seed)
+        for poly in (whole, region):
+            p = points_of(poly)
+            for _ in range(2):
+                v, g = truth.evaluate(p)
+                g2 = np.maximum((g**2).sum(axis=1), 1e-300)
+                p = p - ((v - iso) / g2)[:, None] * g
+            poly.GetPoints().SetData(numpy_to_vtk(p.copy(), deep=1))
+        self.whole, self.region = whole, region
+        self.whole_locator = vtkCellLocator()
+        self.whole_locator.SetDataSet(whole)
+        self.whole_locator.BuildLocator()
+        self.region_points = points_of(region)[used_points(region)]
+
+    def local_h(self, p):
+        _, nearest = self.h_tree.query(p)
+        return self.h_file[nearest]
+
+    def distance_to(self, locator, p):
+        closest = [0.0, 0.0, 0.0]
+        cell, sub, d2 = 0, 0, 0.0
+        out = np.empty(len(p))
+        import vtk
+        cid = vtk.reference(0)
+        sid = vtk.reference(0)
+        dist2 = vtk.reference(0.0)
+        for i, q in enumerate(p):
+            locator.FindClosestPoint(q, closest, cid, sid, dist2)
+            out[i] = np.sqrt(float(dist2))
+        return out
+
+    def score(self, points, normals, signed, cover_poly=None):
+        if len(points) == 0:
+            return dict(points=0)
+        d = self.distance_to(self.whole_locator, points) / self.local_h(points)
+        _, g = self.truth.evaluate(points)
+        exact = -g / np.maximum(np.linalg.norm(g, axis=1), 1e-300)[:, None]
+        n = normals / np.maximum(np.linalg.norm(normals, axis=1), 1e-300)[:, None]
+        cosine = (n * exact).sum(axis=1)
+        if not signed:
+            cosine = np.abs(cosine)
+        angle = np.degrees(np.arccos(np.clip(cosine, -1, 1)))
+        # Coverage of the true component.
+        if cover_poly is not None and cover_poly.GetNumberOfCells() > 0:
+            locator = vtkCellLocator()
+            locator.SetDataSet(cover_poly)
+            locator.BuildLocator()
+            gap = self.distance_to(locator, self.region_points)
+        else:
+            gap, _ = cKDTree(points).query(self.region_points)
+        gap = gap / self.local_h(self.region_points)
+        return dict(points=int(len(points)), mean_distance_h=float(d.mean()),
+                    max_distance_h=float(d.max()), mean_normal_deg=float(angle.mean()),
+                    covered_fraction=float((gap <= 0.5).mean()), max_gap_h=float(gap.max()))
+
+
+def fetch(proxy, port=0):
+    proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy, proxy, port) if port else servermanager.Fetch(proxy)
+
+
+def main():
+    args = sys.argv[1:]
+    plugin, shared = args[0], args[1]
+    json_path = args[args.index("--json") + 1] if "--json" in args else None
+    chosen = args[args.index("--cases") + 1].split(",") if "--cases" in args else None
+    LoadPlugin(plugin, ns=globals())
+    data = os.path.join(shared)
+
+    def hdf5(path, types):
+        r = OpenDataFile(path)
+        r.UpdatePipelineInformation()
+        r.ParticleTypes = types
+        return r
+
+    def tipsy_with_density(path, types):
+        r = OpenDataFile(path)
+        r.UpdatePipelineInformation()
+        r.ParticleTypes = types
+        return ParticleDensity(Input=r, NumberOfNeighbors=64)
+
+    # name: (source maker, isovalue rule, description)
+    cases = {
+        "gadget4-gassphere": (
+            lambda: hdf5(os.path.join(data, "gadget4_gassphere", "snapshot_010.hdf5"),
+                         ["Gas (PartType0)"]),
+            "GADGET-4 collapsing gas sphere, t = 2.0, 1,000 particles, cubic spline, h = H"),
+        "swift-sodshock": (
+            lambda: hdf5(os.path.join(data, "swift_sodshock3d_glass_002.hdf5"),
+                         ["Gas (PartType0)"]),
+            "SWIFT glass (GADGET names), 50,653 particles: the box's free surface"),
+        "tipsy-shocktube": (
+            lambda: hdf5_or_tipsy(os.path.join(data, "shocktube.std")),
+            "ChaNGa shock tube, 20,000 particles, hsmooth (support 2 h)"),
+        "evrard-summed": (
+            lambda: tipsy_with_density(os.path.join(data, "adiabtophat_glass_28721.bin"),
+                                       ["Gas"]),
+            "Evrard glass, 28,721 particles, density by SPH summation (Particle Density, 64)"),
+        "changa-galaxy": (
+            lambda: tipsy_with_density(os.path.join(data, "changa_run581.20000"), ["Stars"]),
+            "ChaNGa galaxy stars, 5,321 particles, density by SPH summation: clustered"),
+    }
+
+    def hdf5_or_tipsy(path):
+        r = OpenDataFile(path)
+        r.UpdatePipelineInformation()
+        return r
+
+    results = {}
+    for name, (make, description) in cases.items():
+        if chosen and name not in chosen:
+            continue
+        print("=== %s: %s" % (name, description), flush=True)
+        source = make()
+        particles = fetch(source)
+        if particles.IsA("vtkMultiBlockDataSet"):
+            particles = particles.GetBlock(0)
+        pd = particles.GetPointData()
+        fd = particles.GetFieldData()
+
+        def marker(key, default=None):
+            a = fd.GetAbstractArray(key)
+            if a is None:
+                return default
+            return a.GetValue(0) if a.IsA("vtkStringArray") else a.GetTuple1(0)
+
+        x = points_of(particles)
+        h_name = marker("SmoothingLengthArray")
+        h = vtk_to_numpy(pd.GetArray(h_name)).astype(float)
+        m = vtk_to_numpy(pd.GetArray(marker("MassArray"))).astype(float)
+        rho_name = marker("DensityArray")
+        rho = vtk_to_numpy(pd.GetArray(rho_name)).astype(float)
+        kernel = marker("SPHKernel", "CubicSpline")
+        factor = float(marker("SupportPerSmoothingLength", 1.0))
+        truth = SPHTruth(x, m, factor * h, kernel)
+        summed, _ = truth.evaluate(x)
+        # The isovalue: the density at the particle ranked at the 30th percentile from the top
+        # of the summed field (a surface inside the sampled region), the seed: densest particle.
+        iso = float(np.quantile(summed, 0.7)) if name != "swift-sodshock" else float(
+            0.5 * np.median(summed))
+        seed = x[np.argmax(summed)]
+        if name == "evrard-summed":
+            iso = 1.0 / (2 * PI * 0.5)  # analytic surface r = 0.5
+            seed = np.zeros(3)
+        print("  isovalue %.6g, seed (%.4g, %.4g, %.4g), kernel %s, H = %g h" % (
+            iso, seed[0], seed[1], seed[2], kernel, factor), flush=True)
+        t = time.time()
+        scorer = Scorer(truth, iso, h, x, seed, 0.0)
+        print("  truth: grid step %.3g (median support at the isovalue %.3g), %d vertices in "
+              "the seeded component, %.1f s" % (scorer.grid_step, scorer.H_iso,
+                                                len(scorer.region_points), time.time() - t),
+              flush=True)
+        rows = {}
+        seed_radius = float(factor * h[np.argmax(summed)])
+        for output_type, label in ((1, "filter, default (splats)"), (0, "filter, Isopoints")):
+            t = time.time()
+            f = LevelSetIsosurface(Input=source, Scalars=["POINTS", rho_name], IsoValue=iso,
+                                   SeedCenter=list(seed), SeedRadius=seed_radius,
+                                   OutputType=output_type)
+            out = fetch(f)
+            seconds = time.time() - t
+            f.UpdatePropertyInformation()
+            used_sph = f.GetProperty("UsedSPHField").GetData()
+            o = dsa.WrapDataObject(out)
+            if out.GetNumberOfPoints() == 0:
+                rows[label] = dict(points=0)
+            else:
+                p = np.asarray(o.Points, dtype=float)
+                n = np.asarray(o.PointData["Normals"], dtype=float)
+                rows[label] = scorer.score(p, n, True, out if output_type == 1 else None)
+            rows[label]["seconds"] = seconds
+            rows[label]["sph_field"] = bool(used_sph)
+            Delete(f)
+        # ParaView's grid route.
+        t = time.time()
+        rows["ParaView SPH grid route"] = grid_route(particles, kernel, scorer, iso, seed,
+                                                     rho_name, marker("MassArray"))
+        rows["ParaView SPH grid route"]["seconds"] = time.time() - t
+        # yt.
+        t = time.time()
+        try:
+            rows["yt"] = yt_route(x, m, factor * h, rho, kernel, scorer, iso, seed)
+        except Exception as error:  # yt's API moves between versions: report, go on
+            print("  yt failed: %r" % (error,))
+            rows["yt"] = dict(points=None, note="yt failed: %r" % (error,))
+        if rows["yt"].get("points") is not None:
+            rows["yt"]["seconds"] = time.time() - t
+        print_table(rows)
+        results[name] = dict(description=description, isovalue=iso, kernel=kernel,
+                             support_per_h=factor, truth_grid_step=scorer.grid_step,
+                             median_support_at_iso=scorer.H_iso, rows=rows)
+        Delete(source)
+    if json_path:
+        with open(json_path, "w") as out:
+            json.dump(results, out, indent=1)
+
+
+def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name):
+    # VTK's kernels: support = CutoffFactor x SpatialStep (cubic 2, quintic 3), one global step.
+    if kernel == "QuinticSpline":
+        k, cutoff = vtkSPHQuinticKernel(), 3.0
+    else:
+        k, cutoff = vtkSPHCubicKernel(), 2.0
+    step = scorer.H_iso / cutoff
+    k.SetSpatialStep(step)
+    lo, hi = scorer.lo, scorer.hi  # the region the truth covers
+    grid_step = step / 2.0
+    dims = np.ceil((hi - lo) / grid_step).astype(int) + 1
+    dims = np.minimum(dims, 400)
+    image = vtkImageData()
+    image.SetDimensions(*[int(d) for d in dims])
+    image.SetOrigin(*lo)
+    image.SetSpacing(*((hi - lo) / (dims - 1)))
+    interp = vtkSPHInterpolator()
+    interp.SetInputData(image)
+    interp.SetSourceData(particles)
+    interp.SetKernel(k)
+    interp.SetDensityArrayName(rho_name)
+    interp.SetMassArrayName(mass_name)
+    interp.Update()
+    grid = interp.GetOutput()
+    whole, region = contour(grid, iso, seed, rho_name)
+    if region.GetNumberOfCells() == 0:
+        return dict(points=0)
+    p = points_of(region)[used_points(region)]
+    n = vtk_to_numpy(region.GetPointData().GetNormals())[used_points(region)]
+    return scorer.score(p, n.astype(float), False, region)
+
+
+def yt_route(x, m, H, rho, kernel, scorer, iso, seed):
+    try:
+        import yt
+    except ImportError:
+        print("  yt: not installed (apt-get install python3-yt)")
+        return dict(points=None, note="yt not installed")
+    yt.set_log_level(50)
+    # Particle type "io" with a density: yt interpolates ("io", "density") as
+    # sum_j (m_j / rho_j) rho_j W = sum_j m_j W, unnormalised.
+    data = {("io", "particle_position_x"): x[:, 0], ("io", "particle_position_y"): x[:, 1],
+            ("io", "particle_position_z"): x[:, 2], ("io", "particle_mass"): m,
+            ("io", "smoothing_length"): H, ("io", "density"): rho}
+    bbox = np.array([x.min(axis=0) - H.max(), x.max(axis=0) + H.max()]).T
+    lo, hi = scorer.lo, scorer.hi
+    ds = yt.load_particles(data, length_unit=1.0, mass_unit=1.0, bbox=bbox)
+    ds.use_sph_normalization = False
+    names = {"CubicSpline": "cubic", "QuinticSpline": "quintic", "WendlandC2": "wendland2"}
+    ds.kernel_name = names.get(kernel, "cubic")
+    step = scorer.H_iso / 4.0
+    dims = np.minimum(np.ceil((hi - lo) / step).astype(int) + 1, 320)
+    grid = ds.arbitrary_grid(lo, hi, dims)
+    field = np.asarray(grid[("io", "density")]).astype(float)  # x, y, z
+    spacing = (hi - lo) / dims
+    # arbitrary_grid values are cell centred.
+    image = image_of(np.ascontiguousarray(field.transpose(2, 1, 0)), lo + 0.5 * spacing,
+                     1.0)
+    image.SetSpacing(*spacing)
+    whole, region = contour(image, iso, seed)
+    if region.GetNumberOfCells() == 0:
+        return dict(points=0)
+    p = points_of(region)[used_points(region)]
+    n = vtk_to_numpy(region.GetPointData().GetNormals())[used_points(region)]
+    return scorer.score(p, n.astype(float), False, region)
+
+
+def print_table(rows):
+    print("  %-28s %9s %10s %10s %9s %8s %9s %7s" % (
+        "output", "points", "mean d/h", "max d/h", "normal", "cover", "max gap", "s"))
+    for label, r in rows.items():
+        if not r.get("points"):
+            print("  %-28s %9s %s" % (label, r.get("points"), r.get("note", "no surface")))
+            continue
+        print("  %-28s %9d %10.4f %10.3f %8.2f° %7.1f%% %8.3f %7.2f" % (
+            label, r["points"], r["mean_distance_h"], r["max_distance_h"], r["mean_normal_deg"],
+            100 * r["covered_fraction"], r["max_gap_h"], r.get("seconds", 0.0)), flush=True)
+
+
+if __name__ == "__main__":
+    main()
