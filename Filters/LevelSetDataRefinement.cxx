@@ -67,41 +67,37 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
   double isoValue, const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
 {
   const std::size_t count = out.Points.size() / 3;
-  vtkSMPThreadLocal<std::size_t> moved(0);
-  const int neighbors = geometry.Stride - 1;
+  std::vector<char> onLevel(count, 0);
   auto slide = [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint32_t> candidates;
     for (std::size_t i = begin; i < end; ++i)
     {
       Eigen::Vector3d p(&out.Points[3 * i]);
       const Eigen::Vector3d n(&out.Normals[3 * i]);
-      // The reach is local: the spacing of the sample nearest to the point, so a point in a
-      // sparse region (where the level set is coarse) may move as far as that region needs.
+      // The reach is local: the kernel support of the sample nearest to the point. At a free
+      // boundary the field's level lies up to a support beyond the outermost particles, where
+      // the level set (which lives on the particles) cannot reach.
       std::uint32_t nearest;
       double d2;
       geometry.Index->Nearest(p.data(), 1, &nearest, &d2);
-      const double reach = settings.SPHMaximumMove *
-        SpacingFromNeighborhoodRadius(geometry.Radius[nearest], neighbors);
+      const double reach = settings.SPHMaximumMove * field.Support(nearest);
+      field.Gather(p.data(), reach, candidates); // the point stays within the reach
       auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-        field.Evaluate(x.data(), value, g.data());
+        field.EvaluateAmong(candidates, x.data(), value, g.data());
         value -= isoValue;
         return std::isfinite(value);
       };
       Eigen::Vector3d gradient;
-      if (SlideOntoDataLevel(p, n, evaluate, reach, settings.SPHIterations, gradient))
+      if (SolveOnLine(p, n, evaluate, reach, 1e-9 * reach, gradient) &&
+        gradient.squaredNorm() > 0.0)
       {
-        // The normal of the field where the point ended, not where the last step started.
-        double value;
-        field.Evaluate(p.data(), value, gradient.data());
-        if (gradient.squaredNorm() > 0.0)
+        const Eigen::Vector3d normal = -gradient.normalized();
+        for (int d = 0; d < 3; ++d)
         {
-          const Eigen::Vector3d normal = -gradient.normalized();
-          for (int d = 0; d < 3; ++d)
-          {
-            out.Points[3 * i + d] = p[d];
-            out.Normals[3 * i + d] = normal[d];
-          }
-          ++moved.Local();
+          out.Points[3 * i + d] = p[d];
+          out.Normals[3 * i + d] = normal[d];
         }
+        onLevel[i] = 1;
       }
     }
   };
@@ -109,11 +105,14 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
   {
     return false;
   }
-  out.DataRefinedCount = 0;
-  for (std::size_t m : moved)
-  {
-    out.DataRefinedCount += m;
-  }
+  // A point with no level of the field within a support of it is not on the surface: drop it.
+  const std::vector<std::size_t> kept = ValidIndices(onLevel);
+  IsopointSet refined;
+  AppendSelected(out.Points, out.Normals, kept, refined);
+  out.Points.swap(refined.Points);
+  out.Normals.swap(refined.Normals);
+  out.DataRefinedCount = kept.size();
+  out.DroppedCount = count - kept.size();
   return true;
 }
 

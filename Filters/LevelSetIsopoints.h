@@ -35,9 +35,10 @@ struct IsopointSettings
   int DataFitScale = 2;
   double DataMaximumMove = 0.5;
   int DataIterations = 3;
-  // On the SPH field (exact, smooth): reach in local sample spacings, and Newton steps.
+  // On the SPH field (exact, smooth): reach in kernel supports of the nearest particle, and
+  // Newton steps.
   double SPHMaximumMove = 1.0;
-  int SPHIterations = 8;
+  int SPHIterations = 12;
 };
 
 struct IsopointSet
@@ -47,6 +48,7 @@ struct IsopointSet
   std::size_t RoughCount = 0;       // zero crossings accepted by the angle criterion
   std::size_t CompletedCount = 0;   // points added by completion (after thinning)
   std::size_t DataRefinedCount = 0; // points the data refinement moved
+  std::size_t DroppedCount = 0;     // points the SPH refinement found no level near, dropped
 };
 
 /// Isopoints per block of the parallel loops, between two abort checks: a block of Newton
@@ -84,7 +86,7 @@ class SPHField;
 
 /// Step 7 on SPH data: like RefineIsopointsOnData, but onto the SPH field's level `isoValue`
 /// (LevelSetSPHField.h), with the kernel's analytic gradient as the normal, and a reach of
-/// SPHMaximumMove times the spacing of the sample nearest to each isopoint.
+/// SPHMaximumMove times the kernel support of the particle nearest to each isopoint.
 bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 

@@ -83,7 +83,8 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   std::string hName, mName, rhoName;
   arrays.SmoothingLength = FindArray(input, request.SmoothingLengthArray, "SmoothingLengthArray",
     { "SmoothingLength", "SmoothingLengths", "hsmooth" }, hName);
-  arrays.Mass = FindArray(input, request.MassArray, "MassArray", { "Masses", "Mass", "mass" }, mName);
+  arrays.Mass =
+    FindArray(input, request.MassArray, "MassArray", { "Masses", "Mass", "mass" }, mName);
   arrays.Density = FindArray(
     input, request.DensityArray, "DensityArray", { "Density", "Densities", "rho" }, rhoName);
   const vtkIdType n = input->GetNumberOfPoints();
@@ -93,8 +94,8 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
     if (named.first &&
       (named.first->GetNumberOfComponents() != 1 || named.first->GetNumberOfTuples() != n))
     {
-      problem = "The SPH array '" + named.second + "' must have one component and one value per point (" +
-        std::to_string(n) + ").";
+      problem = "The SPH array '" + named.second +
+        "' must have one component and one value per point (" + std::to_string(n) + ").";
       return false;
     }
   }
@@ -113,9 +114,8 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
     choice = "Field: the MLS fit of the samples (the input has " + missing + ").";
     return false;
   }
-  arrays.ValuesAreDensity =
-    arrays.Density && (scalars == arrays.Density || (scalars && scalars->GetName() &&
-                                                      rhoName == scalars->GetName()));
+  arrays.ValuesAreDensity = arrays.Density &&
+    (scalars == arrays.Density || (scalars && scalars->GetName() && rhoName == scalars->GetName()));
   arrays.Kernel = request.Kernel > 0 ? static_cast<SPHKernel>(request.Kernel - 1)
                                      : KernelFromMarker(Marker(input, "SPHKernel"));
   arrays.SupportPerSmoothingLength = request.SupportPerSmoothingLength;
@@ -132,8 +132,8 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
     " kernel with support " + std::to_string(arrays.SupportPerSmoothingLength) + " x '" + hName +
     "', masses '" + mName + "', " +
     (arrays.ValuesAreDensity ? "the density summed from the masses."
-        : arrays.Density      ? "volumes m / rho from '" + rhoName + "'."
-                              : "volumes m / rho with rho summed from the masses.");
+        : arrays.Density     ? "volumes m / rho from '" + rhoName + "'."
+                             : "volumes m / rho with rho summed from the masses.");
   return true;
 }
 
@@ -168,34 +168,26 @@ SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
     this->Nodes.emplace_back();
     this->Build(0, 0, static_cast<std::uint32_t>(n));
   }
-  // rho_j: stored, or the scalar itself, or summed here (the tree is ready).
-  std::vector<double> rho(n);
+  // rho_j: stored, or summed here (the tree is ready) where none is stored or the stored one
+  // is not positive and finite (real files hold zeros: boundary or placeholder particles).
   for (std::size_t j = 0; j < n; ++j)
   {
     const vtkIdType id = geometry.Order[j];
-    if (arrays.Density)
+    double rho = arrays.Density ? arrays.Density->GetTuple1(id) : 0.0;
+    if (!(rho > 0.0) || !std::isfinite(rho))
     {
-      rho[j] = arrays.Density->GetTuple1(id);
-    }
-    else
-    {
-      double value = 0.0;
-      this->ForEachSupportHolding(geometry.Position(j), [&](std::uint32_t k) {
-        const double* xj = geometry.Position(j);
+      this->SummedDensities += arrays.Density ? 1 : 0;
+      rho = 0.0;
+      const double* xj = geometry.Position(j);
+      this->ForEachSupportHolding(xj, [&](std::uint32_t k) {
         const double* xk = geometry.Position(k);
         const double r = std::sqrt((xj[0] - xk[0]) * (xj[0] - xk[0]) +
           (xj[1] - xk[1]) * (xj[1] - xk[1]) + (xj[2] - xk[2]) * (xj[2] - xk[2]));
-        value += mass[k] * SPHKernelValue(this->Kernel, r, this->H[k]);
+        rho += mass[k] * SPHKernelValue(this->Kernel, r, this->H[k]);
       });
-      rho[j] = value;
     }
-    if (!(rho[j] > 0.0) || !std::isfinite(rho[j]))
-    {
-      problem = "Particle " + std::to_string(id) + " has density " + std::to_string(rho[j]) +
-        ": the SPH field needs positive finite densities for its volumes m / rho.";
-      return;
-    }
-    this->Volume[j] = mass[j] / rho[j];
+    // A particle with no density at all (massless and alone) carries no volume.
+    this->Volume[j] = rho > 0.0 ? mass[j] / rho : 0.0;
     this->Coefficient[j] = arrays.ValuesAreDensity ? mass[j] : this->Volume[j] * values[id];
   }
   this->IsValid = true;
@@ -249,9 +241,55 @@ void SPHField::Evaluate(const double* x, double& value, double* gradient) const
   value = 0.0;
   gradient[0] = gradient[1] = gradient[2] = 0.0;
   this->ForEachSupportHolding(x, [&](std::uint32_t j) {
-    AccumulateKernel(
-      this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j], value, gradient);
+    AccumulateKernel(this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j],
+      value, gradient);
   });
+}
+
+void SPHField::Gather(const double* x, double extra, std::vector<std::uint32_t>& candidates) const
+{
+  candidates.clear();
+  this->ForEachSupportHolding(
+    x,
+    [&](std::uint32_t j) {
+      const double* xj = this->Geometry.Position(j);
+      const double r = std::sqrt((x[0] - xj[0]) * (x[0] - xj[0]) + (x[1] - xj[1]) * (x[1] - xj[1]) +
+        (x[2] - xj[2]) * (x[2] - xj[2]));
+      if (r < this->H[j] + extra)
+      {
+        candidates.push_back(j);
+      }
+    },
+    extra);
+}
+
+void SPHField::EvaluateAmong(const std::vector<std::uint32_t>& candidates, const double* x,
+  double& value, double* gradient) const
+{
+  value = 0.0;
+  gradient[0] = gradient[1] = gradient[2] = 0.0;
+  for (std::uint32_t j : candidates)
+  {
+    AccumulateKernel(this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j],
+      value, gradient);
+  }
+}
+
+double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  if (n == 0)
+  {
+    return 1.0;
+  }
+  std::vector<double> supports(n), radii(geometry.Radius.begin(), geometry.Radius.end());
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    supports[j] = field.Support(j);
+  }
+  std::nth_element(supports.begin(), supports.begin() + n / 2, supports.end());
+  std::nth_element(radii.begin(), radii.begin() + n / 2, radii.end());
+  return radii[n / 2] > 0.0 ? supports[n / 2] / radii[n / 2] : 1.0;
 }
 
 bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,

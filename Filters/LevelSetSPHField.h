@@ -57,7 +57,7 @@ class SPHField
 {
 public:
   /// `values` are the scalar's values in input order. Returns a field with Valid() false (and
-  /// `problem` set) when a smoothing length, mass or density is not positive and finite.
+  /// `problem` set) when a smoothing length is not positive and finite or a mass is negative.
   SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
     const std::vector<double>& values, std::string& problem);
 
@@ -66,10 +66,22 @@ public:
   /// The field f(x) and its gradient.
   void Evaluate(const double* x, double& value, double* gradient) const;
 
+  /// The samples whose support reaches within `extra` of x: every sample that contributes
+  /// anywhere in the ball of radius `extra` around x. Many evaluations near one place (a
+  /// point's refinement, a splat's corners) then skip the tree walk (EvaluateAmong).
+  void Gather(const double* x, double extra, std::vector<std::uint32_t>& candidates) const;
+
+  /// The field and its gradient at x from `candidates` (Gather's, for a ball that holds x).
+  void EvaluateAmong(const std::vector<std::uint32_t>& candidates, const double* x, double& value,
+    double* gradient) const;
+
   /// Calls visit(sample, weight) for every sample j whose support holds x, with weight
   /// (m_j / rho_j) W(|x - x_j|, H_j): the interpolation weights of any array.
   template <typename Visit>
   void ForEachWeight(const double* x, Visit&& visit) const;
+
+  /// Particles whose stored density was not positive and finite, so summed from the masses.
+  std::size_t SummedDensities = 0;
 
   /// The support radius H_j of sample j (storage order).
   double Support(std::size_t j) const { return this->H[j]; }
@@ -85,7 +97,7 @@ private:
   // Fills Nodes[index] for samples [begin, end), and its subtree.
   void Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end);
   template <typename Visit>
-  void ForEachSupportHolding(const double* x, Visit&& visit) const;
+  void ForEachSupportHolding(const double* x, Visit&& visit, double extra = 0.0) const;
 
   const Neighborhoods& Geometry;
   SPHKernel Kernel;
@@ -97,7 +109,7 @@ private:
 };
 
 template <typename Visit>
-void SPHField::ForEachSupportHolding(const double* x, Visit&& visit) const
+void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extra) const
 {
   // The storage order is the kd-tree's leaf order, so contiguous ranges are compact boxes; a
   // node is entered when x is within the largest support of its samples.
@@ -113,7 +125,8 @@ void SPHField::ForEachSupportHolding(const double* x, Visit&& visit) const
       const double outside = std::max(node.Lower[k] - x[k], x[k] - node.Upper[k]);
       d2 += outside > 0.0 ? outside * outside : 0.0;
     }
-    if (!(d2 < node.MaximumSupport * node.MaximumSupport))
+    const double reach = node.MaximumSupport + extra;
+    if (!(d2 < reach * reach))
     {
       continue;
     }
@@ -143,6 +156,10 @@ void SPHField::ForEachWeight(const double* x, Visit&& visit) const
     }
   });
 }
+
+/// The median kernel support over the median neighbourhood radius (distance to the n-th
+/// neighbour): about 1 or more for real SPH data, far less for placeholder smoothing lengths.
+double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field);
 
 /// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
 /// sign at the samples as the field itself gives it. Returns false only when aborted.

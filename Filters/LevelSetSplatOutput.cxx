@@ -40,6 +40,7 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   const bool completed = ParallelForInBlocks(
     static_cast<std::size_t>(count),
     [&](std::size_t begin, std::size_t end) {
+      std::vector<std::uint32_t> candidates;
       for (std::size_t i = begin; i < end; ++i)
       {
         double c[3], n[3];
@@ -48,25 +49,25 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         const double radius = radii->GetComponent(static_cast<vtkIdType>(i), 0);
         const Eigen::Vector3d normal = Eigen::Vector3d(n).normalized();
         DiskCorners(Eigen::Vector3d(c), normal, radius, sides, &xyz[3 * i * sides]);
+        if (field) // the corners are within a radius of the centre: one gather serves all
+        {
+          field->Gather(c, 1.5 * radius, candidates); // a slid corner is within sqrt(2) radii
+        }
         for (int k = 0; field && k < sides; ++k)
         {
           double* corner = &xyz[3 * (i * sides + k)];
           Eigen::Vector3d p(corner), gradient;
           auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-            field->Evaluate(x.data(), value, g.data());
+            field->EvaluateAmong(candidates, x.data(), value, g.data());
             value -= isoValue;
             return std::isfinite(value);
           };
           Eigen::Vector3d cornerNormal = normal;
-          if (SlideOntoDataLevel(p, normal, evaluate, radius, 4, gradient))
+          if (SolveOnLine(p, normal, evaluate, radius, 1e-6 * radius, gradient) &&
+            gradient.squaredNorm() > 0.0)
           {
-            double value;
-            field->Evaluate(p.data(), value, gradient.data());
-            if (gradient.squaredNorm() > 0.0)
-            {
-              cornerNormal = -gradient.normalized();
-              std::copy(p.data(), p.data() + 3, corner);
-            }
+            cornerNormal = -gradient.normalized();
+            std::copy(p.data(), p.data() + 3, corner);
           }
           for (int d = 0; d < 3; ++d)
           {

@@ -153,8 +153,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
   }
-  else if (!lsi::SPHOffsetsAtSamples(*geometry, *field, this->IsoValue, dataOffsets, dataSign,
-             this->Stage(SPHFieldStage)))
+  else if (!lsi::SPHOffsetsAtSamples(
+             *geometry, *field, this->IsoValue, dataOffsets, dataSign, this->Stage(SPHFieldStage)))
   {
     return false;
   }
@@ -347,6 +347,34 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
     field.reset();
     return false;
   }
+  // Placeholder smoothing lengths (some files carry a constant or stale column) do not describe
+  // these particles: a support far below the neighbourhood radius leaves most of space empty.
+  const double fit = lsi::MedianSupportPerNeighborhoodRadius(geometry, *field);
+  if (fit < 0.5)
+  {
+    if (this->Field == AUTOMATIC_FIELD)
+    {
+      vtkWarningMacro("The smoothing lengths do not fit these particles: the median kernel "
+                      "support is "
+        << fit << " times the median distance to the " << geometry.Stride - 1
+        << "th neighbour (real SPH supports hold 30 or more neighbours). Using the MLS fit of "
+           "the samples; set Field to SPH to use them anyway, or make them with Particle "
+           "Density.");
+      field.reset();
+      return true;
+    }
+    vtkWarningMacro("The smoothing lengths look too small for these particles: the median kernel "
+                    "support is "
+      << fit << " times the median distance to the " << geometry.Stride - 1
+      << "th neighbour. The SPH field is used, as Field asks, but it is spiky.");
+  }
+  if (field->SummedDensities > 0)
+  {
+    vtkWarningMacro(<< field->SummedDensities << " particles have a density that is not positive "
+                    << "and finite in '" << arrays.Density->GetName()
+                    << "': their volumes m / rho for the interpolated arrays use the density "
+                       "summed from the masses instead.");
+  }
   this->UsedSPHField = true;
   return true;
 }
@@ -444,8 +472,8 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
 }
 
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
-  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
-  const lsi::SPHField* field, vtkPolyData* output)
+  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints, const lsi::SPHField* field,
+  vtkPolyData* output)
 {
   const auto start = Clock::now();
   int association = -1;
@@ -515,8 +543,7 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
     { "SplatSides", this->SplatSides }, { "InterpolateArrays", this->InterpolateArrays },
     { "NeighborCacheSize", this->NeighborCacheSize }, { "Field", this->Field },
     { "Kernel", this->Kernel }, { "SupportPerSmoothingLength", this->SupportPerSmoothingLength },
-    { "UsedSPHField", this->UsedSPHField },
-    { "NeighborSearchCount", this->NeighborSearchCount },
+    { "UsedSPHField", this->UsedSPHField }, { "NeighborSearchCount", this->NeighborSearchCount },
     { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
     { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },
     { "Converged", this->Converged }, { "MeanSampleSpacing", this->MeanSampleSpacing },

@@ -109,6 +109,120 @@ bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, Evalu
   return true;
 }
 
+/// Moves p along the line through it with direction `normal` (unit, pointing out of
+/// f > f_iso) to a zero of `evaluate` (f - f_iso and its gradient) no further than `reach`,
+/// to within `tolerance` along the line. Newton's steps first; when they do not converge inside
+/// the reach (the field flattens beyond the outermost particles, where Newton overshoots), the
+/// zero nearest to p is bracketed by steps of reach/16, reach/8, ... on both sides and found by
+/// regula falsi (Illinois). `gradient` is the field's gradient at the result. Returns false
+/// (p unchanged) when no zero lies within the reach.
+template <typename EvaluateFn>
+bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn evaluate,
+  double reach, double tolerance, Eigen::Vector3d& gradient)
+{
+  const Eigen::Vector3d start = p;
+  // g(t) = f(start - t normal) - f_iso, and its derivative along t.
+  auto g = [&](double t, double& value, double& slope) {
+    if (!evaluate(Eigen::Vector3d(start - t * normal), value, gradient) || !std::isfinite(value))
+    {
+      return false;
+    }
+    slope = -gradient.dot(normal);
+    return true;
+  };
+  double value0, slope;
+  if (!g(0.0, value0, slope))
+  {
+    return false;
+  }
+  double t = 0.0, value = value0;
+  for (int k = 0; k < 8; ++k)
+  {
+    if (!(std::abs(slope) > 0.0))
+    {
+      break;
+    }
+    const double step = -value / slope;
+    t += step;
+    if (!(std::abs(t) <= reach) || !g(t, value, slope))
+    {
+      break;
+    }
+    if (std::abs(step) <= tolerance)
+    {
+      p = start - t * normal;
+      return true;
+    }
+  }
+  if (value0 == 0.0)
+  {
+    return g(0.0, value, slope);
+  }
+  // Bracket the zero nearest to the start.
+  double a = 0.0, ga = value0, b = 0.0, gb = 0.0;
+  bool bracketed = false;
+  double previous[2] = { 0.0, 0.0 }, previousValue[2] = { value0, value0 };
+  for (double step = reach / 16.0; !bracketed && step <= reach * (1.0 + 1e-12); step *= 2.0)
+  {
+    for (int side = 0; side < 2 && !bracketed; ++side)
+    {
+      const double ts = side == 0 ? step : -step;
+      double gs;
+      if (!g(ts, gs, slope))
+      {
+        continue;
+      }
+      if ((gs > 0.0) != (value0 > 0.0) || gs == 0.0)
+      {
+        a = previous[side];
+        ga = previousValue[side];
+        b = ts;
+        gb = gs;
+        bracketed = true;
+      }
+      previous[side] = ts;
+      previousValue[side] = gs;
+    }
+  }
+  if (!bracketed)
+  {
+    return false;
+  }
+  // Illinois: regula falsi that halves the value at an end kept twice in a row.
+  int side = 0;
+  for (int k = 0; k < 100 && std::abs(b - a) > tolerance; ++k)
+  {
+    const double c = (a * gb - b * ga) / (gb - ga);
+    double gc;
+    if (!g(c, gc, slope))
+    {
+      return false;
+    }
+    if (gc == 0.0)
+    {
+      a = b = c;
+      break;
+    }
+    if ((gc > 0.0) == (gb > 0.0))
+    {
+      b = c;
+      gb = gc;
+      ga = side == -1 ? 0.5 * ga : ga;
+      side = -1;
+    }
+    else
+    {
+      a = c;
+      ga = gc;
+      gb = side == 1 ? 0.5 * gb : gb;
+      side = 1;
+    }
+  }
+  t = 0.5 * (a + b);
+  p = start - t * normal;
+  return g(t, value, slope);
+}
+
 } // namespace lsi
 
 #endif

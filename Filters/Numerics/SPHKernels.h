@@ -21,6 +21,18 @@ enum class SPHKernel
   WendlandC2 = 2,    // GIZMO's and many modern codes' choice
 };
 
+/// x^N by multiplications (std::pow is a library call, and these run billions of times).
+template <int N>
+inline double Power(double x)
+{
+  double result = 1.0;
+  for (int i = 0; i < N; ++i)
+  {
+    result *= x;
+  }
+  return result;
+}
+
 /// W(r, H) for distance r and support radius H > 0.
 inline double SPHKernelValue(SPHKernel kernel, double r, double H)
 {
@@ -35,17 +47,17 @@ inline double SPHKernelValue(SPHKernel kernel, double r, double H)
   {
     case SPHKernel::CubicSpline:
       return norm * (8.0 / pi) *
-        (q <= 0.5 ? 1.0 - 6.0 * q * q + 6.0 * q * q * q : 2.0 * std::pow(1.0 - q, 3));
+        (q <= 0.5 ? 1.0 - 6.0 * q * q + 6.0 * q * q * q : 2.0 * Power<3>(1.0 - q));
     case SPHKernel::QuinticSpline:
     {
       const double a = 1.0 - q, b = 2.0 / 3.0 - q, c = 1.0 / 3.0 - q;
-      double w = std::pow(a, 5);
-      w -= b > 0.0 ? 6.0 * std::pow(b, 5) : 0.0;
-      w += c > 0.0 ? 15.0 * std::pow(c, 5) : 0.0;
+      double w = Power<5>(a);
+      w -= b > 0.0 ? 6.0 * Power<5>(b) : 0.0;
+      w += c > 0.0 ? 15.0 * Power<5>(c) : 0.0;
       return norm * (2187.0 / (40.0 * pi)) * w;
     }
     case SPHKernel::WendlandC2:
-      return norm * (21.0 / (2.0 * pi)) * std::pow(1.0 - q, 4) * (1.0 + 4.0 * q);
+      return norm * (21.0 / (2.0 * pi)) * Power<4>(1.0 - q) * (1.0 + 4.0 * q);
   }
   return 0.0;
 }
@@ -69,13 +81,13 @@ inline double SPHKernelDerivative(SPHKernel kernel, double r, double H)
     case SPHKernel::QuinticSpline:
     {
       const double a = 1.0 - q, b = 2.0 / 3.0 - q, c = 1.0 / 3.0 - q;
-      double w = -5.0 * std::pow(a, 4);
-      w += b > 0.0 ? 30.0 * std::pow(b, 4) : 0.0;
-      w -= c > 0.0 ? 75.0 * std::pow(c, 4) : 0.0;
+      double w = -5.0 * Power<4>(a);
+      w += b > 0.0 ? 30.0 * Power<4>(b) : 0.0;
+      w -= c > 0.0 ? 75.0 * Power<4>(c) : 0.0;
       return norm * (2187.0 / (40.0 * pi)) * w;
     }
     case SPHKernel::WendlandC2:
-      return norm * (21.0 / (2.0 * pi)) * (-20.0 * q * std::pow(1.0 - q, 3));
+      return norm * (21.0 / (2.0 * pi)) * (-20.0 * q * Power<3>(1.0 - q));
   }
   return 0.0;
 }
@@ -109,11 +121,12 @@ inline void AccumulateKernel(SPHKernel kernel, const double* x, const double* xj
   double c, double& value, double* gradient)
 {
   const double d[3] = { x[0] - xj[0], x[1] - xj[1], x[2] - xj[2] };
-  const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(r < H))
+  const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (!(r2 < H * H))
   {
     return;
   }
+  const double r = std::sqrt(r2);
   value += c * SPHKernelValue(kernel, r, H);
   if (r > 0.0)
   {

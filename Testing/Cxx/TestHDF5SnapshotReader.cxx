@@ -107,6 +107,10 @@ void TestMultiFileGadget(const std::string& dir)
     Check(FieldString(gas, "DensityArray") == "Density" &&
         FieldString(gas, "SmoothingLengthArray") == "SmoothingLength",
       path + ": the density and smoothing-length arrays are named in field data");
+    Check(FieldString(gas, "MassArray") == "Masses" &&
+        FieldString(gas, "SPHKernel") == "CubicSpline" &&
+        FieldNumber(gas, "SupportPerSmoothingLength") == 1.0,
+      path + ": GADGET's SPH field marked: masses, cubic spline, h is the support");
     vtkDataArray* masses = gas->GetPointData()->GetArray("Masses");
     Check(masses && masses->GetRange()[0] == 0.25 && masses->GetRange()[1] == 0.25,
       path + ": gas Masses from its dataset");
@@ -242,6 +246,11 @@ void TestSwift(const std::string& path)
       std::abs(FieldNumber(gas, "HydroScheme/Kernel gamma") - 2.195775) < 1e-6,
     path + ": the kernel from HydroScheme (got '" +
       FieldString(gas, "HydroScheme/Kernel function") + "')");
+  Check(FieldString(gas, "SPHKernel") == "QuinticSpline" &&
+      std::abs(FieldNumber(gas, "SupportPerSmoothingLength") - 2.195775) < 1e-6 &&
+      FieldString(gas, "MassArray") == "Masses",
+    path + ": SWIFT's SPH field marked: quintic spline, support = Kernel gamma x h (got '" +
+      FieldString(gas, "SPHKernel") + "')");
   Check(std::abs(FieldNumber(gas, "BoxSize", 2) - 6.2831853071) < 1e-9,
     path + ": BoxSize (2 pi)^3 as a 3-vector");
   std::cout << path << ": " << gas->GetNumberOfPoints() << " particles, "

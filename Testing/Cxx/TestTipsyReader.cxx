@@ -9,15 +9,18 @@
 #include "MessageCounter.h"
 #include "TestCheck.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <cmath>
@@ -291,6 +294,13 @@ void TestRealFile(const std::string& path, vtkIdType expectedGas, double halfExt
     inside = inside && std::isfinite(b) && std::abs(b) <= halfExtent;
   }
   Check(inside, path + ": coordinates within +-" + std::to_string(halfExtent));
+  auto marker = [&](const char* name) {
+    vtkAbstractArray* array = out->GetFieldData()->GetAbstractArray(name);
+    return array ? array->GetVariantValue(0).ToString() : std::string();
+  };
+  Check(marker("SmoothingLengthArray") == "hsmooth" && marker("MassArray") == "mass" &&
+      marker("SPHKernel") == "CubicSpline" && marker("SupportPerSmoothingLength") == "2",
+    path + ": the SPH field marked: hsmooth, mass, cubic spline with support 2 hsmooth");
 }
 // The galaxy snapshot has no gas: the first type there is (dark matter) is read by default,
 // and all types give the header's counts, 3,627 dark and 5,321 star particles.
