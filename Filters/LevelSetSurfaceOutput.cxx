@@ -105,8 +105,8 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
       for (std::size_t i = begin; i < end; ++i)
       {
         weights.clear();
-        field.ForEachWeight(&points[3 * i],
-          [&](std::uint32_t j, double w) { weights.emplace_back(j, w); });
+        field.ForEachWeight(
+          &points[3 * i], [&](std::uint32_t j, double w) { weights.emplace_back(j, w); });
         for (std::size_t a = 0; a < sources.size(); ++a)
         {
           const int components = sources[a]->GetNumberOfComponents();
@@ -127,8 +127,7 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
 
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
-  const char* activeScalars, const SPHField* field, vtkPolyData* surface,
-  const AbortCheck& aborted)
+  const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;

@@ -618,8 +618,7 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     pointData->AddArray(array);
     haveMasses = haveMasses || name == "Masses";
     markers.Density = OneOf(name, DensityNames) ? name : markers.Density;
-    markers.SmoothingLength =
-      OneOf(name, SmoothingLengthNames) ? name : markers.SmoothingLength;
+    markers.SmoothingLength = OneOf(name, SmoothingLengthNames) ? name : markers.SmoothingLength;
   }
   if (!havePoints)
   {

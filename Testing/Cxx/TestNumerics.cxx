@@ -555,8 +555,8 @@ void TestSPHKernelGradients()
       for (double q : { 0.1, 0.3, 0.45, 0.55, 0.7, 0.9, 0.99 })
       {
         const double r = q * H, step = 1e-6 * H;
-        const double numeric = (lsi::SPHKernelValue(kernel, r + step, H) -
-                                 lsi::SPHKernelValue(kernel, r - step, H)) /
+        const double numeric =
+          (lsi::SPHKernelValue(kernel, r + step, H) - lsi::SPHKernelValue(kernel, r - step, H)) /
           (2.0 * step);
         const double analytic = lsi::SPHKernelDerivative(kernel, r, H);
         const double scale = lsi::SPHKernelValue(kernel, 0.0, H) / H;
