@@ -49,6 +49,7 @@ struct IsopointSet
   std::size_t CompletedCount = 0;   // points added by completion (after thinning)
   std::size_t DataRefinedCount = 0; // points the data refinement moved
   std::size_t DroppedCount = 0;     // points the SPH refinement found no level near, dropped
+  std::size_t FreeBoundaryCount = 0; // points added where the cloud ends above the isovalue
 };
 
 /// Isopoints per block of the parallel loops, between two abort checks: a block of Newton
@@ -89,6 +90,17 @@ class SPHField;
 /// SPHMaximumMove times the kernel support of the particle nearest to each isopoint.
 bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+
+/// Step 7b on SPH data, the free boundary: where the particle cloud itself ends inside the
+/// component (a galaxy's edge, a tube's wall), no pair of particles straddles the surface, which
+/// lies up to a kernel support beyond the outermost particles, so the steps above leave a hole.
+/// From each sample inside the component (`phi` > 0, `dataOffsets` > 0) on the edge of the cloud
+/// (its neighbours to one side), a ray outwards is solved onto the field's level within one
+/// support; the points found join `out`, thinned by voxels (existing points keep theirs).
+/// Returns false only when aborted.
+bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field, double isoValue,
+  const std::vector<double>& phi, const std::vector<double>& dataOffsets,
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 
 // Pieces shared by the three steps.
 

@@ -442,6 +442,12 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   {
     return false;
   }
+  if (field && settings.RefineOnData &&
+    !lsi::AddFreeBoundaryPoints(geometry, *field, this->IsoValue, phi, dataOffsets, settings,
+      isopoints, lsi::SubRange(stage, 1.0, 1.0)))
+  {
+    return false;
+  }
   this->DataRefinementSeconds = SecondsSince(partStart);
   if (isopoints.Points.empty())
   {

@@ -83,28 +83,34 @@ class SPHTruth:
         self.Hmax = H.max()
 
     def evaluate(self, points):
+        """rho and grad rho at the points: each particle's support is searched in a tree of the
+        points (exact pairs, no global search radius), in chunks of particles."""
         points = np.atleast_2d(points)
         value = np.zeros(len(points))
         grad = np.zeros((len(points), 3))
-        lists = self.tree.query_ball_point(points, self.Hmax)
-        counts = np.array([len(l) for l in lists])
-        if counts.sum() == 0:
+        if len(points) == 0:
             return value, grad
-        owner = np.repeat(np.arange(len(points)), counts)
-        j = np.concatenate([np.asarray(l, dtype=np.int64) for l in lists if len(l)])
-        d = points[owner] - self.x[j]
-        r = np.linalg.norm(d, axis=1)
-        H = self.H[j]
-        q = r / H
-        keep = q < 1
-        owner, j, d, r, H, q = owner[keep], j[keep], d[keep], r[keep], H[keep], q[keep]
-        w = self.m[j] * kernel_w(self.kernel, q) / H**3
-        np.add.at(value, owner, w)
-        dw = self.m[j] * kernel_dw(self.kernel, q) / H**4
-        safe = np.where(r > 0, r, 1.0)
-        g = (dw / safe)[:, None] * d * (r > 0)[:, None]
-        for k in range(3):
-            np.add.at(grad[:, k], owner, g[:, k])
+        tree = cKDTree(points)
+        chunk = 4096
+        for start in range(0, len(self.x), chunk):
+            xs, Hs = self.x[start:start + chunk], self.H[start:start + chunk]
+            lists = tree.query_ball_point(xs, Hs)
+            counts = np.array([len(l) for l in lists])
+            if counts.sum() == 0:
+                continue
+            j = np.repeat(np.arange(start, start + len(xs)), counts)
+            owner = np.concatenate([np.asarray(l, dtype=np.int64) for l in lists if len(l)])
+            d = points[owner] - self.x[j]
+            r = np.linalg.norm(d, axis=1)
+            H = self.H[j]
+            q = r / H
+            w = self.m[j] * kernel_w(self.kernel, q) / H**3
+            value += np.bincount(owner, weights=w, minlength=len(points))
+            dw = self.m[j] * kernel_dw(self.kernel, q) / H**4
+            safe = np.where(r > 0, r, 1.0)
+            g = (dw / safe)[:, None] * d * (r > 0)[:, None]
+            for k in range(3):
+                grad[:, k] += np.bincount(owner, weights=g[:, k], minlength=len(points))
         return value, grad
 
     def on_grid(self, origin, step, dims):
@@ -335,7 +341,11 @@ def main():
         summed, _ = truth.evaluate(x)
         # The isovalue: the density at the particle ranked at the 30th percentile from the top
         # of the summed field (a surface inside the sampled region), the seed: densest particle.
+        # The shock tube's dense state is a plateau (60% of its particles at 1.00 +- 0.03): its
+        # isovalue is half the median, between the two states, not the plateau's noise.
         iso = float(np.quantile(summed, 0.7))
+        if name == "changa-shocktube":
+            iso = 0.5 * float(np.median(summed))
         seed = x[np.argmax(summed)]
         if name == "evrard-summed":
             iso = 1.0 / (2 * PI * 0.5)  # analytic surface r = 0.5

@@ -48,18 +48,35 @@ if list(whole.SeedCenter) != [0, 0, 0] or whole.SeedRadius != 0:
     failures.append("SeedCenter=[0, 0, 0], SeedRadius=0 keywords were overridden: %s %s"
                     % (list(whole.SeedCenter), whole.SeedRadius))
 # Every other property given as a keyword equal to its XML default keeps it.
+
+
+def element(proxy, name):
+    """The property's stored value (an enumeration's number, not its text)."""
+    return proxy.SMProxy.GetProperty(name).GetElement(0)
+
+
+
 xml_defaults = dict(Epsilon=0.0, CurvatureEpsilon=0.0, TimeStep=0.0, CurvatureWeight=0.05,
                     DistanceRegularization=0.1, ConvergenceTolerance=0.0001, SplatScale=1.0,
                     NumberOfNeighbors=26, ReinitializationSteps=2, MaximumNumberOfIterations=500,
                     NeighborCacheSize=4, NumberOfThreads=0, SplatSides=8, Completion=1,
-                    DataRefinement=1, InterpolateArrays=1)
+                    DataRefinement=1, InterpolateArrays=1, Field=0, Kernel=0,
+                    SupportPerSmoothingLength=0.0, SmoothingLengthArray="", MassArray="",
+                    DensityArray="")
 for name, value in xml_defaults.items():
     keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
                                    **{name: value})
-    if keyworded.GetPropertyValue(name) != value:
-        failures.append("%s=%s as a keyword became %s"
-                        % (name, value, keyworded.GetPropertyValue(name)))
+    if element(keyworded, name) != value:
+        failures.append("%s=%s as a keyword became %s" % (name, value, element(keyworded, name)))
 print("%d properties kept their keyword values" % len(xml_defaults))
+# And values other than the defaults.
+for name, value in dict(Field=2, Kernel=3, SupportPerSmoothingLength=2.195775,
+                        SmoothingLengthArray="hsmooth", MassArray="mass",
+                        DensityArray="rho").items():
+    keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                                   **{name: value})
+    if element(keyworded, name) != value:
+        failures.append("%s=%s as a keyword became %s" % (name, value, element(keyworded, name)))
 # Without seed keywords the seed sphere sits in the middle of the data, a tenth of its extent.
 placed = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0)
 center, seed_radius = list(placed.SeedCenter), placed.SeedRadius
