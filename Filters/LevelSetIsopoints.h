@@ -43,12 +43,12 @@ struct IsopointSettings
 
 struct IsopointSet
 {
-  std::vector<double> Points;       // 3 per isopoint
-  std::vector<double> Normals;      // 3 per isopoint: unit, pointing out of {phi > 0}
-  std::size_t RoughCount = 0;       // zero crossings accepted by the angle criterion
-  std::size_t CompletedCount = 0;   // points added by completion (after thinning)
-  std::size_t DataRefinedCount = 0; // points the data refinement moved
-  std::size_t DroppedCount = 0;     // points the SPH refinement found no level near, dropped
+  std::vector<double> Points;        // 3 per isopoint
+  std::vector<double> Normals;       // 3 per isopoint: unit, pointing out of {phi > 0}
+  std::size_t RoughCount = 0;        // zero crossings accepted by the angle criterion
+  std::size_t CompletedCount = 0;    // points added by completion (after thinning)
+  std::size_t DataRefinedCount = 0;  // points the data refinement moved
+  std::size_t DroppedCount = 0;      // points the SPH refinement found no level near, dropped
   std::size_t FreeBoundaryCount = 0; // points added where the cloud ends above the isovalue
 };
 

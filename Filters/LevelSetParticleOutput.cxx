@@ -23,9 +23,13 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
-    levelSet->SetValue(geometry.Order[i], phi[i]); // back from storage order to input order
+    // Back from storage order to input order; ghost images (ids past the input's) are left out.
+    if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+    {
+      levelSet->SetValue(geometry.Order[i], phi[i]);
+    }
   }
   particles->GetPointData()->AddArray(levelSet);
 }

@@ -10,6 +10,7 @@
 #include "LevelSetNeighborCache.h"
 #include "LevelSetParameters.h"
 #include "LevelSetParticleOutput.h"
+#include "LevelSetPeriodicImages.h"
 #include "LevelSetSPHField.h"
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetSplatOutput.h"
@@ -52,6 +53,11 @@ constexpr double SplatStage[2] = { 0.98, 1.0 };
 struct vtkLevelSetIsosurface::Internals
 {
   lsi::NeighborCache Cache;
+  // This execution's periodic box: the input's points come first, then their ghost images.
+  lsi::PeriodicBox Box;
+  vtkIdType OriginalCount = 0;
+  std::vector<vtkIdType> ImageOf;
+  double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
 };
 
 vtkLevelSetIsosurface::vtkLevelSetIsosurface()
@@ -138,6 +144,13 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
+  vtkSmartPointer<vtkPointSet> original = input;
+  vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(input, values);
+  if (!work)
+  {
+    return false;
+  }
+  input = work; // from here on: the particles and their ghost images, if any
   const lsi::Neighborhoods* geometry = this->FindNeighborhoods(input->GetPoints());
   if (!geometry)
   {
@@ -148,6 +161,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
+  this->CheckPeriodicMargin(*geometry, field.get());
   std::vector<double> dataOffsets, dataSign; // f - f_iso and its sign, in storage order
   if (!field)
   {
@@ -179,7 +193,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  lsi::MakeParticleOutput(input, *geometry, phi, particleOutput);
+  lsi::MakeParticleOutput(original, *geometry, phi, particleOutput);
   convergence->ShallowCopy(iterations);
   // An abort that arrived during the last stage still empties the outputs.
   return !this->ProgressOrAbort(1.0);
@@ -194,7 +208,9 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
     { "TimeStep", this->TimeStep }, { "CurvatureWeight", this->CurvatureWeight },
     { "DistanceRegularization", this->DistanceRegularization },
     { "ConvergenceTolerance", this->ConvergenceTolerance }, { "SplatScale", this->SplatScale },
-    { "SupportPerSmoothingLength", this->SupportPerSmoothingLength } };
+    { "SupportPerSmoothingLength", this->SupportPerSmoothingLength },
+    { "BoxSize[0]", this->BoxSize[0] }, { "BoxSize[1]", this->BoxSize[1] },
+    { "BoxSize[2]", this->BoxSize[2] } };
   for (double value : this->AdditionalSeeds)
   {
     parameters.emplace_back("AdditionalSeeds", value);
@@ -215,6 +231,146 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
     return false;
   }
   return true;
+}
+
+vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
+  vtkPointSet* input, std::vector<double>& values)
+{
+  Internals& internal = *this->Internal;
+  std::string problem;
+  internal.Box = lsi::FindPeriodicBox(input, this->BoxSize, this->Periodic, problem);
+  internal.OriginalCount = input->GetNumberOfPoints();
+  internal.ImageOf.clear();
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return nullptr;
+  }
+  if (!internal.Box.Enabled)
+  {
+    return input;
+  }
+  double bounds[6];
+  input->GetBounds(bounds);
+  for (int d = 0; d < 3; ++d)
+  {
+    const double slack = 0.5 * this->PeriodicMargin * internal.Box.Size[d];
+    if (bounds[2 * d] < -slack || bounds[2 * d + 1] > internal.Box.Size[d] + slack)
+    {
+      vtkWarningMacro("The particles reach outside the periodic box [0, "
+        << internal.Box.Size[d] << ") on axis " << d << " (" << bounds[2 * d] << " to "
+        << bounds[2 * d + 1] << "): the box is not taken as periodic. Set BoxSize, or turn "
+        << "Periodic off to silence this.");
+      internal.Box = lsi::PeriodicBox();
+      return input;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> work =
+    lsi::WithPeriodicImages(input, internal.Box, this->PeriodicMargin, internal.ImageOf);
+  for (vtkIdType original : internal.ImageOf)
+  {
+    values.push_back(values[original]);
+  }
+  vtkDebugMacro(<< internal.ImageOf.size() << " ghost images across the periodic box's faces.");
+  return work;
+}
+
+bool vtkLevelSetIsosurface::FollowAcrossFaces(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+  std::vector<char>& inSeed, std::vector<double>& phi)
+{
+  const Internals& internal = *this->Internal;
+  if (!internal.Box.Enabled)
+  {
+    return true;
+  }
+  // A particle and its images are one particle: where the flood reached one of them, it seeds
+  // the others, and the flood runs again, until no new particle joins (a component that wraps
+  // through several faces takes a few rounds).
+  const std::vector<vtkIdType> original =
+    lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf);
+  for (int round = 0; round < 8; ++round)
+  {
+    std::vector<char> reached(static_cast<std::size_t>(internal.OriginalCount), 0);
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      reached[original[i]] |= phi[i] > 0.0 ? 1 : 0;
+    }
+    bool added = false;
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      if (reached[original[i]] && !inSeed[i] && !(phi[i] > 0.0) && dataOffsets[i] > 0.0)
+      {
+        inSeed[i] = 1;
+        added = true;
+      }
+    }
+    if (!added)
+    {
+      return true;
+    }
+    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
+      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
+      this->Stage(InitializationStage));
+    if (flood.Aborted)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
+{
+  const Internals& internal = *this->Internal;
+  if (!internal.Box.Enabled)
+  {
+    return;
+  }
+  // Every piece of surface is found once in the box and again in the images: keep the box,
+  // then, around the seed, move each point by whole boxes into the cell centred on the seed.
+  std::vector<char> kept(isopoints.Points.size() / 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+  {
+    kept[i] = lsi::InKeptCell(&isopoints.Points[3 * i], internal.Box, nullptr) ? 1 : 0;
+  }
+  lsi::IsopointSet inCell;
+  lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), inCell);
+  isopoints.Points.swap(inCell.Points);
+  isopoints.Normals.swap(inCell.Normals);
+  if (this->PeriodicOutput == AROUND_SEED)
+  {
+    lsi::IntoCellAround(isopoints.Points, internal.Box, internal.SeedCenter);
+  }
+}
+
+void vtkLevelSetIsosurface::CheckPeriodicMargin(
+  const lsi::Neighborhoods& geometry, const lsi::SPHField* field)
+{
+  const Internals& internal = *this->Internal;
+  if (!internal.Box.Enabled)
+  {
+    return;
+  }
+  std::vector<double> supports;
+  for (std::size_t i = 0; field && i < geometry.NumberOfSamples; ++i)
+  {
+    supports.push_back(field->Support(i));
+  }
+  double needed = 0.0;
+  const std::size_t cut = lsi::SamplesBeyondImages(
+    geometry, internal.Box, this->PeriodicMargin, internal.OriginalCount, supports, needed);
+  if (cut > 0)
+  {
+    vtkWarningMacro(<< cut
+                    << " particles near the periodic box's faces have neighbourhoods or "
+                       "kernel supports that reach past the ghost images (PeriodicMargin "
+                    << this->PeriodicMargin
+                    << " of the box): the surface may be wrong next to the faces. A "
+                       "PeriodicMargin of "
+                    << std::min(0.25, 1.1 * needed) << " would hold them"
+                    << (needed > 0.25 ? " (more than the largest, 0.25)." : "."));
+  }
 }
 
 const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(vtkPoints* points)
@@ -286,6 +442,11 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   input->GetBounds(bounds);
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
+  for (int d = 0; d < 3; ++d) // the kept periodic cell's centre: the main seed, else the box's
+  {
+    this->Internal->SeedCenter[d] =
+      spheres.empty() ? 0.5 * this->Internal->Box.Size[d] : spheres[d];
+  }
   const lsi::SeedSphereStart seeds =
     lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi);
   const std::string problem = lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere);
@@ -299,7 +460,8 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, seeds.InSeed,
       static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
       this->Stage(InitializationStage));
-    if (flood.Aborted)
+    std::vector<char> inSeed = seeds.InSeed;
+    if (flood.Aborted || !this->FollowAcrossFaces(geometry, dataOffsets, settings, inSeed, phi))
     {
       return false;
     }
@@ -449,6 +611,7 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
     return false;
   }
   this->DataRefinementSeconds = SecondsSince(partStart);
+  this->KeepPeriodicCell(isopoints);
   if (isopoints.Points.empty())
   {
     // Valid inputs, no surface: say why, rather than return an empty output silently.
@@ -530,6 +693,8 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedCenter: (" << this->SeedCenter[0] << ", " << this->SeedCenter[1] << ", "
      << this->SeedCenter[2] << ")\n";
   os << indent << "NumberOfAdditionalSeeds: " << this->GetNumberOfAdditionalSeeds() << "\n";
+  os << indent << "BoxSize: (" << this->BoxSize[0] << ", " << this->BoxSize[1] << ", "
+     << this->BoxSize[2] << ")\n";
   os << indent << "SmoothingLengthArray: " << this->SmoothingLengthArray << "\n";
   os << indent << "MassArray: " << this->MassArray << "\n";
   os << indent << "DensityArray: " << this->DensityArray << "\n";
@@ -549,7 +714,9 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
     { "SplatSides", this->SplatSides }, { "InterpolateArrays", this->InterpolateArrays },
     { "NeighborCacheSize", this->NeighborCacheSize }, { "Field", this->Field },
     { "Kernel", this->Kernel }, { "SupportPerSmoothingLength", this->SupportPerSmoothingLength },
-    { "UsedSPHField", this->UsedSPHField }, { "NeighborSearchCount", this->NeighborSearchCount },
+    { "UsedSPHField", this->UsedSPHField }, { "Periodic", this->Periodic },
+    { "PeriodicMargin", this->PeriodicMargin }, { "PeriodicOutput", this->PeriodicOutput },
+    { "NeighborSearchCount", this->NeighborSearchCount },
     { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
     { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },
     { "Converged", this->Converged }, { "MeanSampleSpacing", this->MeanSampleSpacing },

@@ -55,6 +55,7 @@
 #include "LevelSetIsosurfaceFiltersModule.h" // for export macro
 #include "vtkLevelSetMacros.h"               // for vtkSetClampWarnMacro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
@@ -273,6 +274,46 @@ public:
   vtkGetCharFromStdStringMacro(DensityArray);
   ///@}
 
+  ///@{
+  /**
+   * Periodic boxes (default on): when the box is known, from BoxSize or the "BoxSize" field
+   * data the HDF5 reader passes from the snapshot's Header, the box [0, BoxSize) wraps: the
+   * particles within PeriodicMargin of a face are copied across it (ghost images), so that
+   * neighbourhoods, the flood and the SPH field continue through the faces, and a component
+   * that crosses a face is one closed surface. The seeded component is followed through the
+   * faces. Off: the box's faces are edges of the data.
+   */
+  vtkSetMacro(Periodic, bool);
+  vtkGetMacro(Periodic, bool);
+  vtkBooleanMacro(Periodic, bool);
+  ///@}
+
+  ///@{
+  /** The periodic box's size on each axis (the box is [0, BoxSize)). (0, 0, 0) (default): the
+   * snapshot's "BoxSize" field data (one value or three); without it, no periodic box. */
+  vtkSetVector3Macro(BoxSize, double);
+  vtkGetVector3Macro(BoxSize, double);
+  ///@}
+
+  ///@{
+  /** How far the ghost images reach beyond each face, as a fraction of the box (default 0.1:
+   * up to 1.7 times the particles). It must hold the neighbourhoods and kernel supports of the
+   * particles near the faces; a warning says when it does not, and what would. */
+  vtkSetClampWarnMacro(PeriodicMargin, double, 0.01, 0.25);
+  vtkGetMacro(PeriodicMargin, double);
+  ///@}
+
+  enum PeriodicOutputs
+  {
+    IN_BOX = 0,     // the surface inside [0, BoxSize): a component crossing a face is cut there
+    AROUND_SEED = 1 // the surface inside the box centred on the seed: the component in one piece
+  };
+  ///@{
+  /** Which periodic cell the surface is given in (periodic boxes only). Default IN_BOX. */
+  vtkSetClampWarnMacro(PeriodicOutput, int, IN_BOX, AROUND_SEED);
+  vtkGetMacro(PeriodicOutput, int);
+  ///@}
+
   enum Initializations
   {
     SEED_SPHERES = 0, // the paper: phi starts as the distance to the seed spheres
@@ -400,6 +441,10 @@ protected:
   int Kernel = AUTOMATIC_KERNEL;
   double SupportPerSmoothingLength = 0.0;
   std::string SmoothingLengthArray, MassArray, DensityArray;
+  bool Periodic = true;
+  double BoxSize[3] = { 0.0, 0.0, 0.0 };
+  double PeriodicMargin = 0.1;
+  int PeriodicOutput = IN_BOX;
 
   // Read-only results of the last execution (see the getters).
   int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0;
@@ -421,6 +466,11 @@ private:
   bool Execute(vtkPointSet* input, vtkPolyData* surfaceOutput, vtkPolyData* particleOutput,
     vtkTable* convergence);
   bool ValidateInput(vtkPointSet* input, std::vector<double>& values);
+  vtkSmartPointer<vtkPointSet> WithPeriodicImages(vtkPointSet* input, std::vector<double>& values);
+  bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
+  void KeepPeriodicCell(lsi::IsopointSet& isopoints);
+  void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
   const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,

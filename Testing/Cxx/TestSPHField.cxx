@@ -160,6 +160,89 @@ void Report(const std::string& what, const Scores& s, vtkIdType points)
             << " deg\n";
 }
 
+// A component that crosses the faces of a periodic box: the Evrard ball (with its summed
+// density) moved so that its centre sits on the face x = 0 of the box [0, 3)^3, each particle
+// wrapped into the box, and "BoxSize" field data as the HDF5 reader writes it. The surface
+// r = 0.5 must come out whole: the same isopoints as the ball in open space (count within 2%,
+// the same radius about the centre in the periodic metric), half of them on each side of the
+// box; centred on the seed, one closed sphere; with Periodic off, a surface closed off at the
+// face instead.
+void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double openRadius)
+{
+  const double L = 3.0, center[3] = { 0.0, 1.5, 1.5 };
+  auto box = vtkSmartPointer<vtkPolyData>::New();
+  box->DeepCopy(glass);
+  for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    box->GetPoint(i, x);
+    for (int d = 0; d < 3; ++d)
+    {
+      x[d] = std::fmod(x[d] + center[d] + L, L);
+    }
+    box->GetPoints()->SetPoint(i, x);
+  }
+  vtkNew<vtkDoubleArray> size;
+  size->SetName("BoxSize");
+  size->InsertNextValue(L);
+  box->GetFieldData()->AddArray(size);
+  const double seed[3] = { 0.1, 1.5, 1.5 };
+  auto radiusAbout = [&](const double* x, bool periodic) {
+    double r2 = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      double dx = x[d] - center[d];
+      dx -= periodic ? L * std::round(dx / L) : 0.0;
+      r2 += dx * dx;
+    }
+    return std::sqrt(r2);
+  };
+  for (int output : { vtkLevelSetIsosurface::IN_BOX, vtkLevelSetIsosurface::AROUND_SEED })
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    filter->SetPeriodicOutput(output);
+    auto out = Run(box, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, filter);
+    const vtkIdType n = out->GetNumberOfPoints();
+    double mean = 0.0, worst = 0.0;
+    vtkIdType high = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double r = radiusAbout(out->GetPoint(i), output == vtkLevelSetIsosurface::IN_BOX);
+      mean += r;
+      worst = std::max(worst, std::abs(r - openRadius));
+      high += out->GetPoint(i)[0] > 1.5 ? 1 : 0;
+    }
+    mean /= std::max<vtkIdType>(1, n);
+    std::cout << "Periodic box, " << (output ? "around the seed" : "in the box") << ": " << n
+              << " isopoints (open space: " << openCount << "), " << high
+              << " beyond x = 1.5, mean radius " << mean << " (open space: " << openRadius
+              << "), largest deviation " << worst << "\n";
+    Check(std::abs(static_cast<double>(n - openCount)) <= 0.02 * openCount &&
+        std::abs(mean - openRadius) < 2e-3 && worst < 0.05,
+      std::string("periodic box: the ball across the face is the whole sphere, ") +
+        (output ? "centred on the seed" : "in the box"));
+    if (output == vtkLevelSetIsosurface::IN_BOX)
+    {
+      Check(high > 0.3 * n && high < 0.7 * n, "periodic box: half the sphere on each side");
+    }
+    else
+    {
+      Check(high == 0, "periodic box, around the seed: one piece about the seed");
+    }
+  }
+  vtkNew<vtkLevelSetIsosurface> open;
+  open->SetPeriodic(false);
+  auto cut = Run(box, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, open);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < cut->GetNumberOfPoints(); ++i)
+  {
+    worst = std::max(worst, std::abs(radiusAbout(cut->GetPoint(i), true) - openRadius));
+  }
+  std::cout << "Periodic off: " << cut->GetNumberOfPoints()
+            << " isopoints, largest deviation from the sphere " << worst << "\n";
+  Check(worst > 0.2, "Periodic off: the face cuts the component (a surface closed off there)");
+}
+
 void TestEvrard(const std::string& path)
 {
   vtkNew<vtkTipsyParticleReader> reader;
@@ -213,6 +296,8 @@ void TestEvrard(const std::string& path)
   }
   std::cout << "Evrard: interpolated array, worst relative difference " << worst << "\n";
   Check(interpolated && worst < 1e-9, "Evrard: arrays interpolated as sum (m/rho) A W");
+
+  TestPeriodicBox(glass, iso, isopoints->GetNumberOfPoints(), meanRadius);
 
   // The default output: every splat corner on the level, its normal the field's.
   auto splats = Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::SPLATS);

@@ -1,0 +1,215 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetPeriodicImages.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkVariant.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lsi
+{
+
+PeriodicBox FindPeriodicBox(
+  vtkPointSet* input, const double requested[3], bool periodic, std::string& problem)
+{
+  PeriodicBox box;
+  problem.clear();
+  if (!periodic)
+  {
+    return box;
+  }
+  if (requested[0] > 0.0 || requested[1] > 0.0 || requested[2] > 0.0)
+  {
+    std::copy(requested, requested + 3, box.Size);
+  }
+  else
+  {
+    vtkDataArray* size =
+      vtkDataArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("BoxSize"));
+    if (!size || size->GetNumberOfValues() < 1)
+    {
+      return box; // no box known: not periodic
+    }
+    // One value (GADGET) or three (SWIFT), stored as values of one array. GADGET writes 0
+    // for a run without a box (an isolated gas sphere): not periodic.
+    for (int d = 0; d < 3; ++d)
+    {
+      box.Size[d] = size->GetVariantValue(size->GetNumberOfValues() >= 3 ? d : 0).ToDouble();
+    }
+    if (!(box.Size[0] > 0.0) && !(box.Size[1] > 0.0) && !(box.Size[2] > 0.0))
+    {
+      return PeriodicBox();
+    }
+  }
+  for (double L : box.Size)
+  {
+    if (!(L > 0.0) || !std::isfinite(L))
+    {
+      problem = "The periodic box size (BoxSize) must be positive and finite on every axis, not " +
+        std::to_string(box.Size[0]) + " " + std::to_string(box.Size[1]) + " " +
+        std::to_string(box.Size[2]) + ". Set BoxSize, or turn Periodic off.";
+      return PeriodicBox();
+    }
+  }
+  box.Enabled = true;
+  return box;
+}
+
+vtkSmartPointer<vtkPolyData> WithPeriodicImages(
+  vtkPointSet* input, const PeriodicBox& box, double margin, std::vector<vtkIdType>& imageOf)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  imageOf.clear();
+  std::vector<double> shifted;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    input->GetPoint(i, x);
+    // Every shift of -1, 0, +1 box per axis (not all 0) that lands within the margin.
+    for (int s = 0; s < 27; ++s)
+    {
+      const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
+      if (shift[0] == 0 && shift[1] == 0 && shift[2] == 0)
+      {
+        continue;
+      }
+      double y[3];
+      bool near = true;
+      for (int d = 0; d < 3 && near; ++d)
+      {
+        y[d] = x[d] + shift[d] * box.Size[d];
+        const double w = margin * box.Size[d];
+        near = y[d] >= -w && y[d] < box.Size[d] + w;
+      }
+      if (near)
+      {
+        imageOf.push_back(i);
+        shifted.insert(shifted.end(), y, y + 3);
+      }
+    }
+  }
+  const vtkIdType images = static_cast<vtkIdType>(imageOf.size());
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(n + images);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, input->GetPoint(i));
+  }
+  for (vtkIdType k = 0; k < images; ++k)
+  {
+    points->SetPoint(n + k, &shifted[3 * k]);
+  }
+  out->SetPoints(points);
+  // Point data: the originals' tuples, then each image's original's.
+  vtkNew<vtkIdList> ids;
+  ids->SetNumberOfIds(n + images);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids->SetId(i, i);
+  }
+  for (vtkIdType k = 0; k < images; ++k)
+  {
+    ids->SetId(n + k, imageOf[k]);
+  }
+  vtkPointData* target = out->GetPointData();
+  vtkPointData* source = input->GetPointData();
+  for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = source->GetArray(a);
+    if (!array || array->GetNumberOfTuples() != n)
+    {
+      continue; // malformed arrays are left out (the filter reports them on the original input)
+    }
+    vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(n + images);
+    array->GetTuples(ids, copy);
+    target->AddArray(copy);
+    if (source->GetScalars() == array)
+    {
+      target->SetActiveScalars(array->GetName());
+    }
+  }
+  out->GetFieldData()->PassData(input->GetFieldData());
+  return out;
+}
+
+std::vector<vtkIdType> OriginalIds(
+  const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf)
+{
+  std::vector<vtkIdType> original(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    const vtkIdType id = geometry.Order[i];
+    original[i] = id < originalCount ? id : imageOf[id - originalCount];
+  }
+  return original;
+}
+
+std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox& box,
+  double margin, vtkIdType originalCount, const std::vector<double>& supports, double& needed)
+{
+  std::size_t count = 0;
+  needed = margin;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (geometry.Order[i] >= originalCount)
+    {
+      continue;
+    }
+    const double reach = std::max(geometry.Radius[i], supports.empty() ? 0.0 : supports[i]);
+    bool cut = false;
+    for (int d = 0; d < 3; ++d)
+    {
+      const double x = geometry.Position(i)[d];
+      // The images end margin * L beyond each face; the neighbourhood must end before.
+      const double room = std::min(x, box.Size[d] - x) + margin * box.Size[d];
+      if (reach > room)
+      {
+        cut = true;
+        needed = std::max(needed, (reach - std::min(x, box.Size[d] - x)) / box.Size[d]);
+      }
+    }
+    count += cut ? 1 : 0;
+  }
+  return count;
+}
+
+bool InKeptCell(const double* x, const PeriodicBox& box, const double* center)
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    const double low = center ? center[d] - 0.5 * box.Size[d] : 0.0;
+    if (!(x[d] >= low && x[d] < low + box.Size[d]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void IntoCellAround(std::vector<double>& points, const PeriodicBox& box, const double* center)
+{
+  for (std::size_t i = 0; i < points.size(); i += 3)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      const double low = center[d] - 0.5 * box.Size[d];
+      points[i + d] -= box.Size[d] * std::floor((points[i + d] - low) / box.Size[d]);
+    }
+  }
+}
+
+} // namespace lsi

@@ -1,0 +1,63 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Periodic boxes (cosmological and turbulence runs): the particles near each face are copied,
+// shifted by the box size, to the other side (ghost images, as an MPI rank's ghost particles
+// would be), so that neighbourhoods, the flood and the SPH field wrap across the faces. The
+// method's steps then run on originals plus images, the flood is made consistent between a
+// particle and its images, and only the surface inside one periodic cell is kept: the box
+// itself, or the box centred on the seed (a component that crosses a face in one piece).
+#ifndef LevelSetPeriodicImages_h
+#define LevelSetPeriodicImages_h
+
+#include "LevelSetNeighborhoods.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkPointSet;
+class vtkPolyData;
+
+namespace lsi
+{
+
+struct PeriodicBox
+{
+  bool Enabled = false;
+  double Size[3] = { 0.0, 0.0, 0.0 }; // the box is [0, Size) on each axis (GADGET, SWIFT)
+};
+
+/// The box: `requested` (the BoxSize property) where positive, else the "BoxSize" field data the
+/// HDF5 reader passes from the snapshot's Header (one value or three). Disabled when `periodic`
+/// is off or no box is known. `problem` is set for a box that is not positive and finite.
+PeriodicBox FindPeriodicBox(
+  vtkPointSet* input, const double requested[3], bool periodic, std::string& problem);
+
+/// The input points and point data, then the images of every point within `margin` (a fraction
+/// of the box on each axis) of a face, shifted across it (faces, edges and corners); imageOf[k]
+/// is the input id of point N + k. Field data are passed on.
+vtkSmartPointer<vtkPolyData> WithPeriodicImages(
+  vtkPointSet* input, const PeriodicBox& box, double margin, std::vector<vtkIdType>& imageOf);
+
+/// The samples (storage order) that are one particle: each sample's original input id.
+std::vector<vtkIdType> OriginalIds(
+  const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf);
+
+/// How many original samples have a neighbourhood (or an SPH support, `supports` per sample in
+/// storage order, may be empty) that reaches past the images: their neighbourhoods are cut, so
+/// the margin is too small for the sampling near the faces. `needed` receives the margin (as a
+/// fraction of the box) that would hold them all.
+std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox& box,
+  double margin, vtkIdType originalCount, const std::vector<double>& supports, double& needed);
+
+/// Whether x lies in the periodic cell [0, Size) on each axis, or, with a `center`,
+/// [center - Size / 2, center + Size / 2).
+bool InKeptCell(const double* x, const PeriodicBox& box, const double* center);
+
+/// Moves each point (3 doubles) by whole boxes into [center - Size / 2, center + Size / 2).
+void IntoCellAround(std::vector<double>& points, const PeriodicBox& box, const double* center);
+
+} // namespace lsi
+
+#endif
