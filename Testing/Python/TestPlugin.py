@@ -62,17 +62,23 @@ xml_defaults = dict(Epsilon=0.0, CurvatureEpsilon=0.0, TimeStep=0.0, CurvatureWe
                     NeighborCacheSize=4, NumberOfThreads=0, SplatSides=8, Completion=1,
                     DataRefinement=1, InterpolateArrays=1, Field=0, Kernel=0,
                     SupportPerSmoothingLength=0.0, SmoothingLengthArray="", MassArray="",
-                    DensityArray="")
+                    DensityArray="", Periodic=1, PeriodicMargin=0.1, PeriodicOutput=0)
 for name, value in xml_defaults.items():
     keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
                                    **{name: value})
     if element(keyworded, name) != value:
         failures.append("%s=%s as a keyword became %s" % (name, value, element(keyworded, name)))
 print("%d properties kept their keyword values" % len(xml_defaults))
+for box in ([0.0, 0.0, 0.0], [2.0, 3.0, 4.0]):
+    keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                                   BoxSize=box)
+    if list(keyworded.BoxSize) != box:
+        failures.append("BoxSize=%s as a keyword became %s" % (box, list(keyworded.BoxSize)))
 # And values other than the defaults.
 for name, value in dict(Field=2, Kernel=3, SupportPerSmoothingLength=2.195775,
                         SmoothingLengthArray="hsmooth", MassArray="mass",
-                        DensityArray="rho").items():
+                        DensityArray="rho", Periodic=0, PeriodicMargin=0.2,
+                        PeriodicOutput=1).items():
     keyworded = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
                                    **{name: value})
     if element(keyworded, name) != value:
