@@ -75,10 +75,24 @@ def kernel_dw(name, q):
 
 
 class SPHTruth:
-    """The SPH density field of the particles, evaluated exactly (scatter form)."""
+    """The SPH field sum_j c_j W(|x - x_j|, H_j) of the particles, evaluated exactly (scatter
+    form): c_j = m_j for the density, (m_j / rho_j) A_j for an array A. With a periodic `box`
+    (sizes per axis), the particles within the largest support of a face are copied across it."""
 
-    def __init__(self, x, m, H, kernel):
-        self.x, self.m, self.H, self.kernel = x, m, H, kernel
+    def __init__(self, x, c, H, kernel, box=None):
+        if box is not None:
+            reach = H.max()
+            xs, cs, Hs = [x], [c], [H]
+            for shift in np.array(np.meshgrid([-1, 0, 1], [-1, 0, 1], [-1, 0, 1])).T.reshape(-1, 3):
+                if not shift.any():
+                    continue
+                y = x + shift * box
+                keep = np.all((y >= -reach) & (y < box + reach), axis=1)
+                xs.append(y[keep])
+                cs.append(c[keep])
+                Hs.append(H[keep])
+            x, c, H = np.concatenate(xs), np.concatenate(cs), np.concatenate(Hs)
+        self.x, self.m, self.H, self.kernel = x, c, H, kernel
         self.tree = cKDTree(x)
         self.Hmax = H.max()
 
@@ -179,8 +193,8 @@ def used_points(poly):
 
 
 class Scorer:
-    def __init__(self, truth, iso, h_file, x, seed, bounds_pad):
-        self.truth, self.iso, self.x = truth, iso, x
+    def __init__(self, truth, iso, h_file, x, seed, bounds_pad, box=None):
+        self.truth, self.iso, self.x, self.box = truth, iso, x, box
         self.h_tree = cKDTree(x)
         self.h_file = h_file
         # The truth: SPH field on a fine grid around the particles above a third of the
@@ -189,10 +203,13 @@ class Scorer:
         near = rho_at_particles > iso / 3.0
         if not near.any():
             near[:] = True
-        at_iso = np.abs(np.log(np.maximum(rho_at_particles, 1e-300) / iso)) < np.log(2.0)
-        self.H_iso = np.median(truth.H[at_iso]) if at_iso.any() else np.median(truth.H)
-        lo = x[near].min(axis=0) - truth.H[near].max() - bounds_pad
-        hi = x[near].max(axis=0) + truth.H[near].max() + bounds_pad
+        at_iso = np.abs(rho_at_particles - iso) < 0.5 * abs(iso)
+        H_own = truth.H[:len(x)]
+        self.H_iso = np.median(H_own[at_iso]) if at_iso.any() else np.median(H_own)
+        lo = x[near].min(axis=0) - truth.H[:len(x)][near].max() - bounds_pad
+        hi = x[near].max(axis=0) + truth.H[:len(x)][near].max() + bounds_pad
+        if box is not None:  # one periodic cell: the box
+            lo, hi = np.zeros(3), np.asarray(box, dtype=float)
         step = self.H_iso / 10.0
         dims = np.minimum(np.ceil((hi - lo) / step).astype(int) + 1, 320)
         step = max(((hi - lo) / (dims - 1)).max(), step)
@@ -236,6 +253,8 @@ class Scorer:
     def score(self, points, normals, signed, cover_poly=None):
         if len(points) == 0:
             return dict(points=0)
+        if self.box is not None:  # the truth covers one periodic cell: wrap into it
+            points = np.mod(points, self.box)
         d = self.distance_to(self.whole_locator, points) / self.local_h(points)
         _, g = self.truth.evaluate(points)
         exact = -g / np.maximum(np.linalg.norm(g, axis=1), 1e-300)[:, None]
@@ -297,6 +316,13 @@ def main():
             lambda: tipsy_with_density(os.path.join(data, "shocktube.std"), ["Gas"]),
             "ChaNGa shock tube, 20,000 particles, density by SPH summation (its rho and hsmooth "
             "columns are placeholders)"),
+        "swift-robertsflow-vz": (
+            lambda: Calculator(Input=hdf5(os.path.join(data, "swift_robertsflow_g32.hdf5"),
+                                          ["Gas (PartType0)"]),
+                               ResultArrayName="VelocityZ", Function="Velocities_Z"),
+            "SWIFT Roberts flow, 32,768 particles in a periodic box of 2 pi, quintic spline, "
+            "H = 2.195775 h: the isosurface vz = 0.7 of the SPH interpolant of the velocity, "
+            "tubes through the periodic faces"),
         "evrard-summed": (
             lambda: tipsy_with_density(os.path.join(data, "adiabtophat_glass_28721.bin"),
                                        ["Gas"]),
@@ -337,7 +363,19 @@ def main():
         rho = vtk_to_numpy(pd.GetArray(rho_name)).astype(float)
         kernel = marker("SPHKernel", "CubicSpline")
         factor = float(marker("SupportPerSmoothingLength", 1.0))
-        truth = SPHTruth(x, m, factor * h, kernel)
+        box_array = fd.GetArray("BoxSize")
+        box = None
+        if box_array is not None and box_array.GetNumberOfValues() > 0:
+            values = [box_array.GetValue(k) for k in range(box_array.GetNumberOfValues())]
+            box = np.array(values * 3 if len(values) == 1 else values[:3], dtype=float)
+            box = box if (box > 0).all() else None
+        scalar = rho_name
+        if name == "swift-robertsflow-vz":
+            scalar = "VelocityZ"
+            a = vtk_to_numpy(pd.GetArray(scalar)).astype(float)
+            truth = SPHTruth(x, m / rho * a, factor * h, kernel, box)
+        else:
+            truth = SPHTruth(x, m, factor * h, kernel, box)
         summed, _ = truth.evaluate(x)
         # The isovalue: the density at the particle ranked at the 30th percentile from the top
         # of the summed field (a surface inside the sampled region), the seed: densest particle.
@@ -346,6 +384,8 @@ def main():
         iso = float(np.quantile(summed, 0.7))
         if name == "changa-shocktube":
             iso = 0.5 * float(np.median(summed))
+        if name == "swift-robertsflow-vz":
+            iso = 0.7  # vz spans +-1.43: tubes around the flow's cells
         seed = x[np.argmax(summed)]
         if name == "evrard-summed":
             iso = 1.0 / (2 * PI * 0.5)  # analytic surface r = 0.5
@@ -353,7 +393,7 @@ def main():
         print("  isovalue %.6g, seed (%.4g, %.4g, %.4g), kernel %s, H = %g h" % (
             iso, seed[0], seed[1], seed[2], kernel, factor), flush=True)
         t = time.time()
-        scorer = Scorer(truth, iso, h, x, seed, 0.0)
+        scorer = Scorer(truth, iso, h, x, seed, 0.0, box)
         print("  truth: grid step %.3g (median support at the isovalue %.3g), %d vertices in "
               "the seeded component, %.1f s" % (scorer.grid_step, scorer.H_iso,
                                                 len(scorer.region_points), time.time() - t),
@@ -362,7 +402,7 @@ def main():
         seed_radius = float(factor * h[np.argmax(summed)])
         for output_type, label in ((1, "filter, default (splats)"), (0, "filter, Isopoints")):
             t = time.time()
-            f = LevelSetIsosurface(Input=source, Scalars=["POINTS", rho_name], IsoValue=iso,
+            f = LevelSetIsosurface(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
                                    SeedCenter=list(seed), SeedRadius=seed_radius,
                                    OutputType=output_type)
             out = fetch(f)
@@ -382,19 +422,21 @@ def main():
         # ParaView's grid route.
         t = time.time()
         rows["ParaView SPH grid route"] = grid_route(particles, kernel, scorer, iso, seed,
-                                                     rho_name, marker("MassArray"))
+                                                     rho_name, marker("MassArray"), scalar)
         rows["ParaView SPH grid route"]["seconds"] = time.time() - t
         # yt.
         t = time.time()
         try:
-            rows["yt"] = yt_route(x, m, factor * h, rho, kernel, scorer, iso, seed)
+            a = vtk_to_numpy(pd.GetArray(scalar)).astype(float)
+            rows["yt"] = yt_route(x, m, factor * h, rho, a, kernel, scorer, iso, seed, box)
         except Exception as error:  # yt's API moves between versions: report, go on
             print("  yt failed: %r" % (error,))
             rows["yt"] = dict(points=None, note="yt failed: %r" % (error,))
         if rows["yt"].get("points") is not None:
             rows["yt"]["seconds"] = time.time() - t
         print_table(rows)
-        results[name] = dict(description=description, isovalue=iso, kernel=kernel,
+        results[name] = dict(description=description, isovalue=iso, kernel=kernel, scalar=scalar,
+                             periodic_box=None if box is None else box.tolist(),
                              support_per_h=factor, truth_grid_step=scorer.grid_step,
                              median_support_at_iso=scorer.H_iso, rows=rows)
         Delete(source)
@@ -403,7 +445,7 @@ def main():
             json.dump(results, out, indent=1)
 
 
-def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name):
+def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name, scalar):
     # VTK's kernels: support = CutoffFactor x SpatialStep (cubic 2, quintic 3), one global step.
     if kernel == "QuinticSpline":
         k, cutoff = vtkSPHQuinticKernel(), 3.0
@@ -427,7 +469,7 @@ def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name):
     interp.SetMassArrayName(mass_name)
     interp.Update()
     grid = interp.GetOutput()
-    whole, region = contour(grid, iso, seed, rho_name)
+    whole, region = contour(grid, iso, seed, scalar)
     if region.GetNumberOfCells() == 0:
         return dict(points=0)
     p = points_of(region)[used_points(region)]
@@ -435,28 +477,32 @@ def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name):
     return scorer.score(p, n.astype(float), False, region)
 
 
-def yt_route(x, m, H, rho, kernel, scorer, iso, seed):
+def yt_route(x, m, H, rho, a, kernel, scorer, iso, seed, box):
     try:
         import yt
     except ImportError:
         print("  yt: not installed (apt-get install python3-yt)")
         return dict(points=None, note="yt not installed")
     yt.set_log_level(50)
-    # Particle type "io" with a density: yt interpolates ("io", "density") as
-    # sum_j (m_j / rho_j) rho_j W = sum_j m_j W, unnormalised.
+    # Particle type "io" with a density: yt interpolates ("io", "scalar") as
+    # sum_j (m_j / rho_j) A_j W, unnormalised (for A = rho: sum_j m_j W).
     data = {("io", "particle_position_x"): x[:, 0], ("io", "particle_position_y"): x[:, 1],
             ("io", "particle_position_z"): x[:, 2], ("io", "particle_mass"): m,
-            ("io", "smoothing_length"): H, ("io", "density"): rho}
-    bbox = np.array([x.min(axis=0) - H.max(), x.max(axis=0) + H.max()]).T
+            ("io", "smoothing_length"): H, ("io", "density"): rho, ("io", "scalar"): a}
+    if box is not None:  # periodic: yt wraps its domain
+        bbox = np.array([np.zeros(3), box]).T
+    else:
+        bbox = np.array([x.min(axis=0) - H.max(), x.max(axis=0) + H.max()]).T
     lo, hi = scorer.lo, scorer.hi
-    ds = yt.load_particles(data, length_unit=1.0, mass_unit=1.0, bbox=bbox)
+    ds = yt.load_particles(data, length_unit=1.0, mass_unit=1.0, bbox=bbox,
+                           periodicity=(box is not None,) * 3)
     ds.use_sph_normalization = False
     names = {"CubicSpline": "cubic", "QuinticSpline": "quintic", "WendlandC2": "wendland2"}
     ds.kernel_name = names.get(kernel, "cubic")
     step = scorer.H_iso / 4.0
     dims = np.minimum(np.ceil((hi - lo) / step).astype(int) + 1, 320)
     grid = ds.arbitrary_grid(lo, hi, dims)
-    field = np.asarray(grid[("io", "density")]).astype(float)  # x, y, z
+    field = np.asarray(grid[("io", "scalar")]).astype(float)  # x, y, z
     spacing = (hi - lo) / dims
     # arbitrary_grid values are cell centred.
     image = image_of(np.ascontiguousarray(field.transpose(2, 1, 0)), lo + 0.5 * spacing,
