@@ -69,7 +69,7 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
   const std::size_t count = out.Points.size() / 3;
   std::vector<char> onLevel(count, 0);
   auto slide = [&](std::size_t begin, std::size_t end) {
-    std::vector<std::uint32_t> candidates;
+    SPHCandidates candidates;
     for (std::size_t i = begin; i < end; ++i)
     {
       Eigen::Vector3d p(&out.Points[3 * i]);

@@ -43,7 +43,7 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
   std::vector<double> points(3 * n), normals(3 * n);
   std::vector<char> found(n, 0);
   auto shoot = [&](std::size_t begin, std::size_t end) {
-    std::vector<std::uint32_t> candidates;
+    SPHCandidates candidates;
     for (std::size_t i = begin; i < end; ++i)
     {
       Eigen::Vector3d outward;

@@ -246,32 +246,78 @@ void SPHField::Evaluate(const double* x, double& value, double* gradient) const
   });
 }
 
-void SPHField::Gather(const double* x, double extra, std::vector<std::uint32_t>& candidates) const
+void SPHField::Gather(const double* x, double extra, SPHCandidates& candidates) const
 {
-  candidates.clear();
+  candidates.Clear();
   this->ForEachSupportHolding(
     x,
     [&](std::uint32_t j) {
       const double* xj = this->Geometry.Position(j);
-      const double r = std::sqrt((x[0] - xj[0]) * (x[0] - xj[0]) + (x[1] - xj[1]) * (x[1] - xj[1]) +
-        (x[2] - xj[2]) * (x[2] - xj[2]));
-      if (r < this->H[j] + extra)
+      const double reach = this->H[j] + extra;
+      const double r2 = (x[0] - xj[0]) * (x[0] - xj[0]) + (x[1] - xj[1]) * (x[1] - xj[1]) +
+        (x[2] - xj[2]) * (x[2] - xj[2]);
+      if (r2 < reach * reach)
       {
-        candidates.push_back(j);
+        candidates.X.push_back(xj[0]);
+        candidates.Y.push_back(xj[1]);
+        candidates.Z.push_back(xj[2]);
+        candidates.H.push_back(this->H[j]);
+        candidates.Coefficient.push_back(this->Coefficient[j]);
       }
     },
     extra);
 }
 
-void SPHField::EvaluateAmong(const std::vector<std::uint32_t>& candidates, const double* x,
-  double& value, double* gradient) const
+namespace
 {
-  value = 0.0;
-  gradient[0] = gradient[1] = gradient[2] = 0.0;
-  for (std::uint32_t j : candidates)
+template <SPHKernel K>
+void SumKernels(const SPHCandidates& c, const double* x, double& value, double* gradient)
+{
+  double v = 0.0, g0 = 0.0, g1 = 0.0, g2 = 0.0;
+  const std::size_t count = c.X.size();
+  for (std::size_t j = 0; j < count; ++j)
   {
-    AccumulateKernel(this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j],
-      value, gradient);
+    const double d0 = x[0] - c.X[j], d1 = x[1] - c.Y[j], d2 = x[2] - c.Z[j];
+    const double r2 = d0 * d0 + d1 * d1 + d2 * d2;
+    const double H = c.H[j];
+    if (!(r2 < H * H))
+    {
+      continue;
+    }
+    const double r = std::sqrt(r2), inverse = 1.0 / H;
+    double w, dw;
+    KernelShape<K>(r * inverse, w, dw);
+    const double scale = c.Coefficient[j] * inverse * inverse * inverse;
+    v += scale * w;
+    if (r > 0.0)
+    {
+      const double slope = scale * inverse * dw / r;
+      g0 += slope * d0;
+      g1 += slope * d1;
+      g2 += slope * d2;
+    }
+  }
+  const double norm = Normalization<K>();
+  value = norm * v;
+  gradient[0] = norm * g0;
+  gradient[1] = norm * g1;
+  gradient[2] = norm * g2;
+}
+} // namespace
+
+void SPHField::EvaluateAmong(
+  const SPHCandidates& candidates, const double* x, double& value, double* gradient) const
+{
+  switch (this->Kernel)
+  {
+    case SPHKernel::QuinticSpline:
+      SumKernels<SPHKernel::QuinticSpline>(candidates, x, value, gradient);
+      break;
+    case SPHKernel::WendlandC2:
+      SumKernels<SPHKernel::WendlandC2>(candidates, x, value, gradient);
+      break;
+    default:
+      SumKernels<SPHKernel::CubicSpline>(candidates, x, value, gradient);
   }
 }
 

@@ -52,6 +52,20 @@ struct SPHFieldArrays
 bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequest& request,
   SPHFieldArrays& arrays, std::string& problem, std::string& choice);
 
+/// The particles that can contribute near one place, copied together for fast loops.
+struct SPHCandidates
+{
+  std::vector<double> X, Y, Z, H, Coefficient;
+  void Clear()
+  {
+    X.clear();
+    Y.clear();
+    Z.clear();
+    H.clear();
+    Coefficient.clear();
+  }
+};
+
 /// The SPH field over the samples, stored in their storage order (Neighborhoods::Order).
 class SPHField
 {
@@ -69,11 +83,11 @@ public:
   /// The samples whose support reaches within `extra` of x: every sample that contributes
   /// anywhere in the ball of radius `extra` around x. Many evaluations near one place (a
   /// point's refinement, a splat's corners) then skip the tree walk (EvaluateAmong).
-  void Gather(const double* x, double extra, std::vector<std::uint32_t>& candidates) const;
+  void Gather(const double* x, double extra, SPHCandidates& candidates) const;
 
   /// The field and its gradient at x from `candidates` (Gather's, for a ball that holds x).
-  void EvaluateAmong(const std::vector<std::uint32_t>& candidates, const double* x, double& value,
-    double* gradient) const;
+  void EvaluateAmong(
+    const SPHCandidates& candidates, const double* x, double& value, double* gradient) const;
 
   /// Calls visit(sample, weight) for every sample j whose support holds x, with weight
   /// (m_j / rho_j) W(|x - x_j|, H_j): the interpolation weights of any array.

@@ -40,7 +40,7 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   const bool completed = ParallelForInBlocks(
     static_cast<std::size_t>(count),
     [&](std::size_t begin, std::size_t end) {
-      std::vector<std::uint32_t> candidates;
+      SPHCandidates candidates;
       for (std::size_t i = begin; i < end; ++i)
       {
         double c[3], n[3];
@@ -56,19 +56,29 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         for (int k = 0; field && k < sides; ++k)
         {
           double* corner = &xyz[3 * (i * sides + k)];
-          Eigen::Vector3d p(corner), gradient;
           auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
             field->EvaluateAmong(candidates, x.data(), value, g.data());
             value -= isoValue;
             return std::isfinite(value);
           };
-          Eigen::Vector3d cornerNormal = normal;
-          if (SolveOnLine(p, normal, evaluate, radius, 1e-6 * radius, gradient) &&
-            gradient.squaredNorm() > 0.0)
+          // Where the surface curves away faster than the splat is wide (a rim), the line
+          // through the flat corner misses the level: pull the corner halfway in and try again,
+          // and else put it on the centre, so that no corner stands off the surface.
+          const Eigen::Vector3d centre(c), flat(corner);
+          Eigen::Vector3d cornerNormal = normal, gradient;
+          Eigen::Vector3d placed = centre;
+          for (double fraction : { 1.0, 0.5 })
           {
-            cornerNormal = -gradient.normalized();
-            std::copy(p.data(), p.data() + 3, corner);
+            Eigen::Vector3d p = centre + fraction * (flat - centre);
+            if (SolveOnLine(p, normal, evaluate, fraction * radius, 1e-6 * radius, gradient) &&
+              gradient.squaredNorm() > 0.0)
+            {
+              cornerNormal = -gradient.normalized();
+              placed = p;
+              break;
+            }
           }
+          std::copy(placed.data(), placed.data() + 3, corner);
           for (int d = 0; d < 3; ++d)
           {
             cornerNormals[3 * (i * sides + k) + d] = static_cast<float>(cornerNormal[d]);

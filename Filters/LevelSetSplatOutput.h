@@ -17,9 +17,10 @@ class SPHField;
 /// Fills `splats` with `sides` corners per point of `isopoints` and one polygon per point; every
 /// point array of `isopoints` (normals, radius, interpolated data) is copied to the corners of
 /// its polygon. With an SPH field (`field` not null), each corner then slides along its splat's
-/// normal onto the field's level `isoValue` (at most the splat's radius) and takes the field's
-/// normal there: the polygons bend with the surface, so the corners lie on it and their normals
-/// are the field's, instead of tangent-plane approximations. Returns false only when aborted.
+/// normal onto the field's level `isoValue` (at most the splat's radius; where that fails, from
+/// halfway in; else the corner moves to the centre) and takes the field's normal there: the
+/// polygons bend with the surface, so the corners lie on it and their normals are the field's,
+/// instead of tangent-plane approximations. Returns false only when aborted.
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
   vtkPolyData* splats, const AbortCheck& aborted);
 

@@ -581,8 +581,14 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   // refinement on the data 24%.
   const lsi::AbortCheck stage = this->Stage(IsopointStage);
   const auto start = Clock::now();
-  const lsi::IsopointSettings settings =
-    lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
+  lsi::IsopointSettings settings = lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
+  if (field)
+  {
+    // The SPH field is exact between the particles: sample the surface twice as densely, so
+    // that the splats (whose corners are solved onto the level) are small against its curvature
+    // where the particles are sparse.
+    settings.CellSize *= 0.5;
+  }
   const std::vector<double> phi = lsi::WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
   if (!lsi::ExtractIsopoints(geometry, phi, settings, isopoints, lsi::SubRange(stage, 0.0, 0.28)))
   {

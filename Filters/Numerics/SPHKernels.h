@@ -116,6 +116,62 @@ inline SPHKernel SPHKernelFromName(const std::string& name, SPHKernel fallback)
   return fallback;
 }
 
+/// The kernel's shape on q = r / H in [0, 1): W = Normalization<K>() / H^3 * w(q) and
+/// dW/dr = Normalization<K>() / H^4 * dw/dq. The same numbers as SPHKernelValue and
+/// SPHKernelDerivative, written for loops over many particles: the kernel is chosen once,
+/// outside the loop.
+template <SPHKernel K>
+constexpr double Normalization()
+{
+  return K == SPHKernel::CubicSpline ? 8.0 / 3.14159265358979323846
+    : K == SPHKernel::QuinticSpline  ? 2187.0 / (40.0 * 3.14159265358979323846)
+                                     : 21.0 / (2.0 * 3.14159265358979323846);
+}
+
+template <SPHKernel K>
+inline void KernelShape(double q, double& w, double& dw)
+{
+  if (K == SPHKernel::CubicSpline)
+  {
+    if (q <= 0.5)
+    {
+      w = 1.0 - 6.0 * q * q + 6.0 * q * q * q;
+      dw = -12.0 * q + 18.0 * q * q;
+    }
+    else
+    {
+      const double a = 1.0 - q;
+      w = 2.0 * a * a * a;
+      dw = -6.0 * a * a;
+    }
+  }
+  else if (K == SPHKernel::QuinticSpline)
+  {
+    const double a = 1.0 - q, b = 2.0 / 3.0 - q, c = 1.0 / 3.0 - q;
+    const double a4 = Power<4>(a);
+    w = a4 * a;
+    dw = -5.0 * a4;
+    if (b > 0.0)
+    {
+      const double b4 = Power<4>(b);
+      w -= 6.0 * b4 * b;
+      dw += 30.0 * b4;
+      if (c > 0.0)
+      {
+        const double c4 = Power<4>(c);
+        w += 15.0 * c4 * c;
+        dw -= 75.0 * c4;
+      }
+    }
+  }
+  else
+  {
+    const double a = 1.0 - q, a3 = a * a * a;
+    w = a3 * a * (1.0 + 4.0 * q);
+    dw = -20.0 * q * a3;
+  }
+}
+
 /// Adds c W(|x - xj|, H) to `value` and its gradient in x to `gradient` (3 doubles).
 inline void AccumulateKernel(SPHKernel kernel, const double* x, const double* xj, double H,
   double c, double& value, double* gradient)

@@ -577,6 +577,33 @@ void TestSPHKernelGradients()
       worst = std::max(worst, std::abs((vp - vm) / 2e-6 - gradient[k]) / (2.5 * 10.0));
     }
   }
+  // The loop form (KernelShape) gives the same numbers as the reference form.
+  double shapeWorst = 0.0;
+  for (double q = 0.0; q < 1.0; q += 0.01)
+  {
+    double w, dw;
+    const double H = 0.7, r = q * H;
+    lsi::KernelShape<lsi::SPHKernel::CubicSpline>(q, w, dw);
+    const double c = lsi::Normalization<lsi::SPHKernel::CubicSpline>();
+    shapeWorst = std::max(shapeWorst,
+      std::abs(c * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::CubicSpline, r, H)) +
+        std::abs(
+          c * dw / (H * H * H * H) - lsi::SPHKernelDerivative(lsi::SPHKernel::CubicSpline, r, H)));
+    lsi::KernelShape<lsi::SPHKernel::QuinticSpline>(q, w, dw);
+    const double cq = lsi::Normalization<lsi::SPHKernel::QuinticSpline>();
+    shapeWorst = std::max(shapeWorst,
+      std::abs(cq * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::QuinticSpline, r, H)) +
+        std::abs(cq * dw / (H * H * H * H) -
+          lsi::SPHKernelDerivative(lsi::SPHKernel::QuinticSpline, r, H)));
+    lsi::KernelShape<lsi::SPHKernel::WendlandC2>(q, w, dw);
+    const double cw = lsi::Normalization<lsi::SPHKernel::WendlandC2>();
+    shapeWorst = std::max(shapeWorst,
+      std::abs(cw * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::WendlandC2, r, H)) +
+        std::abs(
+          cw * dw / (H * H * H * H) - lsi::SPHKernelDerivative(lsi::SPHKernel::WendlandC2, r, H)));
+  }
+  std::cout << "SPH kernel loop form: worst difference " << shapeWorst << "\n";
+  Check(shapeWorst < 1e-12, "KernelShape equals SPHKernelValue and SPHKernelDerivative");
   std::cout << "SPH kernel derivatives: worst relative difference " << worst << "\n";
   Check(worst < 1e-6, "SPH kernel derivative matches differences of the kernel");
   Check(lsi::SPHKernelFromName("Quintic spline (M6)", lsi::SPHKernel::CubicSpline) ==

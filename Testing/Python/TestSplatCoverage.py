@@ -8,10 +8,16 @@ the pixel masks (the splats drawn front faces only, so that a hole shows): the s
 
   pvbatch TestSplatCoverage.py PLUGIN one-component PARTICLES.vtp EXACT_MESH.vtp OUT_DIR
   pvbatch TestSplatCoverage.py PLUGIN evrard TIPSY_FILE OUT_DIR
+  pvbatch TestSplatCoverage.py PLUGIN sph-galaxy TIPSY_FILE OUT_DIR
 
 one-component: the paper's case (isovalue 0, seed at (64, 64, 64) radius 12) against the mesh
 the data generator writes. evrard: the Evrard collapse glass (Data/ChaNGa), whose density is
-rho(r) = 1 / (2 pi r): the isosurface rho = 1 / pi is the sphere r = 0.5."""
+rho(r) = 1 / (2 pi r): the isosurface rho = 1 / pi is the sphere r = 0.5. sph-galaxy: a sparse,
+clustered real case on the SPH field: the ChaNGa galaxy's 5,321 stars with Particle Density's
+summed density and smoothing lengths, at the density exceeded by 30% of the stars, seeded at the
+densest; the exact surface is that SPH field's isosurface, computed independently in numpy
+(Scripts/sph_comparison.py: the field on a grid of a tenth of the support, Flying Edges, each
+vertex moved onto the exact level), the component at the seed."""
 import math
 import os
 import sys
@@ -37,6 +43,33 @@ elif case == "evrard":
     surface = LevelSetIsosurface(Input=density, Scalars=["POINTS", "density"],
                                  IsoValue=1.0 / math.pi, SeedCenter=[0, 0, 0], SeedRadius=0.2)
     exact = Sphere(Radius=0.5, ThetaResolution=512, PhiResolution=512)
+elif case == "sph-galaxy":
+    import numpy as np
+    from paraview import servermanager
+    from paraview.simple import TrivialProducer
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                    "Scripts"))
+    import sph_comparison as sph
+    tipsy_file, out_dir = sys.argv[3:5]
+    galaxy = TipsyParticleReader(FileNames=[tipsy_file])
+    galaxy.UpdatePipelineInformation()
+    galaxy.ParticleTypes = ["Stars"]
+    density = ParticleDensity(Input=galaxy, NumberOfNeighbors=64)
+    data = servermanager.Fetch(density)
+    x = sph.points_of(data)
+    H = vtk_to_numpy(data.GetPointData().GetArray("SmoothingLength")).astype(float)
+    m = vtk_to_numpy(data.GetPointData().GetArray("mass")).astype(float)
+    truth = sph.SPHTruth(x, m, H, "CubicSpline")
+    summed, _ = truth.evaluate(x)
+    iso = float(np.quantile(summed, 0.7))
+    seed = x[np.argmax(summed)]
+    scorer = sph.Scorer(truth, iso, H, x, seed, 0.0)
+    surface = LevelSetIsosurface(Input=density, Scalars=["POINTS", "Density"], IsoValue=iso,
+                                 SeedCenter=list(seed), SeedRadius=float(H[np.argmax(summed)]))
+    exact = TrivialProducer()
+    exact.GetClientSideObject().SetOutput(scorer.region)
+    print("sph-galaxy: isovalue %.6g, exact component %d triangles"
+          % (iso, scorer.region.GetNumberOfCells()))
 else:
     sys.exit("unknown case " + case)
 
