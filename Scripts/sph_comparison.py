@@ -15,11 +15,14 @@ The truth is computed here, independently of the filter's code, in numpy: the SP
 grid of step (median support at the isovalue) / 10, contoured by Flying Edges, each vertex then
 moved by two Newton steps on the exact field onto its level. Scores, in units of the local
 smoothing length h (the file's own h of the particle nearest the point):
-  distance  mean distance from the output's points to the true surface;
+  distance  mean distance from the output's points to the true surface (the exact field's
+            level, reached by Newton steps from each point; the truth mesh where they fail);
   normal    mean angle between the output's normals and the SPH field's exact gradient at the
             point (unsigned for the grid routes, whose orientation is a convention);
   cover     fraction of the true component's vertices within h/2 of the output (points for
-            isopoints, polygons for splats and meshes), and the largest such distance.
+            isopoints, polygons for splats and meshes), and the largest such distance;
+  edges     mean distance of the midpoints of the output polygons' edges (splats, or the grid
+            routes' triangles) to the level: the rendered surface between its vertices.
 Prints a table per case and writes JSON."""
 import json
 import os
@@ -250,12 +253,37 @@ class Scorer:
             out[i] = np.sqrt(float(dist2))
         return out
 
+    def level_distance(self, points):
+        """Distance to the exact level in local h: Newton steps on the exact field (the foot of
+        the gradient path, exact to second order); where they do not settle, the distance to
+        the truth mesh (whose chords sit up to about step^2 / (8 R) off the level)."""
+        if self.box is not None:  # the truth covers one periodic cell: wrap into it
+            points = np.mod(points, self.box)
+        h_local = self.local_h(points)
+        foot = points.copy()
+        for _ in range(4):
+            v, g = self.truth.evaluate(foot)
+            g2 = np.maximum((g**2).sum(axis=1), 1e-300)
+            foot = foot - ((v - self.iso) / g2)[:, None] * g
+        v, g = self.truth.evaluate(foot)
+        settled = np.abs(v - self.iso) / np.sqrt(np.maximum((g**2).sum(axis=1), 1e-300)) \
+            < 1e-4 * h_local
+        d = np.linalg.norm(points - foot, axis=1)
+        if not settled.all():
+            d[~settled] = self.distance_to(self.whole_locator, points[~settled])
+        return d / h_local
+
     def score(self, points, normals, signed, cover_poly=None):
         if len(points) == 0:
             return dict(points=0)
-        if self.box is not None:  # the truth covers one periodic cell: wrap into it
+        if self.box is not None:
             points = np.mod(points, self.box)
-        d = self.distance_to(self.whole_locator, points) / self.local_h(points)
+        d = self.level_distance(points)
+        # Between the points: the midpoints of the polygons' edges (splats) or triangles' edges
+        # (meshes), where the rendered surface is furthest from its vertices.
+        midpoints = edge_midpoints(cover_poly) if cover_poly is not None else None
+        between = self.level_distance(midpoints) if midpoints is not None and len(midpoints) \
+            else None
         _, g = self.truth.evaluate(points)
         exact = -g / np.maximum(np.linalg.norm(g, axis=1), 1e-300)[:, None]
         n = normals / np.maximum(np.linalg.norm(normals, axis=1), 1e-300)[:, None]
@@ -272,9 +300,30 @@ class Scorer:
         else:
             gap, _ = cKDTree(points).query(self.region_points)
         gap = gap / self.local_h(self.region_points)
-        return dict(points=int(len(points)), mean_distance_h=float(d.mean()),
-                    max_distance_h=float(d.max()), mean_normal_deg=float(angle.mean()),
-                    covered_fraction=float((gap <= 0.5).mean()), max_gap_h=float(gap.max()))
+        result = dict(points=int(len(points)), mean_distance_h=float(d.mean()),
+                      max_distance_h=float(d.max()), mean_normal_deg=float(angle.mean()),
+                      covered_fraction=float((gap <= 0.5).mean()), max_gap_h=float(gap.max()))
+        if between is not None:
+            result["mean_edge_midpoint_distance_h"] = float(between.mean())
+            result["max_edge_midpoint_distance_h"] = float(between.max())
+        return result
+
+
+def edge_midpoints(poly, limit=200000):
+    """The midpoints of the cells' edges (each cell's consecutive corners), at most `limit`."""
+    ids = vtkIdList()
+    x = points_of(poly)
+    pairs = []
+    step = max(1, poly.GetNumberOfCells() * 4 // limit)
+    for c in range(0, poly.GetNumberOfCells(), step):
+        poly.GetCellPoints(c, ids)
+        k = ids.GetNumberOfIds()
+        corner = [ids.GetId(i) for i in range(k)]
+        pairs.extend((corner[i], corner[(i + 1) % k]) for i in range(k))
+    if not pairs:
+        return None
+    pairs = np.array(pairs)
+    return 0.5 * (x[pairs[:, 0]] + x[pairs[:, 1]])
 
 
 def fetch(proxy, port=0):
@@ -517,15 +566,18 @@ def yt_route(x, m, H, rho, a, kernel, scorer, iso, seed, box):
 
 
 def print_table(rows):
-    print("  %-28s %9s %10s %10s %9s %8s %9s %7s" % (
-        "output", "points", "mean d/h", "max d/h", "normal", "cover", "max gap", "s"))
+    print("  %-28s %9s %10s %10s %9s %8s %9s %10s %7s" % (
+        "output", "points", "mean d/h", "max d/h", "normal", "cover", "max gap", "edges d/h",
+        "s"))
     for label, r in rows.items():
         if not r.get("points"):
             print("  %-28s %9s %s" % (label, r.get("points"), r.get("note", "no surface")))
             continue
-        print("  %-28s %9d %10.4f %10.3f %8.2f° %7.1f%% %8.3f %7.2f" % (
+        edges = r.get("mean_edge_midpoint_distance_h")
+        print("  %-28s %9d %10.2e %10.2e %8.2f° %7.1f%% %8.3f %10s %7.2f" % (
             label, r["points"], r["mean_distance_h"], r["max_distance_h"], r["mean_normal_deg"],
-            100 * r["covered_fraction"], r["max_gap_h"], r.get("seconds", 0.0)), flush=True)
+            100 * r["covered_fraction"], r["max_gap_h"],
+            "-" if edges is None else "%.2e" % edges, r.get("seconds", 0.0)), flush=True)
 
 
 if __name__ == "__main__":
