@@ -116,11 +116,11 @@ std::string NonFiniteParameter(const std::vector<std::pair<const char*, double>>
 std::string CheckNeighborhoods(const Neighborhoods& geometry)
 {
   std::ostringstream problem;
-  if (geometry.DuplicateSamples > 0)
+  if (geometry.DuplicateSamples > 0) // only after merging (LevelSetDuplicates): a bug
   {
-    problem << "The input has " << geometry.DuplicateSamples
-            << " points that coincide with another point (for example point "
-            << geometry.FirstDuplicate << "). Merge duplicate points first, e.g. with Clean.";
+    problem << "The input still has " << geometry.DuplicateSamples
+            << " points that coincide with another point after merging them (for example point "
+            << geometry.FirstDuplicate << ").";
   }
   else if (geometry.Flat)
   {

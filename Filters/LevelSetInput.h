@@ -28,7 +28,8 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
 /// `named` lists each parameter's name and value.
 std::string NonFiniteParameter(const std::vector<std::pair<const char*, double>>& named);
 
-/// Problems only the neighbour search reveals: duplicate points, all points on a plane or line.
+/// Problems only the neighbour search reveals: all points on a plane or line; duplicate points
+/// (which the filter merges before, LevelSetDuplicates.h).
 std::string CheckNeighborhoods(const Neighborhoods& geometry);
 
 /// The seed spheres (4 numbers each, the main one first) that contain no sample.

@@ -10,26 +10,35 @@
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+
 namespace lsi
 {
 
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
-  const std::vector<double>& phi, vtkPolyData* particles)
+  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   particles->SetPoints(input->GetPoints());
   particles->SetVerts(VertexCells(n));
   particles->GetPointData()->PassData(input->GetPointData());
+  // The value at each id the method ran on (images, past the distinct points, left out).
+  const vtkIdType distinct =
+    mergedId.empty() ? n : 1 + *std::max_element(mergedId.begin(), mergedId.end());
+  std::vector<double> value(static_cast<std::size_t>(distinct), 0.0);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
+    {
+      value[geometry.Order[i]] = phi[i];
+    }
+  }
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    // Back from storage order to input order; ghost images (ids past the input's) are left out.
-    if (static_cast<vtkIdType>(geometry.Order[i]) < n)
-    {
-      levelSet->SetValue(geometry.Order[i], phi[i]);
-    }
+    levelSet->SetValue(i, value[mergedId.empty() ? i : mergedId[i]]);
   }
   particles->GetPointData()->AddArray(levelSet);
 }

@@ -7,6 +7,8 @@
 
 #include "LevelSetNeighborhoods.h"
 
+#include "vtkType.h"
+
 #include <vector>
 
 class vtkPointSet;
@@ -15,9 +17,11 @@ class vtkPolyData;
 namespace lsi
 {
 
-/// `phi` is in the samples' storage order (geometry.Order maps it back to input ids).
+/// `phi` is in the samples' storage order (geometry.Order maps it back to the ids the method
+/// ran on). `mergedId` maps each input point to the sample it was merged into (duplicates), or
+/// is empty; ghost images (ids past the input's) are left out.
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
-  const std::vector<double>& phi, vtkPolyData* particles);
+  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles);
 
 } // namespace lsi
 

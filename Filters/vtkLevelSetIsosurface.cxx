@@ -3,6 +3,7 @@
 #include "vtkLevelSetIsosurface.h"
 
 #include "LevelSetConvergenceTable.h"
+#include "LevelSetDuplicates.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetInput.h"
@@ -145,17 +146,32 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   vtkSmartPointer<vtkPointSet> original = input;
+  const std::vector<double> originalValues = values;
   vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(input, values);
-  if (!work)
-  {
-    return false;
-  }
-  input = work; // from here on: the particles and their ghost images, if any
-  const lsi::Neighborhoods* geometry = this->FindNeighborhoods(input->GetPoints());
+  const lsi::Neighborhoods* geometry =
+    work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
   if (!geometry)
   {
     return false;
   }
+  std::vector<vtkIdType> mergedId; // input id -> merged point, when duplicates were merged
+  if (geometry->DuplicateSamples > 0)
+  {
+    values = originalValues;
+    vtkIdType merged = 0;
+    vtkSmartPointer<vtkPointSet> distinct =
+      lsi::MergeDuplicatePoints(original, values, mergedId, merged);
+    vtkWarningMacro(<< merged << " points coincide with another point (for example point "
+                    << geometry->FirstDuplicate
+                    << "): each group was merged into one, its values averaged.");
+    work = this->WithPeriodicImages(distinct, values);
+    geometry = work ? this->FindNeighborhoods(work->GetPoints(), false) : nullptr;
+    if (!geometry)
+    {
+      return false;
+    }
+  }
+  input = work; // from here on: the distinct particles and their ghost images, if any
   std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples
   if (!this->BuildSPHField(input, *geometry, values, field))
   {
@@ -193,7 +209,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  lsi::MakeParticleOutput(original, *geometry, phi, particleOutput);
+  lsi::MakeParticleOutput(original, *geometry, phi, mergedId, particleOutput);
   convergence->ShallowCopy(iterations);
   // An abort that arrived during the last stage still empties the outputs.
   return !this->ProgressOrAbort(1.0);
@@ -373,7 +389,8 @@ void vtkLevelSetIsosurface::CheckPeriodicMargin(
   }
 }
 
-const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(vtkPoints* points)
+const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
+  vtkPoints* points, bool duplicatesAllowed)
 {
   if (this->ProgressOrAbort(NeighborStage[0]))
   {
@@ -395,8 +412,9 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(vtkPoints* po
     this->NearestNeighborSeconds = geometry->SearchSeconds;
     this->TreeBuildSeconds = geometry->TreeSeconds;
   }
+  // Duplicates are merged by the caller (MergeDuplicates), then searched again.
   const std::string problem = lsi::CheckNeighborhoods(*geometry);
-  if (!problem.empty())
+  if (!problem.empty() && !(duplicatesAllowed && geometry->DuplicateSamples > 0))
   {
     vtkErrorMacro(<< problem);
     return nullptr;

@@ -471,7 +471,7 @@ private:
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
-  const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points);
+  const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,

@@ -444,13 +444,44 @@ void TestBadInput()
     ExpectError(filter, "contains no sample", "empty additional seed");
   }
   {
+    // Duplicates (issue 14): merged with a warning, values averaged; the same surface as
+    // without them, and every input point keeps its LevelSet on port 1.
+    vtkNew<vtkPolyData> clean = Ball(5000);
+    vtkNew<vtkLevelSetIsosurface> reference;
+    Configure(reference, clean);
+    reference->Update();
     vtkNew<vtkPolyData> duplicated = Ball(5000);
+    vtkDataArray* f = duplicated->GetPointData()->GetArray("f");
+    for (vtkIdType i = 0; i < 300; ++i) // 300 exact copies appended, the copy's value off by 1
+    {
+      double x[3];
+      duplicated->GetPoint(i, x);
+      duplicated->GetPoints()->InsertNextPoint(x);
+      f->InsertNextTuple1(f->GetTuple1(i));
+    }
     double x[3];
-    duplicated->GetPoint(10, x);
-    duplicated->GetPoints()->SetPoint(11, x);
+    duplicated->GetPoint(11, x);
+    duplicated->GetPoints()->SetPoint(12, x); // 12 joins 11 (and its copy); 12's copy is alone
+    f->SetTuple1(12, f->GetTuple1(11) + 1.0);
     vtkNew<vtkLevelSetIsosurface> filter;
     Configure(filter, duplicated);
-    ExpectError(filter, "coincide", "duplicate points");
+    vtkNew<MessageCounter> warnings, errors;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->Update();
+    vtkDataArray* levelSet = filter->GetOutput(1)->GetPointData()->GetArray("LevelSet");
+    std::cout << "duplicates: " << warnings->Last << "; " << filter->GetNumberOfIsopoints()
+              << " isopoints (" << reference->GetNumberOfIsopoints() << " without)\n";
+    Check(errors->Count == 0 && warnings->Last.find("300 points coincide") != std::string::npos,
+      "duplicates: merged with a warning that counts them");
+    Check(filter->GetOutput(1)->GetNumberOfPoints() == 5300 && levelSet &&
+        levelSet->GetTuple1(5000) == levelSet->GetTuple1(0) &&
+        levelSet->GetTuple1(12) == levelSet->GetTuple1(11),
+      "duplicates: every input point on port 1, copies with their point's LevelSet");
+    Check(std::abs(filter->GetNumberOfIsopoints() - reference->GetNumberOfIsopoints()) <=
+          0.01 * reference->GetNumberOfIsopoints() &&
+        filter->GetNumberOfIsopoints() > 100,
+      "duplicates: the surface of the same points without the copies");
   }
   {
     // All samples on the plane z = 30: every MLS fit is singular.
