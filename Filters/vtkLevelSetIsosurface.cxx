@@ -86,6 +86,31 @@ void vtkLevelSetIsosurface::RemoveAllAdditionalSeeds()
   }
 }
 
+void vtkLevelSetIsosurface::SetNumberOfAdditionalSeedValues(int count)
+{
+  const std::size_t size = static_cast<std::size_t>(std::max(0, count));
+  if (size != this->AdditionalSeeds.size())
+  {
+    this->AdditionalSeeds.resize(size, 0.0);
+    this->Modified();
+  }
+}
+
+void vtkLevelSetIsosurface::SetAdditionalSeedValue(int index, double value)
+{
+  if (index < 0 || static_cast<std::size_t>(index) >= this->AdditionalSeeds.size())
+  {
+    vtkErrorMacro("AdditionalSeeds value " << index << " is past the list's "
+                                           << this->AdditionalSeeds.size() << " values.");
+    return;
+  }
+  if (!(this->AdditionalSeeds[index] == value))
+  {
+    this->AdditionalSeeds[index] = value;
+    this->Modified();
+  }
+}
+
 int vtkLevelSetIsosurface::GetNumberOfAdditionalSeeds() const
 {
   return static_cast<int>(this->AdditionalSeeds.size() / 4);
@@ -230,6 +255,13 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
   for (double value : this->AdditionalSeeds)
   {
     parameters.emplace_back("AdditionalSeeds", value);
+  }
+  if (this->AdditionalSeeds.size() % 4 != 0)
+  {
+    vtkErrorMacro("AdditionalSeeds has " << this->AdditionalSeeds.size()
+                                         << " numbers, not 4 per sphere (cx, cy, cz, radius). "
+                                            "Give 4 numbers per sphere.");
+    return false;
   }
   const std::string badParameter = lsi::NonFiniteParameter(parameters);
   if (!badParameter.empty())

@@ -111,6 +111,11 @@ public:
   void AddAdditionalSeed(double cx, double cy, double cz, double radius);
   void RemoveAllAdditionalSeeds();
   int GetNumberOfAdditionalSeeds() const;
+  /** The seeds as ParaView's proxy sets them: the length of its flat list (cx, cy, cz, r per
+   * sphere), then each value, so that a list whose length is not a multiple of 4 is an error
+   * when the filter runs instead of losing its tail silently. */
+  void SetNumberOfAdditionalSeedValues(int count);
+  void SetAdditionalSeedValue(int index, double value);
   ///@}
 
   ///@{
@@ -417,7 +422,7 @@ protected:
   double IsoValue = 0.0;
   double SeedCenter[3] = { 0.0, 0.0, 0.0 };
   double SeedRadius = 0.0;
-  std::vector<double> AdditionalSeeds; // 4 per sphere
+  std::vector<double> AdditionalSeeds; // 4 per sphere (a multiple of 4, checked on execution)
   int NumberOfNeighbors = 26;
   double Epsilon = 0.0;
   double CurvatureEpsilon = 0.0;

@@ -74,6 +74,20 @@ for box in ([0.0, 0.0, 0.0], [2.0, 3.0, 4.0]):
                                    BoxSize=box)
     if list(keyworded.BoxSize) != box:
         failures.append("BoxSize=%s as a keyword became %s" % (box, list(keyworded.BoxSize)))
+# AdditionalSeeds whose length is not a multiple of 4: an error and no output, not a lost tail.
+partial = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                             AdditionalSeeds=[1.0, 2.0, 3.0, 4.0, 5.0])
+partial.UpdatePipeline()
+if partial.GetDataInformation().GetNumberOfPoints() != 0:
+    failures.append("AdditionalSeeds of 5 numbers gave a surface instead of an error")
+whole = LevelSetIsosurface(Input=source, Scalars=["POINTS", "density"], IsoValue=0.0,
+                           AdditionalSeeds=[1.0, 2.0, 3.0, 4.0])
+whole.UpdatePipeline()
+if whole.GetDataInformation().GetNumberOfPoints() == 0:
+    failures.append("AdditionalSeeds of 4 numbers gave no surface")
+print("AdditionalSeeds of 5 numbers: %d points; of 4: %d points"
+      % (partial.GetDataInformation().GetNumberOfPoints(),
+         whole.GetDataInformation().GetNumberOfPoints()))
 # And values other than the defaults.
 for name, value in dict(Field=2, Kernel=3, SupportPerSmoothingLength=2.195775,
                         SmoothingLengthArray="hsmooth", MassArray="mass",
