@@ -64,6 +64,28 @@ PeriodicBox FindPeriodicBox(
   return box;
 }
 
+bool PlaceBox(PeriodicBox& box, const double bounds[6], double slack)
+{
+  for (double origin : { 0.0, -0.5 })
+  {
+    bool fits = true;
+    for (int d = 0; d < 3 && fits; ++d)
+    {
+      const double low = origin * box.Size[d], tolerance = slack * box.Size[d];
+      fits = bounds[2 * d] >= low - tolerance && bounds[2 * d + 1] <= low + box.Size[d] + tolerance;
+    }
+    if (fits)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        box.Origin[d] = origin * box.Size[d];
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
 vtkSmartPointer<vtkPolyData> WithPeriodicImages(
   vtkPointSet* input, const PeriodicBox& box, double margin, std::vector<vtkIdType>& imageOf)
 {
@@ -88,7 +110,7 @@ vtkSmartPointer<vtkPolyData> WithPeriodicImages(
       {
         y[d] = x[d] + shift[d] * box.Size[d];
         const double w = margin * box.Size[d];
-        near = y[d] >= -w && y[d] < box.Size[d] + w;
+        near = y[d] >= box.Origin[d] - w && y[d] < box.Origin[d] + box.Size[d] + w;
       }
       if (near)
       {
@@ -173,7 +195,7 @@ std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox
     bool cut = false;
     for (int d = 0; d < 3; ++d)
     {
-      const double x = geometry.Position(i)[d];
+      const double x = geometry.Position(i)[d] - box.Origin[d];
       // The images end margin * L beyond each face; the neighbourhood must end before.
       const double room = std::min(x, box.Size[d] - x) + margin * box.Size[d];
       if (reach > room)
@@ -191,7 +213,7 @@ bool InKeptCell(const double* x, const PeriodicBox& box, const double* center)
 {
   for (int d = 0; d < 3; ++d)
   {
-    const double low = center ? center[d] - 0.5 * box.Size[d] : 0.0;
+    const double low = center ? center[d] - 0.5 * box.Size[d] : box.Origin[d];
     if (!(x[d] >= low && x[d] < low + box.Size[d]))
     {
       return false;

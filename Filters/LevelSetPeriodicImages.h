@@ -25,7 +25,10 @@ namespace lsi
 struct PeriodicBox
 {
   bool Enabled = false;
-  double Size[3] = { 0.0, 0.0, 0.0 }; // the box is [0, Size) on each axis (GADGET, SWIFT)
+  double Size[3] = { 0.0, 0.0, 0.0 };
+  // The box is [Origin, Origin + Size) on each axis: 0 for GADGET, GIZMO and SWIFT; -Size / 2
+  // for Tipsy's boxes centred on 0 (PlaceBox).
+  double Origin[3] = { 0.0, 0.0, 0.0 };
 };
 
 /// The box: `requested` (the BoxSize property) where positive, else the "BoxSize" field data the
@@ -33,6 +36,12 @@ struct PeriodicBox
 /// is off or no box is known. `problem` is set for a box that is not positive and finite.
 PeriodicBox FindPeriodicBox(
   vtkPointSet* input, const double requested[3], bool periodic, std::string& problem);
+
+/// Places the box on the particles (`bounds` as vtkDataSet::GetBounds gives them): at 0 if they
+/// lie within [0, Size) (give or take `slack`, a fraction of the box), else centred on 0 if they
+/// lie within [-Size / 2, Size / 2). False when they fit neither: the box does not describe
+/// them.
+bool PlaceBox(PeriodicBox& box, const double bounds[6], double slack);
 
 /// The input points and point data, then the images of every point within `margin` (a fraction
 /// of the box on each axis) of a face, shifted across it (faces, edges and corners); imageOf[k]
@@ -51,7 +60,7 @@ std::vector<vtkIdType> OriginalIds(
 std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox& box,
   double margin, vtkIdType originalCount, const std::vector<double>& supports, double& needed);
 
-/// Whether x lies in the periodic cell [0, Size) on each axis, or, with a `center`,
+/// Whether x lies in the periodic cell [Origin, Origin + Size) on each axis, or, with a `center`,
 /// [center - Size / 2, center + Size / 2).
 bool InKeptCell(const double* x, const PeriodicBox& box, const double* center);
 

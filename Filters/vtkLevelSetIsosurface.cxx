@@ -300,18 +300,17 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
   }
   double bounds[6];
   input->GetBounds(bounds);
-  for (int d = 0; d < 3; ++d)
+  if (!lsi::PlaceBox(internal.Box, bounds, 0.5 * this->PeriodicMargin))
   {
-    const double slack = 0.5 * this->PeriodicMargin * internal.Box.Size[d];
-    if (bounds[2 * d] < -slack || bounds[2 * d + 1] > internal.Box.Size[d] + slack)
-    {
-      vtkWarningMacro("The particles reach outside the periodic box [0, "
-        << internal.Box.Size[d] << ") on axis " << d << " (" << bounds[2 * d] << " to "
-        << bounds[2 * d + 1] << "): the box is not taken as periodic. Set BoxSize, or turn "
-        << "Periodic off to silence this.");
-      internal.Box = lsi::PeriodicBox();
-      return input;
-    }
+    vtkWarningMacro("The particles (from "
+      << bounds[0] << ", " << bounds[2] << ", " << bounds[4] << " to " << bounds[1] << ", "
+      << bounds[3] << ", " << bounds[5]
+      << ") lie neither in the periodic box [0, BoxSize) nor in one centred on 0 (BoxSize "
+      << internal.Box.Size[0] << ", " << internal.Box.Size[1] << ", " << internal.Box.Size[2]
+      << "): the box is not taken as periodic. Set BoxSize, or turn Periodic off to silence "
+         "this.");
+    internal.Box = lsi::PeriodicBox();
+    return input;
   }
   vtkSmartPointer<vtkPolyData> work =
     lsi::WithPeriodicImages(input, internal.Box, this->PeriodicMargin, internal.ImageOf);
@@ -494,8 +493,9 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
   for (int d = 0; d < 3; ++d) // the kept periodic cell's centre: the main seed, else the box's
   {
-    this->Internal->SeedCenter[d] =
-      spheres.empty() ? 0.5 * this->Internal->Box.Size[d] : spheres[d];
+    this->Internal->SeedCenter[d] = spheres.empty()
+      ? this->Internal->Box.Origin[d] + 0.5 * this->Internal->Box.Size[d]
+      : spheres[d];
   }
   const lsi::SeedSphereStart seeds =
     lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi);

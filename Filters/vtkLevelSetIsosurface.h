@@ -282,7 +282,8 @@ public:
   ///@{
   /**
    * Periodic boxes (default on): when the box is known, from BoxSize or the "BoxSize" field
-   * data the HDF5 reader passes from the snapshot's Header, the box [0, BoxSize) wraps: the
+   * data the HDF5 reader passes from the snapshot's Header, the box wraps ([0, BoxSize), or
+   * [-BoxSize/2, BoxSize/2) when the particles lie around 0, as in Tipsy boxes): the
    * particles within PeriodicMargin of a face are copied across it (ghost images), so that
    * neighbourhoods, the flood and the SPH field continue through the faces, and a component
    * that crosses a face is one closed surface. The seeded component is followed through the

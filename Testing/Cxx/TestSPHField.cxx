@@ -230,6 +230,38 @@ void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double
       Check(high == 0, "periodic box, around the seed: one piece about the seed");
     }
   }
+  // The same box centred on 0 ([-1.5, 1.5)^3, as Tipsy's cosmological boxes are): the filter
+  // places the box on the particles.
+  auto centred = vtkSmartPointer<vtkPolyData>::New();
+  centred->DeepCopy(box);
+  for (vtkIdType i = 0; i < centred->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    centred->GetPoint(i, x);
+    centred->GetPoints()->SetPoint(i, x[0] - 0.5 * L, x[1] - 0.5 * L, x[2] - 0.5 * L);
+  }
+  const double shiftedSeed[3] = { seed[0] - 0.5 * L, seed[1] - 0.5 * L, seed[2] - 0.5 * L };
+  auto around = Run(centred, iso, shiftedSeed, 0.1, vtkLevelSetIsosurface::ISOPOINTS);
+  double centredMean = 0.0;
+  vtkIdType outside = 0;
+  for (vtkIdType i = 0; i < around->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    around->GetPoint(i, x);
+    outside += (x[0] < -0.5 * L || x[0] >= 0.5 * L) ? 1 : 0;
+    x[0] += 0.5 * L;
+    x[1] += 0.5 * L;
+    x[2] += 0.5 * L;
+    centredMean += radiusAbout(x, true);
+  }
+  centredMean /= std::max<vtkIdType>(1, around->GetNumberOfPoints());
+  std::cout << "Periodic box centred on 0: " << around->GetNumberOfPoints()
+            << " isopoints, mean radius " << centredMean << ", " << outside << " outside the box\n";
+  Check(
+    std::abs(static_cast<double>(around->GetNumberOfPoints() - openCount)) <= 0.02 * openCount &&
+      std::abs(centredMean - openRadius) < 2e-3 && outside == 0,
+    "periodic box centred on 0: the whole sphere, in the box");
+
   vtkNew<vtkLevelSetIsosurface> open;
   open->SetPeriodic(false);
   auto cut = Run(box, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, open);
