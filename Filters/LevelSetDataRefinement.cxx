@@ -82,16 +82,9 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
       geometry.Index->Nearest(p.data(), 1, &nearest, &d2);
       const double reach = settings.SPHMaximumMove * field.Support(nearest);
       field.Gather(p.data(), reach, candidates); // the point stays within the reach
-      auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-        field.EvaluateAmong(candidates, x.data(), value, g.data());
-        value -= isoValue;
-        return std::isfinite(value);
-      };
-      Eigen::Vector3d gradient;
-      if (SolveOnLine(p, n, evaluate, reach, 1e-9 * reach, gradient) &&
-        gradient.squaredNorm() > 0.0)
+      Eigen::Vector3d normal;
+      if (SolveOntoLevel(field, candidates, isoValue, p, n, reach, 1e-9 * reach, normal))
       {
-        const Eigen::Vector3d normal = -gradient.normalized();
         for (int d = 0; d < 3; ++d)
         {
           out.Points[3 * i + d] = p[d];

@@ -55,18 +55,11 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
       const double reach = field.Support(i);
       Eigen::Vector3d p(geometry.Position(i));
       field.Gather(p.data(), reach, candidates);
-      auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-        field.EvaluateAmong(candidates, x.data(), value, g.data());
-        value -= isoValue;
-        return std::isfinite(value);
-      };
-      Eigen::Vector3d gradient;
       // The ray starts inside (f > f_iso) and leaves the cloud: its crossing is the surface.
-      if (SolveOnLine(p, outward, evaluate, reach, 1e-9 * reach, gradient) &&
-        gradient.squaredNorm() > 0.0 &&
+      Eigen::Vector3d normal;
+      if (SolveOntoLevel(field, candidates, isoValue, p, outward, reach, 1e-9 * reach, normal) &&
         (p - Eigen::Vector3d(geometry.Position(i))).dot(outward) > 0.0)
       {
-        const Eigen::Vector3d normal = -gradient.normalized();
         for (int d = 0; d < 3; ++d)
         {
           points[3 * i + d] = p[d];

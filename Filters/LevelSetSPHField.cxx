@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSPHField.h"
 
+#include "IsopointRefinement.h"
 #include "LevelSetSplines.h"
 
 #include "vtkAbstractArray.h"
@@ -319,6 +320,27 @@ void SPHField::EvaluateAmong(
     default:
       SumKernels<SPHKernel::CubicSpline>(candidates, x, value, gradient);
   }
+}
+
+bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, double isoValue,
+  Eigen::Vector3d& p, const Eigen::Vector3d& direction, double reach, double tolerance,
+  Eigen::Vector3d& normal)
+{
+  auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
+    field.EvaluateAmong(candidates, x.data(), value, g.data());
+    value -= isoValue;
+    return std::isfinite(value);
+  };
+  Eigen::Vector3d gradient;
+  Eigen::Vector3d q = p;
+  if (!SolveOnLine(q, direction, evaluate, reach, tolerance, gradient) ||
+    !(gradient.squaredNorm() > 0.0))
+  {
+    return false;
+  }
+  p = q;
+  normal = -gradient.normalized();
+  return true;
 }
 
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field)

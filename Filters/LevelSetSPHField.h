@@ -13,6 +13,8 @@
 #include "LevelSetNeighborhoods.h"
 #include "SPHKernels.h"
 
+#include <Eigen/Dense>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -170,6 +172,14 @@ void SPHField::ForEachWeight(const double* x, Visit&& visit) const
     }
   });
 }
+
+/// Moves p along the line with `direction` (unit, out of f > f_iso) onto the field's level
+/// `isoValue`, no further than `reach` (IsopointRefinement.h's SolveOnLine, to `tolerance`),
+/// evaluating among `candidates` (gathered around the start for at least that reach). On success
+/// `normal` is the field's unit normal there, out of f > f_iso; false leaves p unchanged.
+bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, double isoValue,
+  Eigen::Vector3d& p, const Eigen::Vector3d& direction, double reach, double tolerance,
+  Eigen::Vector3d& normal);
 
 /// The median kernel support over the median neighbourhood radius (distance to the n-th
 /// neighbour): about 1 or more for real SPH data, far less for placeholder smoothing lengths.

@@ -56,24 +56,17 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         for (int k = 0; field && k < sides; ++k)
         {
           double* corner = &xyz[3 * (i * sides + k)];
-          auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-            field->EvaluateAmong(candidates, x.data(), value, g.data());
-            value -= isoValue;
-            return std::isfinite(value);
-          };
           // Where the surface curves away faster than the splat is wide (a rim), the line
           // through the flat corner misses the level: pull the corner halfway in and try again,
           // and else put it on the centre, so that no corner stands off the surface.
           const Eigen::Vector3d centre(c), flat(corner);
-          Eigen::Vector3d cornerNormal = normal, gradient;
-          Eigen::Vector3d placed = centre;
+          Eigen::Vector3d cornerNormal = normal, placed = centre;
           for (double fraction : { 1.0, 0.5 })
           {
             Eigen::Vector3d p = centre + fraction * (flat - centre);
-            if (SolveOnLine(p, normal, evaluate, fraction * radius, 1e-6 * radius, gradient) &&
-              gradient.squaredNorm() > 0.0)
+            if (SolveOntoLevel(*field, candidates, isoValue, p, normal, fraction * radius,
+                  1e-6 * radius, cornerNormal))
             {
-              cornerNormal = -gradient.normalized();
               placed = p;
               break;
             }

@@ -275,7 +275,9 @@ void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double
   Check(worst > 0.2, "Periodic off: the face cuts the component (a surface closed off there)");
 }
 
-void TestEvrard(const std::string& path)
+// A Tipsy file's particles with Particle Density's summed density and smoothing lengths (64
+// neighbours), as a user makes an SPH field where a file has none.
+vtkSmartPointer<vtkPolyData> WithSummedDensity(const std::string& path)
 {
   vtkNew<vtkTipsyParticleReader> reader;
   reader->SetFileName(path.c_str());
@@ -283,8 +285,14 @@ void TestEvrard(const std::string& path)
   density->SetInputConnection(reader->GetOutputPort());
   density->SetNumberOfNeighbors(64);
   density->Update();
-  auto glass = vtkSmartPointer<vtkPolyData>::New();
-  glass->ShallowCopy(density->GetOutput());
+  auto particles = vtkSmartPointer<vtkPolyData>::New();
+  particles->ShallowCopy(density->GetOutput());
+  return particles;
+}
+
+void TestEvrard(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> glass = WithSummedDensity(path);
   // An array to interpolate: A = 2 + x.
   vtkNew<vtkDoubleArray> a;
   a->SetName("TwoPlusX");
@@ -426,13 +434,7 @@ void TestEvrard(const std::string& path)
 // tube's walls, with real mass and spacing jumps.
 void TestShockTube(const std::string& path)
 {
-  vtkNew<vtkTipsyParticleReader> reader;
-  reader->SetFileName(path.c_str());
-  vtkNew<vtkParticleDensity> density;
-  density->SetInputConnection(reader->GetOutputPort());
-  density->SetNumberOfNeighbors(64);
-  density->Update();
-  vtkPolyData* tube = vtkPolyData::SafeDownCast(density->GetOutput());
+  vtkSmartPointer<vtkPolyData> tube = WithSummedDensity(path);
   const Particles p =
     ParticlesOf(tube, "SmoothingLength", "mass", "Density", 1.0, lsi::SPHKernel::CubicSpline);
   // The seed: the densest particle; the isovalue: half its density.
