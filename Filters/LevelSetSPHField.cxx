@@ -71,6 +71,22 @@ const char* KernelName(SPHKernel kernel)
 }
 } // namespace
 
+vtkDataArray* MarkedMassArray(vtkPointSet* input, const std::string& requested)
+{
+  std::string name;
+  vtkDataArray* array =
+    FindArray(input, requested, "MassArray", { "Masses", "Mass", "mass" }, name);
+  return array && array->GetNumberOfComponents() == 1 ? array : nullptr;
+}
+
+vtkDataArray* MarkedDensityArray(vtkPointSet* input, const std::string& requested)
+{
+  std::string name;
+  vtkDataArray* array =
+    FindArray(input, requested, "DensityArray", { "Density", "Densities", "rho" }, name);
+  return array && array->GetNumberOfComponents() == 1 ? array : nullptr;
+}
+
 bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequest& request,
   SPHFieldArrays& arrays, std::string& problem, std::string& choice)
 {

@@ -47,6 +47,11 @@ struct SPHFieldArrays
   double SupportPerSmoothingLength = 1.0;
 };
 
+/// The mass and density arrays as FindSPHArrays finds them (the request's name, else the marked
+/// one, else the usual names), or null; for uses that need no smoothing length.
+vtkDataArray* MarkedMassArray(vtkPointSet* input, const std::string& requested);
+vtkDataArray* MarkedDensityArray(vtkPointSet* input, const std::string& requested);
+
 /// Whether the SPH field applies: true with `arrays` filled when the input carries smoothing
 /// lengths and masses (and the request does not say MLS). `problem` is set when the request
 /// asks for the SPH field and the input cannot give it, or an array is malformed; `choice`

@@ -4,6 +4,7 @@
 
 #include "LevelSetConvergenceTable.h"
 #include "LevelSetDuplicates.h"
+#include "LevelSetEnclosed.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetInput.h"
@@ -64,7 +65,7 @@ struct vtkLevelSetIsosurface::Internals
 vtkLevelSetIsosurface::vtkLevelSetIsosurface()
   : Internal(new Internals)
 {
-  this->SetNumberOfOutputPorts(3);
+  this->SetNumberOfOutputPorts(4);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
@@ -124,7 +125,7 @@ int vtkLevelSetIsosurface::FillInputPortInformation(int, vtkInformation* info)
 
 int vtkLevelSetIsosurface::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 2 ? "vtkTable" : "vtkPolyData");
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port >= 2 ? "vtkTable" : "vtkPolyData");
   return 1;
 }
 
@@ -135,6 +136,8 @@ int vtkLevelSetIsosurface::RequestData(
   vtkPolyData* isopoints = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* particles = vtkPolyData::GetData(outputVector, 1);
   vtkTable* convergence = vtkTable::GetData(outputVector, 2);
+  vtkTable* enclosed = vtkTable::GetData(outputVector, 3);
+  enclosed->Initialize();
   isopoints->Initialize();
   particles->Initialize();
   convergence->Initialize();
@@ -147,12 +150,13 @@ int vtkLevelSetIsosurface::RequestData(
   // VTK's global SMP backend may be Sequential (as in ParaView 5.11): run our loops on
   // std::threads regardless, without touching the global state.
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, "STDThread", false },
-    [&]() { ok = this->Execute(input, isopoints, particles, convergence); });
+    [&]() { ok = this->Execute(input, isopoints, particles, convergence, enclosed); });
   if (!ok)
   {
     isopoints->Initialize();
     particles->Initialize();
     convergence->Initialize();
+    enclosed->Initialize();
     return this->GetAbortExecute() ? 1 : 0;
   }
   return 1;
@@ -161,7 +165,7 @@ int vtkLevelSetIsosurface::RequestData(
 // The method's steps, in the paper's order; each is a function in the file of its step, and
 // each check of the input comes before the work it protects.
 bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutput,
-  vtkPolyData* particleOutput, vtkTable* convergence)
+  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
 {
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
@@ -235,6 +239,19 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   lsi::MakeParticleOutput(original, *geometry, phi, mergedId, particleOutput);
+  lsi::EnclosedInputs inside;
+  inside.Geometry = geometry;
+  inside.Phi = &phi;
+  inside.Particles = input;
+  inside.ParticleCount = this->Internal->OriginalCount;
+  inside.OriginalIds =
+    lsi::OriginalIds(*geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
+  inside.Box = this->Internal->Box;
+  inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
+  inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
+  inside.SurfacePoints = &isopoints.Points;
+  inside.SurfaceNormals = &isopoints.Normals;
+  enclosed->ShallowCopy(lsi::EnclosedTable(inside));
   convergence->ShallowCopy(iterations);
   // An abort that arrived during the last stage still empties the outputs.
   return !this->ProgressOrAbort(1.0);

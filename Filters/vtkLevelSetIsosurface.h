@@ -37,7 +37,10 @@
  * InterpolateArrays is off, every point array of the input interpolated by an MLS linear fit
  * (a linear field is reproduced exactly). Port 1, the input samples as vertices with their point
  * data and a "LevelSet" array (the final phi); port 2, a vtkTable with one row per iteration
- * (Iteration, SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds).
+ * (Iteration, SignMismatch, MaxGradientDeviation, MeanGradientDeviation, BandSize, Seconds);
+ * port 3, a vtkTable of what the surface encloses, one row per connected component and a total
+ * (particles, mass, volume, surface area, centre of mass, mass-weighted means of every array:
+ * LevelSetEnclosed.h says how).
  *
  * The neighbourhoods (and MLS stencils) depend only on the points: they are kept across
  * re-executions for the last NeighborCacheSize point sets (recognised by their coordinates), so
@@ -470,7 +473,7 @@ private:
   // The method's steps (see the class documentation). Each returns false when the filter must
   // stop: an error (reported) or an abort.
   bool Execute(vtkPointSet* input, vtkPolyData* surfaceOutput, vtkPolyData* particleOutput,
-    vtkTable* convergence);
+    vtkTable* convergence, vtkTable* enclosed);
   bool ValidateInput(vtkPointSet* input, std::vector<double>& values);
   vtkSmartPointer<vtkPointSet> WithPeriodicImages(vtkPointSet* input, std::vector<double>& values);
   bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,

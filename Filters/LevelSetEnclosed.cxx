@@ -1,0 +1,321 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetEnclosed.h"
+
+#include "NearestNeighbors.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <string>
+
+namespace lsi
+{
+namespace
+{
+const double Pi = 3.14159265358979323846;
+
+// The smooth step over [-width, width] and its derivative.
+double Step(double phi, double width)
+{
+  if (phi >= width)
+  {
+    return 1.0;
+  }
+  if (phi <= -width)
+  {
+    return 0.0;
+  }
+  const double t = phi / width;
+  return 0.5 * (1.0 + t + std::sin(Pi * t) / Pi);
+}
+
+double StepDerivative(double phi, double width)
+{
+  return std::abs(phi) >= width ? 0.0 : (1.0 + std::cos(Pi * phi / width)) / (2.0 * width);
+}
+
+vtkIdType Root(std::vector<vtkIdType>& parent, vtkIdType i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+struct Sums
+{
+  vtkIdType Particles = 0;
+  double Mass = 0.0, Volume = 0.0, Area = 0.0, Weight = 0.0;
+  double Moment[3] = { 0.0, 0.0, 0.0 };
+  double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
+  bool HasReference = false;
+  std::vector<double> Means; // weighted sums of every array component
+};
+} // namespace
+
+vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const std::vector<double>& phi = *in.Phi;
+  const vtkIdType n = in.ParticleCount;
+  const int neighbors = geometry.Stride - 1;
+
+  // Each real particle's own sample (not an image's), and its shell width: one local spacing.
+  std::vector<std::size_t> sampleOf(static_cast<std::size_t>(n), 0);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+    {
+      sampleOf[geometry.Order[i]] = i;
+    }
+  }
+  // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
+  // enough particles fall in it for a smooth surface integral.
+  auto width = [&](std::size_t i) { return geometry.Radius[i]; };
+  auto touches = [&](std::size_t i) { return phi[i] > -width(i); };
+
+  // Components: the particles within a shell of the inside, joined through the neighbour graph
+  // (through the images too, so a component cut by a periodic face is one).
+  std::vector<vtkIdType> parent(static_cast<std::size_t>(n));
+  std::iota(parent.begin(), parent.end(), vtkIdType(0));
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (!touches(i))
+    {
+      continue;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if (touches(ids[m]))
+      {
+        const vtkIdType a = Root(parent, in.OriginalIds[i]);
+        const vtkIdType b = Root(parent, in.OriginalIds[ids[m]]);
+        if (a != b)
+        {
+          parent[std::max(a, b)] = std::min(a, b);
+        }
+      }
+    }
+  }
+
+  // The arrays to average: every numeric point array, all components.
+  vtkPointData* data = in.Particles->GetPointData();
+  std::vector<vtkDataArray*> arrays;
+  int components = 0;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetArray(a);
+    if (array && array->GetName() && array->GetNumberOfTuples() >= n)
+    {
+      arrays.push_back(array);
+      components += array->GetNumberOfComponents();
+    }
+  }
+
+  // The surface points (with their periodic images, so that a particle next to a face finds
+  // the surface across it) for the signed distances near the surface.
+  std::vector<double> surface, surfaceNormals;
+  if (in.SurfacePoints && in.SurfaceNormals)
+  {
+    const std::size_t count = in.SurfacePoints->size() / 3;
+    for (int s = 0; s < (in.Box.Enabled ? 27 : 1); ++s)
+    {
+      const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        for (int d = 0; d < 3; ++d)
+        {
+          surface.push_back(
+            (*in.SurfacePoints)[3 * k + d] + (in.Box.Enabled ? shift[d] * in.Box.Size[d] : 0.0));
+          surfaceNormals.push_back((*in.SurfaceNormals)[3 * k + d]);
+        }
+      }
+    }
+  }
+  std::unique_ptr<PointCloudIndex> surfaceIndex;
+  if (!surface.empty())
+  {
+    surfaceIndex.reset(new PointCloudIndex(surface.data(), surface.size() / 3));
+  }
+  // The signed distance (positive inside) of sample i, for the weights.
+  auto distance = [&](std::size_t i) {
+    const double s = width(i);
+    if (!surfaceIndex || std::abs(phi[i]) > 2.0 * s)
+    {
+      return phi[i];
+    }
+    std::uint32_t nearest;
+    double d2;
+    surfaceIndex->Nearest(geometry.Position(i), 1, &nearest, &d2);
+    double height = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      height -=
+        (geometry.Position(i)[d] - surface[3 * nearest + d]) * surfaceNormals[3 * nearest + d];
+    }
+    // The tangent plane only holds near its point; beyond, phi's sign decides.
+    return std::sqrt(d2) < 2.0 * s ? height : phi[i];
+  };
+
+  std::vector<Sums> sums(static_cast<std::size_t>(n));
+  std::vector<char> inside(static_cast<std::size_t>(n), 0);
+  std::vector<double> values(static_cast<std::size_t>(components));
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    const std::size_t i = sampleOf[p];
+    if (!touches(i))
+    {
+      continue;
+    }
+    const double s = width(i), signedDistance = distance(i);
+    const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
+    const double mass = in.Mass ? in.Mass->GetTuple1(p) : 0.0;
+    const double rho = in.Density ? in.Density->GetTuple1(p) : 0.0;
+    const double radius = geometry.Radius[i];
+    const double volume = in.Mass && in.Density && rho > 0.0
+      ? mass / rho
+      : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
+    Sums& c = sums[Root(parent, p)];
+    inside[Root(parent, p)] |= phi[i] > 0.0 ? 1 : 0;
+    c.Particles += phi[i] > 0.0 ? 1 : 0;
+    c.Mass += mass * h;
+    c.Volume += volume * h;
+    c.Area += volume * delta;
+    const double weight = (in.Mass ? mass : volume) * h;
+    c.Weight += weight;
+    const double* x = geometry.Position(i);
+    if (!c.HasReference)
+    {
+      std::copy(x, x + 3, c.Reference);
+      c.HasReference = true;
+      c.Means.assign(static_cast<std::size_t>(components), 0.0);
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      double offset = x[d] - c.Reference[d];
+      if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
+      {
+        offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
+      }
+      c.Moment[d] += weight * offset;
+    }
+    int k = 0;
+    for (vtkDataArray* array : arrays)
+    {
+      for (int q = 0; q < array->GetNumberOfComponents(); ++q)
+      {
+        c.Means[k++] += weight * array->GetComponent(p, q);
+      }
+    }
+  }
+
+  // Components with an inside particle, the largest volume first (ties: the lowest id).
+  std::vector<vtkIdType> found;
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    if (inside[p])
+    {
+      found.push_back(p);
+    }
+  }
+  std::stable_sort(found.begin(), found.end(),
+    [&](vtkIdType a, vtkIdType b) { return sums[a].Volume > sums[b].Volume; });
+  Sums total;
+  total.Means.assign(static_cast<std::size_t>(components), 0.0);
+  for (vtkIdType root : found)
+  {
+    const Sums& c = sums[root];
+    total.Particles += c.Particles;
+    total.Mass += c.Mass;
+    total.Volume += c.Volume;
+    total.Area += c.Area;
+    total.Weight += c.Weight;
+    for (int d = 0; d < 3; ++d) // the total's centre: of the components' centres
+    {
+      total.Moment[d] += c.Moment[d] + c.Weight * c.Reference[d];
+    }
+    for (int k = 0; k < components; ++k)
+    {
+      total.Means[k] += c.Means[k];
+    }
+  }
+
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkStringArray> name;
+  name->SetName("Name");
+  vtkNew<vtkIdTypeArray> particles;
+  particles->SetName("Particles");
+  vtkNew<vtkDoubleArray> mass, volume, area, centre;
+  mass->SetName("Mass");
+  volume->SetName("Volume");
+  area->SetName("SurfaceArea");
+  centre->SetName("CenterOfMass");
+  centre->SetNumberOfComponents(3);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> means;
+  for (vtkDataArray* array : arrays)
+  {
+    auto mean = vtkSmartPointer<vtkDoubleArray>::New();
+    mean->SetName((std::string("Mean ") + array->GetName()).c_str());
+    mean->SetNumberOfComponents(array->GetNumberOfComponents());
+    means.push_back(mean);
+  }
+  auto addRow = [&](const std::string& label, const Sums& c, bool relative) {
+    name->InsertNextValue(label);
+    particles->InsertNextValue(c.Particles);
+    mass->InsertNextValue(c.Mass);
+    volume->InsertNextValue(c.Volume);
+    area->InsertNextValue(c.Area);
+    double com[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      com[d] = c.Weight > 0.0 ? (relative ? c.Reference[d] : 0.0) + c.Moment[d] / c.Weight : 0.0;
+    }
+    centre->InsertNextTuple(com);
+    int k = 0;
+    for (auto& mean : means)
+    {
+      std::vector<double> tuple(mean->GetNumberOfComponents());
+      for (double& value : tuple)
+      {
+        value = c.Weight > 0.0 ? c.Means[k] / c.Weight : 0.0;
+        ++k;
+      }
+      mean->InsertNextTuple(tuple.data());
+    }
+  };
+  for (std::size_t r = 0; r < found.size(); ++r)
+  {
+    addRow("Component " + std::to_string(r + 1), sums[found[r]], true);
+  }
+  addRow("Total", total, false);
+  table->AddColumn(name);
+  table->AddColumn(particles);
+  if (in.Mass)
+  {
+    table->AddColumn(mass);
+  }
+  table->AddColumn(volume);
+  table->AddColumn(area);
+  table->AddColumn(centre);
+  for (auto& mean : means)
+  {
+    table->AddColumn(mean);
+  }
+  return table;
+}
+
+} // namespace lsi

@@ -1,0 +1,58 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Step 9: what the surface encloses, per connected component and in total: particles, mass,
+// volume, surface area, centre of mass, and the mass-weighted mean of every point array.
+// Each particle near the surface is weighted by a smooth step of its signed distance d to the
+// surface (its height over the tangent plane of the nearest isopoint, positive inside) over
+// plus or minus the local neighbourhood radius s (about two spacings):
+// H(d) = 1/2 (1 + d/s + sin(pi d/s)/pi), so a particle
+// straddling the surface counts in part, as much as it lies inside; further away, the sign of
+// the level set phi decides. The surface area is the volume integral of the step's derivative,
+// sum_j V_j H'(d_j).
+#ifndef LevelSetEnclosed_h
+#define LevelSetEnclosed_h
+
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetPeriodicImages.h"
+
+#include "vtkSmartPointer.h"
+
+#include <vector>
+
+class vtkDataArray;
+class vtkPointSet;
+class vtkTable;
+
+namespace lsi
+{
+
+struct EnclosedInputs
+{
+  const Neighborhoods* Geometry = nullptr;
+  const std::vector<double>* Phi = nullptr; // storage order, over particles and images
+  vtkPointSet* Particles = nullptr;         // the particles the method ran on (and images)
+  vtkIdType ParticleCount = 0;              // the real ones: ids below this
+  std::vector<vtkIdType> OriginalIds;       // per sample: the real particle it is (images too)
+  PeriodicBox Box;                          // for centres of mass across faces
+  vtkDataArray* Mass = nullptr;             // none: volumes from the spacing, no Mass column
+  vtkDataArray* Density = nullptr;          // with Mass: volumes m / rho
+  // The surface's points and unit normals (3 doubles each, normals out of the inside): the
+  // signed distance of a particle near the surface is its height over the tangent plane of the
+  // nearest surface point (phi's own distances are offset by a fraction of a spacing there).
+  const std::vector<double>* SurfacePoints = nullptr;
+  const std::vector<double>* SurfaceNormals = nullptr;
+};
+
+/// One row per connected component of the particles inside (phi > 0; connected through the
+/// neighbour graph, their shells included), the largest volume first, then a row
+/// "Total". Columns: Name, Particles (phi > 0), Mass (if masses), Volume, SurfaceArea,
+/// CenterOfMass (3 components; volume-weighted without masses), and "Mean " + the name of every
+/// numeric point array (mass-weighted, or volume-weighted without masses). Volumes are m / rho
+/// with masses and densities, else (4/3) pi R^3 / n from each particle's neighbourhood radius R
+/// (the distance to its n-th neighbour: for randomly placed points the ball's mean volume is n
+/// times the volume per point).
+vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs);
+
+} // namespace lsi
+
+#endif
