@@ -4,6 +4,8 @@
 
 #include "AutomaticParameters.h"
 
+#include <algorithm>
+
 namespace lsi
 {
 
@@ -53,6 +55,61 @@ EvolutionSettings ChooseEvolutionSettings(
   settings.MaximumIterations = requested.MaximumIterations;
   settings.ConvergenceTolerance = requested.ConvergenceTolerance;
   return settings;
+}
+
+std::vector<std::string> EvolutionConcerns(const RequestedParameters& requested,
+  const SurfaceScale& scale, EvolutionSettings& settings, bool seedSphereStart)
+{
+  std::vector<std::string> concerns;
+  EvolutionCoefficients& c = settings.Coefficients;
+  const double spacing = scale.Spacing;
+  const double epsilonInSpacings = c.Epsilon / spacing;
+  if (requested.Epsilon > 0.0 && epsilonInSpacings < 0.5)
+  {
+    concerns.push_back("Epsilon " + std::to_string(c.Epsilon) + " is " +
+      std::to_string(epsilonInSpacings) +
+      " sample spacings: narrower than half a spacing, the data force sees almost no sample and "
+      "the front stays where it started. Use 0 (automatic: 2.5 spacings).");
+  }
+  if (requested.Epsilon > 0.0 && epsilonInSpacings > 20.0)
+  {
+    concerns.push_back("Epsilon " + std::to_string(c.Epsilon) + " is " +
+      std::to_string(epsilonInSpacings) +
+      " sample spacings: the surface is smoothed over that width. Use 0 (automatic).");
+  }
+  // The scheme's bounds: the paper's appendix (dt < 4 eps^2 / 3) and the curvature term's
+  // (lambda dt <= 0.5 spacing^2, lambda the weight in the update).
+  double stable =
+    4.0 / 3.0 * std::min(c.Epsilon, c.CurvatureEpsilon) * std::min(c.Epsilon, c.CurvatureEpsilon);
+  if (c.CurvatureWeight > 0.0)
+  {
+    stable = std::min(stable, 0.5 * spacing * spacing / c.CurvatureWeight);
+  }
+  if (requested.TimeStep > 0.0 && c.TimeStep > stable)
+  {
+    concerns.push_back("TimeStep " + std::to_string(c.TimeStep) +
+      " exceeds the evolution's stability bound " + std::to_string(stable) +
+      " (4/3 Epsilon^2, and CurvatureWeight x TimeStep <= spacing^2 / 2): using the bound.");
+    c.TimeStep = stable;
+  }
+  // The front moves about TimeStep / Epsilon per iteration under the data force.
+  const double reach = settings.MaximumIterations * c.TimeStep / c.Epsilon / spacing;
+  if (seedSphereStart && requested.TimeStep > 0.0 && reach < 2.0)
+  {
+    concerns.push_back("TimeStep " + std::to_string(c.TimeStep) +
+      " lets the front move at most about " + std::to_string(reach) +
+      " sample spacings in MaximumNumberOfIterations: from the seed spheres it cannot reach the "
+      "surface. Use 0 (automatic), or the flood start.");
+  }
+  if (settings.Method == Scheme::WithoutReinitialization &&
+    c.DistanceRegularization * c.TimeStep > spacing * spacing)
+  {
+    concerns.push_back("DistanceRegularization x TimeStep = " +
+      std::to_string(c.DistanceRegularization * c.TimeStep) +
+      " exceeds the squared spacing: the reinitialisation-free scheme (eq. 13) is unstable there "
+      "(the defaults give 0.28). Lower DistanceRegularization or TimeStep.");
+  }
+  return concerns;
 }
 
 IsopointSettings ChooseIsopointSettings(

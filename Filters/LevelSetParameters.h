@@ -10,6 +10,7 @@
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborhoods.h"
 
+#include <string>
 #include <vector>
 
 namespace lsi
@@ -45,6 +46,15 @@ SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<dou
 
 EvolutionSettings ChooseEvolutionSettings(
   const RequestedParameters& requested, const SurfaceScale& scale);
+
+/// What is wrong with the user's lengths and steps for this sampling, in words for warnings:
+/// a TimeStep above the scheme's stability bound (it is lowered to the bound in `settings`), an
+/// Epsilon narrower than half a spacing (the data force then sees no sample and the front does
+/// not move) or wider than 20 spacings, a TimeStep too small for the seed-sphere front to reach
+/// the surface within MaximumIterations, and a DistanceRegularization x TimeStep above the squared
+/// spacing (scheme 1). All are ratios to the spacing: unit-free.
+std::vector<std::string> EvolutionConcerns(const RequestedParameters& requested,
+  const SurfaceScale& scale, EvolutionSettings& settings, bool seedSphereStart);
 
 IsopointSettings ChooseIsopointSettings(
   const RequestedParameters& requested, const SurfaceScale& scale);

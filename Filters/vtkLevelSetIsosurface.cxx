@@ -473,8 +473,13 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
 lsi::EvolutionSettings vtkLevelSetIsosurface::ChooseEvolutionSettings(
   const lsi::SurfaceScale& scale)
 {
-  const lsi::EvolutionSettings settings =
+  lsi::EvolutionSettings settings =
     lsi::ChooseEvolutionSettings(this->RequestedParameters(), scale);
+  for (const std::string& concern : lsi::EvolutionConcerns(
+         this->RequestedParameters(), scale, settings, this->Initialization == SEED_SPHERES))
+  {
+    vtkWarningMacro(<< concern);
+  }
   this->MeanSampleSpacing = scale.Spacing;
   this->EffectiveEpsilon = settings.Coefficients.Epsilon;
   this->EffectiveCurvatureEpsilon = settings.Coefficients.CurvatureEpsilon;

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <set>
@@ -146,6 +147,56 @@ void TestEnclosedComponents()
               << " (exact " << volumes[r] << "), area " << area << " (exact " << areas[r] << ")\n";
     Check(std::abs(volume - volumes[r]) < 0.03 * volumes[r], "enclosed: volume within 3%");
     Check(std::abs(area - areas[r]) < 0.03 * areas[r], "enclosed: area within 3%");
+  }
+}
+
+// Issue 14 (3): extreme finite lengths and steps are named in a warning, and a TimeStep above
+// the stability bound is lowered to it, so the surface still comes out.
+void TestExtremeParameters()
+{
+  vtkNew<vtkPolyData> data = Ball(20000);
+  struct Case
+  {
+    const char* What;
+    std::function<void(vtkLevelSetIsosurface*)> Set;
+    const char* Expected;
+    bool Surface;
+  };
+  const Case cases[] = {
+    { "TimeStep 1e30", [](vtkLevelSetIsosurface* f) { f->SetTimeStep(1e30); }, "stability bound",
+      true },
+    { "Epsilon 1e-6", [](vtkLevelSetIsosurface* f) { f->SetEpsilon(1e-6); }, "narrower", false },
+    { "Epsilon 1e4", [](vtkLevelSetIsosurface* f) { f->SetEpsilon(1e4); }, "smoothed over", false },
+    { "TimeStep 1e-12 from the seed spheres",
+      [](vtkLevelSetIsosurface* f) {
+        f->SetTimeStep(1e-12);
+        f->SetInitializationToSeedSpheres();
+      },
+      "cannot reach", false },
+    { "scheme 1 with DistanceRegularization 10",
+      [](vtkLevelSetIsosurface* f) {
+        f->SetEvolutionScheme(1);
+        f->SetDistanceRegularization(10.0);
+      },
+      "unstable", false },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    c.Set(filter);
+    vtkNew<MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->Update();
+    std::cout << c.What << ": " << filter->GetNumberOfIsopoints() << " isopoints, warnings "
+              << warnings->Count << "\n";
+    Check(warnings->Count > 0 && warnings->All.find(c.Expected) != std::string::npos,
+      std::string(c.What) + ": a warning that says '" + c.Expected + "' (got: " + warnings->All +
+        ")");
+    if (c.Surface)
+    {
+      Check(filter->GetNumberOfIsopoints() > 1000, std::string(c.What) + ": still a surface");
+    }
   }
 }
 
@@ -568,6 +619,7 @@ void TestBadInput()
 
 int main()
 {
+  TestExtremeParameters();
   TestEnclosedComponents();
   TestReuseOfNeighbours();
   TestProgressThroughStages();

@@ -23,9 +23,11 @@ public:
   {
     ++this->Count;
     this->Last = static_cast<const char*>(data);
+    this->All += this->Last;
   }
   int Count = 0;
   std::string Last;
+  std::string All; // every message, one after another
 };
 } // namespace test
 } // namespace lsi
