@@ -10,7 +10,8 @@ packages=(cmake g++ make paraview-dev paraview python3-paraview libeigen3-dev qt
   libnetcdf-dev libogg-dev libtheora-dev libgl2ps-dev libglew-dev libproj-dev liblz4-dev liblzma-dev
   libdouble-conversion-dev libexpat1-dev libfreetype-dev libjpeg-dev libpng-dev libtiff-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libswresample-dev libgdal-dev
-  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy python3-h5py clang-format git)
+  libopenmpi-dev libnanoflann-dev xvfb xauth python3-numpy python3-scipy python3-h5py clang-format git
+  clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -1,0 +1,118 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Any bytes as a point set and the filter's parameters: the filter must give an error, a warning
+// or a surface, never read out of bounds, crash or hang. Layout (all optional, short inputs are
+// padded with zeros): a flags byte, a neighbour-count byte, eight float64 parameters (raw bits,
+// so NaN, infinities and extremes occur), then up to 1,500 points of four float32 each
+// (x, y, z, value).
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkLevelSetIsosurface.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace
+{
+struct Bytes
+{
+  const std::uint8_t* Data;
+  std::size_t Size, At = 0;
+  template <typename T>
+  T Next()
+  {
+    T value{};
+    std::uint8_t raw[sizeof(T)] = {};
+    for (std::size_t k = 0; k < sizeof(T) && this->At < this->Size; ++k)
+    {
+      raw[k] = this->Data[this->At++];
+    }
+    std::memcpy(&value, raw, sizeof(T));
+    return value;
+  }
+  std::size_t Left() const { return this->Size - std::min(this->At, this->Size); }
+};
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  vtkObject::GlobalWarningDisplayOff(); // bad inputs are expected: no message flood
+  Bytes in{ data, size };
+  const std::uint8_t flags = in.Next<std::uint8_t>();
+  const int neighbors = 4 + in.Next<std::uint8_t>() % 40;
+  double parameters[8];
+  for (double& p : parameters)
+  {
+    p = in.Next<double>();
+  }
+  const vtkIdType count = static_cast<vtkIdType>(std::min<std::size_t>(in.Left() / 16, 1500));
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> values;
+  values->SetName("f");
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    float x[3];
+    for (float& c : x)
+    {
+      c = in.Next<float>();
+    }
+    points->InsertNextPoint(x[0], x[1], x[2]);
+    values->InsertNextValue(in.Next<float>());
+  }
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(points);
+  input->GetPointData()->AddArray(values);
+  if (flags & 8) // SPH arrays: smoothing lengths from the values, unit masses, densities
+  {
+    vtkNew<vtkDoubleArray> h, m;
+    h->SetName("SmoothingLength");
+    m->SetName("Masses");
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      h->InsertNextValue(std::abs(values->GetValue(i)));
+      m->InsertNextValue(1.0);
+    }
+    input->GetPointData()->AddArray(h);
+    input->GetPointData()->AddArray(m);
+  }
+  if (flags & 16) // a periodic box from field data, as the HDF5 reader passes it
+  {
+    vtkNew<vtkDoubleArray> box;
+    box->SetName("BoxSize");
+    box->InsertNextValue(parameters[7]);
+    input->GetFieldData()->AddArray(box);
+  }
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(input);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "f");
+  filter->SetNumberOfThreads(1);
+  filter->SetMaximumNumberOfIterations(30);
+  filter->SetNumberOfNeighbors(neighbors);
+  filter->SetIsoValue(parameters[0]);
+  filter->SetSeedCenter(parameters[1], parameters[2], parameters[3]);
+  filter->SetSeedRadius(parameters[4]);
+  if (flags & 32)
+  {
+    filter->SetEpsilon(parameters[5]);
+    filter->SetTimeStep(parameters[6]);
+  }
+  filter->SetOutputType(
+    flags & 1 ? vtkLevelSetIsosurface::ISOPOINTS : vtkLevelSetIsosurface::SPLATS);
+  filter->SetInitialization(
+    flags & 2 ? vtkLevelSetIsosurface::SEED_SPHERES : vtkLevelSetIsosurface::FLOOD);
+  filter->SetField(
+    flags & 4 ? vtkLevelSetIsosurface::SPH_FIELD : vtkLevelSetIsosurface::AUTOMATIC_FIELD);
+  filter->SetEvolutionScheme(flags & 64 ? 1 : 0);
+  filter->SetCompletion(!(flags & 128));
+  filter->Update();
+  return 0;
+}

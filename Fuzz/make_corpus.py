@@ -1,0 +1,44 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""python3 Fuzz/make_corpus.py: writes the fuzzers' seed inputs in Fuzz/corpus (small, valid
+inputs the fuzzer mutates; committed)."""
+import math
+import os
+import random
+import struct
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+
+def write(target, name, data):
+    folder = os.path.join(here, "corpus", target)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, name), "wb") as out:
+        out.write(data)
+
+
+# Tipsy: header (double time; int nbodies, ndim, nsph, ndark, nstar; pad), then 12 float32 per
+# gas particle, 9 per dark one, 11 per star; big-endian ('>') and little-endian ('<').
+for order, label in ((">", "big"), ("<", "little")):
+    header = struct.pack(order + "diiiiii", 0.5, 5, 3, 2, 2, 1, 0)
+    gas = b"".join(struct.pack(order + "12f", 1e-3, i, 2 * i, 3 * i, 0, 0, 0, 1.0 + i, 100, 0.1,
+                               0, 0) for i in range(2))
+    dark = b"".join(struct.pack(order + "9f", 1e-2, -i, i, 0, 0, 0, 0, 0.05, 0)
+                    for i in range(2))
+    star = struct.pack(order + "11f", 1e-4, 0.5, 0.5, 0.5, 0, 0, 0, 0.02, 0.1, 0.05, 0)
+    write("FuzzTipsyReader", "mixed-" + label, header + gas + dark + star)
+    write("FuzzTipsyReader", "truncated-" + label, (header + gas)[:60])
+
+# The filter: flags, neighbours - 4, eight float64 parameters, then (x, y, z, f) float32 points
+# of a ball f = 20 - |x - (30, 30, 30)| in [0, 60]^3.
+rng = random.Random(7)
+points = b""
+for _ in range(1000):
+    x = [rng.uniform(0, 60) for _ in range(3)]
+    f = 20 - math.sqrt(sum((c - 30) ** 2 for c in x))
+    points += struct.pack("<4f", *x, f)
+for flags, name in ((0, "ball-splats"), (1 | 2, "ball-seed-spheres"), (8, "ball-sph"),
+                    (16 | 1, "ball-periodic"), (32 | 64, "ball-scheme1")):
+    parameters = struct.pack("<8d", 0.0, 30.0, 30.0, 30.0, 8.0, 2.5, 3.0, 60.0)
+    write("FuzzLevelSetIsosurface", name, struct.pack("<BB", flags, 22) + parameters + points)
+print("corpus written to", os.path.join(here, "corpus"))
