@@ -359,21 +359,42 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   return true;
 }
 
-double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field)
+double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
+  const std::vector<double>& values, double isoValue)
 {
-  const std::size_t n = geometry.NumberOfSamples;
-  if (n == 0)
+  // The samples next to the surface: a neighbour on the other side of the isovalue (all
+  // samples if there is none).
+  std::vector<double> supports, radii;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    const bool above = values[geometry.Order[i]] > isoValue;
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if ((values[geometry.Order[ids[m]]] > isoValue) != above)
+      {
+        supports.push_back(field.Support(i));
+        radii.push_back(geometry.Radius[i]);
+        break;
+      }
+    }
+  }
+  if (supports.empty())
+  {
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      supports.push_back(field.Support(i));
+      radii.push_back(geometry.Radius[i]);
+    }
+  }
+  if (supports.empty())
   {
     return 1.0;
   }
-  std::vector<double> supports(n), radii(geometry.Radius.begin(), geometry.Radius.end());
-  for (std::size_t j = 0; j < n; ++j)
-  {
-    supports[j] = field.Support(j);
-  }
-  std::nth_element(supports.begin(), supports.begin() + n / 2, supports.end());
-  std::nth_element(radii.begin(), radii.begin() + n / 2, radii.end());
-  return radii[n / 2] > 0.0 ? supports[n / 2] / radii[n / 2] : 1.0;
+  const std::size_t half = supports.size() / 2;
+  std::nth_element(supports.begin(), supports.begin() + half, supports.end());
+  std::nth_element(radii.begin(), radii.begin() + half, radii.end());
+  return radii[half] > 0.0 ? supports[half] / radii[half] : 1.0;
 }
 
 bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,

@@ -187,8 +187,12 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   Eigen::Vector3d& normal);
 
 /// The median kernel support over the median neighbourhood radius (distance to the n-th
-/// neighbour): about 1 or more for real SPH data, far less for placeholder smoothing lengths.
-double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field);
+/// neighbour), among the samples next to the surface (a neighbour on the other side of
+/// `isoValue` in `values`, input order): about 1 or more for real SPH data, far less for
+/// placeholder smoothing lengths or ones that vanish at the surface, where the field cannot
+/// resolve it.
+double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
+  const std::vector<double>& values, double isoValue);
 
 /// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
 /// sign at the samples as the field itself gives it. Returns false only when aborted.

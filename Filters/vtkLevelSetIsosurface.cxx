@@ -583,13 +583,14 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   }
   // Placeholder smoothing lengths (some files carry a constant or stale column) do not describe
   // these particles: a support far below the neighbourhood radius leaves most of space empty.
-  const double fit = lsi::MedianSupportPerNeighborhoodRadius(geometry, *field);
+  const double fit =
+    lsi::MedianSupportPerNeighborhoodRadius(geometry, *field, values, this->IsoValue);
   if (fit < 0.5)
   {
     if (this->Field == AUTOMATIC_FIELD)
     {
-      vtkWarningMacro("The smoothing lengths do not fit these particles: the median kernel "
-                      "support is "
+      vtkWarningMacro("The smoothing lengths do not fit these particles: at the surface the "
+                      "median kernel support is "
         << fit << " times the median distance to the " << geometry.Stride - 1
         << "th neighbour (real SPH supports hold 30 or more neighbours). Using the MLS fit of "
            "the samples; set Field to SPH to use them anyway, or make them with Particle "

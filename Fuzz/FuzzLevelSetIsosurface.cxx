@@ -3,7 +3,7 @@
 // Any bytes as a point set and the filter's parameters: the filter must give an error, a warning
 // or a surface, never read out of bounds, crash or hang. Layout (all optional, short inputs are
 // padded with zeros): a flags byte, a neighbour-count byte, eight float64 parameters (raw bits,
-// so NaN, infinities and extremes occur), then up to 1,500 points of four float32 each
+// so NaN, infinities and extremes occur), then up to 1,000 points of four float32 each
 // (x, y, z, value).
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -54,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     p = in.Next<double>();
   }
-  const vtkIdType count = static_cast<vtkIdType>(std::min<std::size_t>(in.Left() / 16, 1500));
+  const vtkIdType count = static_cast<vtkIdType>(std::min<std::size_t>(in.Left() / 16, 1000));
   vtkNew<vtkPoints> points;
   vtkNew<vtkFloatArray> values;
   values->SetName("f");

@@ -120,6 +120,10 @@ template <typename EvaluateFn>
 bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn evaluate,
   double reach, double tolerance, Eigen::Vector3d& gradient)
 {
+  if (!(reach > 0.0) || !std::isfinite(reach) || !(tolerance > 0.0))
+  {
+    return false; // no line to search (a zero or infinite splat radius, say)
+  }
   const Eigen::Vector3d start = p;
   // g(t) = f(start - t normal) - f_iso, and its derivative along t.
   auto g = [&](double t, double& value, double& slope) {
@@ -190,7 +194,7 @@ bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn e
   }
   // Illinois: regula falsi that halves the value at an end kept twice in a row.
   int side = 0;
-  for (int k = 0; k < 100 && std::abs(b - a) > tolerance; ++k)
+  for (int k = 0; k < 60 && std::abs(b - a) > tolerance; ++k)
   {
     const double c = (a * gb - b * ga) / (gb - ga);
     double gc;

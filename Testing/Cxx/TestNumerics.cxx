@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -433,6 +434,36 @@ void TestRosenthalLinsen()
     std::abs(lsi::RosenthalLinsenValue(0.0, 1.0, 10.0, 0.5, 0.3) - 0.3) < 1e-15, "step bounded");
 }
 
+// SolveOnLine: onto the level of a field that flattens (a Gaussian bump, level at r = 1), from
+// inside and from far outside where Newton's first step overshoots; false when the level is out
+// of reach, and for a zero or infinite reach (it must return, not loop).
+void TestSolveOnLine()
+{
+  const double level = std::exp(-1.0);
+  auto bump = [&](const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient) {
+    const double e = std::exp(-p.squaredNorm());
+    value = e - level;
+    gradient = -2.0 * e * p;
+    return true;
+  };
+  const Eigen::Vector3d out(1, 0, 0);
+  Eigen::Vector3d g;
+  bool ok = true;
+  for (double start : { 0.6, 0.9, 1.6, 2.5 })
+  {
+    Eigen::Vector3d p(start, 0, 0);
+    ok = ok && lsi::SolveOnLine(p, out, bump, 3.0, 1e-12, g) && std::abs(p.x() - 1.0) < 1e-9;
+  }
+  Check(ok, "SolveOnLine reaches the level from inside and from the flat outside");
+  Eigen::Vector3d p(0.2, 0, 0);
+  Check(!lsi::SolveOnLine(p, out, bump, 0.3, 1e-12, g) && p.x() == 0.2,
+    "SolveOnLine: false (p unchanged) when the level is out of reach");
+  Check(!lsi::SolveOnLine(p, out, bump, 0.0, 1e-12, g) &&
+      !lsi::SolveOnLine(p, out, bump, std::numeric_limits<double>::infinity(), 1e-12, g) &&
+      !lsi::SolveOnLine(p, out, bump, std::nan(""), 1e-12, g),
+    "SolveOnLine: false for a zero, infinite or NaN reach");
+}
+
 void TestSlideOntoDataLevel()
 {
   // f - f_iso = 0.3 - x (a plane at x = 0.3, f larger at smaller x): the outward normal is +x.
@@ -626,6 +657,7 @@ int main()
   TestJoinedTree();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
+  TestSolveOnLine();
   TestSplines();
   TestMLS();
   TestTheorem1();
