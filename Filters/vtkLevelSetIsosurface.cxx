@@ -460,6 +460,19 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
     this->NearestNeighborSeconds = geometry->SearchSeconds;
     this->TreeBuildSeconds = geometry->TreeSeconds;
   }
+  // The MLS gradient stencils are stored as floats (half the memory), in the data's unit of
+  // length: their coefficients go as 1 / spacing, so spacings beyond 1e30 or below 1e-30
+  // would overflow or vanish in float. Refuse them with a clear error instead.
+  if (!(geometry->MeanRadius > 1e-30 && geometry->MeanRadius < 1e30))
+  {
+    vtkErrorMacro("The particles' neighbourhood radius is " << geometry->MeanRadius
+                                                            << " in the data's unit of length, "
+                                                               "outside the range 1e-30 to 1e30 "
+                                                               "that the method's float stencils "
+                                                               "hold: rescale the coordinates "
+                                                               "(for example with Transform).");
+    return nullptr;
+  }
   // Duplicates are merged by the caller (MergeDuplicates), then searched again.
   const std::string problem = lsi::CheckNeighborhoods(*geometry);
   if (!problem.empty() && !(duplicatesAllowed && geometry->DuplicateSamples > 0))

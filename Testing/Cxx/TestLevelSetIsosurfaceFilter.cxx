@@ -547,6 +547,26 @@ void TestBadInput()
     filter->AddAdditionalSeed(-100, -100, -100, 2);
     ExpectError(filter, "contains no sample", "empty additional seed");
   }
+  for (double scale : { 1e45, 1e-45 })
+  {
+    // Coordinates far beyond the float stencils' range (issue 14, 4): an error, not an empty
+    // surface without a word.
+    vtkNew<vtkPolyData> huge = Ball(5000);
+    vtkNew<vtkPoints> scaled; // double: 1e45 does not fit a float
+    scaled->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < huge->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      huge->GetPoint(i, x);
+      scaled->InsertNextPoint(scale * x[0], scale * x[1], scale * x[2]);
+    }
+    huge->SetPoints(scaled);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, huge);
+    filter->SetSeedCenter(30 * scale, 30 * scale, 30 * scale);
+    filter->SetSeedRadius(8 * scale);
+    ExpectError(filter, "rescale the coordinates", "coordinates beyond 1e30");
+  }
   {
     // Duplicates (issue 14): merged with a warning, values averaged; the same surface as
     // without them, and every input point keeps its LevelSet on port 1.
