@@ -126,23 +126,29 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     }
   }
 
-  // The surface points (with their periodic images, so that a particle next to a face finds
-  // the surface across it) for the signed distances near the surface.
+  // The surface points (in a periodic box, those of their images that reach within two shell
+  // widths of the box, so that a particle next to a face finds the surface across it) for the
+  // signed distances near the surface.
   std::vector<double> surface, surfaceNormals;
   if (in.SurfacePoints && in.SurfaceNormals)
   {
-    const std::size_t count = in.SurfacePoints->size() / 3;
-    for (int s = 0; s < (in.Box.Enabled ? 27 : 1); ++s)
+    const double widest = 2.0 * *std::max_element(geometry.Radius.begin(), geometry.Radius.end());
+    const double reach[3] = { widest, widest, widest };
+    for (std::size_t k = 0; k < in.SurfacePoints->size() / 3; ++k)
     {
-      const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
-      for (std::size_t k = 0; k < count; ++k)
+      const double* x = &(*in.SurfacePoints)[3 * k];
+      const double* normal = &(*in.SurfaceNormals)[3 * k];
+      auto add = [&](const double* y) {
+        surface.insert(surface.end(), y, y + 3);
+        surfaceNormals.insert(surfaceNormals.end(), normal, normal + 3);
+      };
+      if (in.Box.Enabled)
       {
-        for (int d = 0; d < 3; ++d)
-        {
-          surface.push_back(
-            (*in.SurfacePoints)[3 * k + d] + (in.Box.Enabled ? shift[d] * in.Box.Size[d] : 0.0));
-          surfaceNormals.push_back((*in.SurfaceNormals)[3 * k + d]);
-        }
+        ForEachPeriodicImage(x, in.Box, reach, true, add);
+      }
+      else
+      {
+        add(x);
       }
     }
   }

@@ -92,32 +92,15 @@ vtkSmartPointer<vtkPolyData> WithPeriodicImages(
   const vtkIdType n = input->GetNumberOfPoints();
   imageOf.clear();
   std::vector<double> shifted;
+  const double reach[3] = { margin * box.Size[0], margin * box.Size[1], margin * box.Size[2] };
   for (vtkIdType i = 0; i < n; ++i)
   {
     double x[3];
     input->GetPoint(i, x);
-    // Every shift of -1, 0, +1 box per axis (not all 0) that lands within the margin.
-    for (int s = 0; s < 27; ++s)
-    {
-      const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
-      if (shift[0] == 0 && shift[1] == 0 && shift[2] == 0)
-      {
-        continue;
-      }
-      double y[3];
-      bool near = true;
-      for (int d = 0; d < 3 && near; ++d)
-      {
-        y[d] = x[d] + shift[d] * box.Size[d];
-        const double w = margin * box.Size[d];
-        near = y[d] >= box.Origin[d] - w && y[d] < box.Origin[d] + box.Size[d] + w;
-      }
-      if (near)
-      {
-        imageOf.push_back(i);
-        shifted.insert(shifted.end(), y, y + 3);
-      }
-    }
+    ForEachPeriodicImage(x, box, reach, false, [&](const double* y) {
+      imageOf.push_back(i);
+      shifted.insert(shifted.end(), y, y + 3);
+    });
   }
   const vtkIdType images = static_cast<vtkIdType>(imageOf.size());
   auto out = vtkSmartPointer<vtkPolyData>::New();

@@ -43,6 +43,33 @@ PeriodicBox FindPeriodicBox(
 /// them.
 bool PlaceBox(PeriodicBox& box, const double bounds[6], double slack);
 
+/// Calls visit(y) for every image y = x + shift * Size of x (shift -1, 0 or +1 on each axis; the
+/// zero shift only if `withZero`) that lies within reach[d] of the box on every axis d.
+template <typename Visit>
+void ForEachPeriodicImage(
+  const double* x, const PeriodicBox& box, const double reach[3], bool withZero, Visit&& visit)
+{
+  for (int s = 0; s < 27; ++s)
+  {
+    const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
+    if (!withZero && shift[0] == 0 && shift[1] == 0 && shift[2] == 0)
+    {
+      continue;
+    }
+    double y[3];
+    bool near = true;
+    for (int d = 0; d < 3 && near; ++d)
+    {
+      y[d] = x[d] + shift[d] * box.Size[d];
+      near = y[d] >= box.Origin[d] - reach[d] && y[d] < box.Origin[d] + box.Size[d] + reach[d];
+    }
+    if (near)
+    {
+      visit(y);
+    }
+  }
+}
+
 /// The input points and point data, then the images of every point within `margin` (a fraction
 /// of the box on each axis) of a face, shifted across it (faces, edges and corners); imageOf[k]
 /// is the input id of point N + k. Field data are passed on.

@@ -253,16 +253,6 @@ void SPHField::Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end
   node.MaximumSupport = std::max(a.MaximumSupport, b.MaximumSupport);
 }
 
-void SPHField::Evaluate(const double* x, double& value, double* gradient) const
-{
-  value = 0.0;
-  gradient[0] = gradient[1] = gradient[2] = 0.0;
-  this->ForEachSupportHolding(x, [&](std::uint32_t j) {
-    AccumulateKernel(this->Kernel, x, this->Geometry.Position(j), this->H[j], this->Coefficient[j],
-      value, gradient);
-  });
-}
-
 void SPHField::Gather(const double* x, double extra, SPHCandidates& candidates) const
 {
   candidates.Clear();
@@ -287,24 +277,23 @@ void SPHField::Gather(const double* x, double extra, SPHCandidates& candidates) 
 
 namespace
 {
-template <SPHKernel K>
-void SumKernels(const SPHCandidates& c, const double* x, double& value, double* gradient)
+// sum_j c_j W(|x - x_j|, H_j) and its gradient for kernel K over the particles that
+// forEach(add) passes to add(xj, H, c): the one loop behind Evaluate and EvaluateAmong.
+template <SPHKernel K, typename ForEach>
+void SumKernels(ForEach&& forEach, const double* x, double& value, double* gradient)
 {
   double v = 0.0, g0 = 0.0, g1 = 0.0, g2 = 0.0;
-  const std::size_t count = c.X.size();
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double d0 = x[0] - c.X[j], d1 = x[1] - c.Y[j], d2 = x[2] - c.Z[j];
+  forEach([&](const double* xj, double H, double c) {
+    const double d0 = x[0] - xj[0], d1 = x[1] - xj[1], d2 = x[2] - xj[2];
     const double r2 = d0 * d0 + d1 * d1 + d2 * d2;
-    const double H = c.H[j];
     if (!(r2 < H * H))
     {
-      continue;
+      return;
     }
     const double r = std::sqrt(r2), inverse = 1.0 / H;
     double w, dw;
     KernelShape<K>(r * inverse, w, dw);
-    const double scale = c.Coefficient[j] * inverse * inverse * inverse;
+    const double scale = c * inverse * inverse * inverse;
     v += scale * w;
     if (r > 0.0)
     {
@@ -313,29 +302,53 @@ void SumKernels(const SPHCandidates& c, const double* x, double& value, double* 
       g1 += slope * d1;
       g2 += slope * d2;
     }
-  }
+  });
   const double norm = Normalization<K>();
   value = norm * v;
   gradient[0] = norm * g0;
   gradient[1] = norm * g1;
   gradient[2] = norm * g2;
 }
+
+// SumKernels with the kernel chosen once, outside the loop.
+template <typename ForEach>
+void SumKernels(
+  SPHKernel kernel, ForEach&& forEach, const double* x, double& value, double* gradient)
+{
+  switch (kernel)
+  {
+    case SPHKernel::QuinticSpline:
+      SumKernels<SPHKernel::QuinticSpline>(forEach, x, value, gradient);
+      break;
+    case SPHKernel::WendlandC2:
+      SumKernels<SPHKernel::WendlandC2>(forEach, x, value, gradient);
+      break;
+    default:
+      SumKernels<SPHKernel::CubicSpline>(forEach, x, value, gradient);
+  }
+}
 } // namespace
+
+void SPHField::Evaluate(const double* x, double& value, double* gradient) const
+{
+  auto forEach = [&](auto&& add) {
+    this->ForEachSupportHolding(x,
+      [&](std::uint32_t j) { add(this->Geometry.Position(j), this->H[j], this->Coefficient[j]); });
+  };
+  SumKernels(this->Kernel, forEach, x, value, gradient);
+}
 
 void SPHField::EvaluateAmong(
   const SPHCandidates& candidates, const double* x, double& value, double* gradient) const
 {
-  switch (this->Kernel)
-  {
-    case SPHKernel::QuinticSpline:
-      SumKernels<SPHKernel::QuinticSpline>(candidates, x, value, gradient);
-      break;
-    case SPHKernel::WendlandC2:
-      SumKernels<SPHKernel::WendlandC2>(candidates, x, value, gradient);
-      break;
-    default:
-      SumKernels<SPHKernel::CubicSpline>(candidates, x, value, gradient);
-  }
+  auto forEach = [&](auto&& add) {
+    for (std::size_t j = 0; j < candidates.X.size(); ++j)
+    {
+      const double xj[3] = { candidates.X[j], candidates.Y[j], candidates.Z[j] };
+      add(xj, candidates.H[j], candidates.Coefficient[j]);
+    }
+  };
+  SumKernels(this->Kernel, forEach, x, value, gradient);
 }
 
 bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, double isoValue,

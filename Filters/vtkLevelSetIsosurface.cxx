@@ -175,7 +175,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   vtkSmartPointer<vtkPointSet> original = input;
-  const std::vector<double> originalValues = values;
   vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(input, values);
   const lsi::Neighborhoods* geometry =
     work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
@@ -186,7 +185,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   std::vector<vtkIdType> mergedId; // input id -> merged point, when duplicates were merged
   if (geometry->DuplicateSamples > 0)
   {
-    values = originalValues;
+    values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
     vtkIdType merged = 0;
     vtkSmartPointer<vtkPointSet> distinct =
       lsi::MergeDuplicatePoints(original, values, mergedId, merged);
@@ -331,6 +330,7 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
   }
   vtkSmartPointer<vtkPolyData> work =
     lsi::WithPeriodicImages(input, internal.Box, this->PeriodicMargin, internal.ImageOf);
+  values.reserve(values.size() + internal.ImageOf.size());
   for (vtkIdType original : internal.ImageOf)
   {
     values.push_back(values[original]);

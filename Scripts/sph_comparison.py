@@ -47,34 +47,23 @@ PI = np.pi
 
 
 # --- kernels, with q = r / H on [0, 1) (H the support) ---------------------------------------
-def kernel_w(name, q):
+def kernel_shape(name, q):
+    """w(q) and dw/dq on q = r / H (0 from q = 1 on): W = w / H^3, dW/dr = dw/dq / H^4."""
     q = np.asarray(q, dtype=float)
-    w = np.zeros_like(q)
+    w, d = np.zeros_like(q), np.zeros_like(q)
     inside = q < 1.0
     qi = q[inside]
     if name == "CubicSpline":
         w[inside] = (8.0 / PI) * np.where(qi <= 0.5, 1 - 6 * qi**2 + 6 * qi**3, 2 * (1 - qi) ** 3)
-    elif name == "QuinticSpline":
-        a, b, c = 1 - qi, np.maximum(2 / 3 - qi, 0), np.maximum(1 / 3 - qi, 0)
-        w[inside] = 2187.0 / (40 * PI) * (a**5 - 6 * b**5 + 15 * c**5)
-    else:  # WendlandC2
-        w[inside] = 21.0 / (2 * PI) * (1 - qi) ** 4 * (1 + 4 * qi)
-    return w
-
-
-def kernel_dw(name, q):
-    q = np.asarray(q, dtype=float)
-    d = np.zeros_like(q)
-    inside = q < 1.0
-    qi = q[inside]
-    if name == "CubicSpline":
         d[inside] = (8.0 / PI) * np.where(qi <= 0.5, -12 * qi + 18 * qi**2, -6 * (1 - qi) ** 2)
     elif name == "QuinticSpline":
         a, b, c = 1 - qi, np.maximum(2 / 3 - qi, 0), np.maximum(1 / 3 - qi, 0)
+        w[inside] = 2187.0 / (40 * PI) * (a**5 - 6 * b**5 + 15 * c**5)
         d[inside] = 2187.0 / (40 * PI) * (-5 * a**4 + 30 * b**4 - 75 * c**4)
-    else:
+    else:  # WendlandC2
+        w[inside] = 21.0 / (2 * PI) * (1 - qi) ** 4 * (1 + 4 * qi)
         d[inside] = 21.0 / (2 * PI) * (-20 * qi * (1 - qi) ** 3)
-    return d
+    return w, d
 
 
 class SPHTruth:
@@ -121,9 +110,10 @@ class SPHTruth:
             r = np.linalg.norm(d, axis=1)
             H = self.H[j]
             q = r / H
-            w = self.m[j] * kernel_w(self.kernel, q) / H**3
+            shape, slope = kernel_shape(self.kernel, q)
+            w = self.m[j] * shape / H**3
             value += np.bincount(owner, weights=w, minlength=len(points))
-            dw = self.m[j] * kernel_dw(self.kernel, q) / H**4
+            dw = self.m[j] * slope / H**4
             safe = np.where(r > 0, r, 1.0)
             g = (dw / safe)[:, None] * d * (r > 0)[:, None]
             for k in range(3):
@@ -143,7 +133,8 @@ class SPHTruth:
             r2 = ((gz[:, None, None] - self.x[j, 2]) ** 2 + (gy[None, :, None] - self.x[j, 1]) ** 2
                   + (gx[None, None, :] - self.x[j, 0]) ** 2)
             field[lo[2]:hi[2], lo[1]:hi[1], lo[0]:hi[0]] += (
-                self.m[j] * kernel_w(self.kernel, np.sqrt(r2) / self.H[j]) / self.H[j] ** 3)
+                self.m[j] * kernel_shape(self.kernel, np.sqrt(r2) / self.H[j])[0]
+                / self.H[j] ** 3)
         return field
 
 
