@@ -76,7 +76,7 @@ void DropProposalsInOccupiedVoxels(const IsopointSet& current, double cell,
     }
   }
   std::fill(valid.begin(), valid.end(), 0);
-  for (std::size_t k : ThinByVoxels(all, cell)) // existing points come first and win
+  for (std::size_t k : ThinByVoxels(all, cell, existing)) // existing points win
   {
     if (k >= existing)
     {
@@ -105,8 +105,8 @@ bool CompleteIsopoints(const Neighborhoods& geometry, const std::vector<double>&
   // The union, thinned again; existing isopoints come first and so win their voxels.
   IsopointSet all = out;
   AppendSelected(candidates, candidateNormals, ValidIndices(candidateValid), all);
-  const std::vector<std::size_t> kept = ThinByVoxels(all.Points, settings.CellSize);
   const std::size_t before = out.Points.size() / 3;
+  const std::vector<std::size_t> kept = ThinByVoxels(all.Points, settings.CellSize, before);
   IsopointSet result;
   result.RoughCount = out.RoughCount;
   AppendSelected(all.Points, all.Normals, kept, result);

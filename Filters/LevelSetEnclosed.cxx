@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <string>
@@ -63,7 +64,83 @@ struct Sums
   double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
   bool HasReference = false;
   std::vector<double> Means; // weighted sums of every array component
+  bool Inside = false;       // holds a particle with phi > 0
+
+  // Adds another part of the same component (its moment taken about this reference).
+  void Add(const Sums& other, const PeriodicBox& box)
+  {
+    if (!other.HasReference)
+    {
+      return;
+    }
+    if (!this->HasReference)
+    {
+      *this = other;
+      return;
+    }
+    this->Particles += other.Particles;
+    this->Mass += other.Mass;
+    this->Volume += other.Volume;
+    this->Area += other.Area;
+    this->Weight += other.Weight;
+    this->Inside = this->Inside || other.Inside;
+    for (int d = 0; d < 3; ++d)
+    {
+      double shift = other.Reference[d] - this->Reference[d];
+      if (box.Enabled)
+      {
+        shift -= box.Size[d] * std::round(shift / box.Size[d]);
+      }
+      this->Moment[d] += other.Moment[d] + other.Weight * shift;
+    }
+    for (std::size_t k = 0; k < this->Means.size(); ++k)
+    {
+      this->Means[k] += other.Means[k];
+    }
+  }
 };
+
+constexpr int FixedFields = 13; // key, then the numbers of Sums before Means
+
+void Pack(double key, const Sums& c, std::vector<double>& out)
+{
+  out.insert(out.end(),
+    { key, static_cast<double>(c.Particles), c.Mass, c.Volume, c.Area, c.Weight, c.Moment[0],
+      c.Moment[1], c.Moment[2], c.Reference[0], c.Reference[1], c.Reference[2],
+      c.Inside ? 1.0 : 0.0 });
+  out.insert(out.end(), c.Means.begin(), c.Means.end());
+}
+
+Sums Unpack(const double* in, std::size_t means)
+{
+  Sums c;
+  c.Particles = static_cast<vtkIdType>(in[1]);
+  c.Mass = in[2];
+  c.Volume = in[3];
+  c.Area = in[4];
+  c.Weight = in[5];
+  std::copy(in + 6, in + 9, c.Moment);
+  std::copy(in + 9, in + 12, c.Reference);
+  c.Inside = in[12] > 0.0;
+  c.HasReference = true;
+  c.Means.assign(in + FixedFields, in + FixedFields + means);
+  return c;
+}
+
+double Find(std::map<double, double>& parent, double key)
+{
+  auto it = parent.find(key);
+  if (it == parent.end())
+  {
+    parent[key] = key;
+    return key;
+  }
+  while (parent[key] != key)
+  {
+    key = parent[key] = parent[parent[key]];
+  }
+  return key;
+}
 } // namespace
 
 vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
@@ -89,11 +166,19 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
 
   // Components: the particles within a shell of the inside, joined through the neighbour graph
   // (through the images too, so a component cut by a periodic face is one).
-  std::vector<vtkIdType> parent(static_cast<std::size_t>(n));
+  // Under MPI the other ranks' ghosts have slots of their own, after the particles.
+  const Communicator& ranks = *in.Ranks;
+  std::vector<vtkIdType> slot(in.OriginalIds);
+  vtkIdType slots = n;
+  for (vtkIdType& s : slot)
+  {
+    s = s >= 0 ? s : slots++;
+  }
+  std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
   std::iota(parent.begin(), parent.end(), vtkIdType(0));
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
-    if (!touches(i))
+    if (!touches(i) || (!geometry.Truncated.empty() && geometry.Truncated[i]))
     {
       continue;
     }
@@ -102,8 +187,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     {
       if (touches(ids[m]))
       {
-        const vtkIdType a = Root(parent, in.OriginalIds[i]);
-        const vtkIdType b = Root(parent, in.OriginalIds[ids[m]]);
+        const vtkIdType a = Root(parent, slot[i]);
+        const vtkIdType b = Root(parent, slot[ids[m]]);
         if (a != b)
         {
           parent[std::max(a, b)] = std::min(a, b);
@@ -178,7 +263,6 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   };
 
   std::vector<Sums> sums(static_cast<std::size_t>(n));
-  std::vector<char> inside(static_cast<std::size_t>(n), 0);
   std::vector<double> values(static_cast<std::size_t>(components));
   for (vtkIdType p = 0; p < n; ++p)
   {
@@ -196,7 +280,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
       ? mass / rho
       : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
     Sums& c = sums[Root(parent, p)];
-    inside[Root(parent, p)] |= phi[i] > 0.0 ? 1 : 0;
+    c.Inside = c.Inside || phi[i] > 0.0;
     c.Particles += phi[i] > 0.0 ? 1 : 0;
     c.Mass += mass * h;
     c.Volume += volume * h;
@@ -229,22 +313,69 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     }
   }
 
-  // Components with an inside particle, the largest volume first (ties: the lowest id).
-  std::vector<vtkIdType> found;
+  // Each component's key: its root here (the rank in the high bits under MPI). Under MPI the
+  // components that meet at a ghost are one: each ghost links its root here to its owner's.
+  const double rankKey = ranks.Distributed() ? ranks.Rank * 4294967296.0 : 0.0;
+  std::map<double, double> joined;
+  if (ranks.Distributed())
+  {
+    std::vector<double> ownerKey(geometry.NumberOfSamples, -1.0);
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      ownerKey[i] = in.OriginalIds[i] >= 0 ? rankKey + Root(parent, slot[i]) : -1.0;
+    }
+    ranks.RefreshGhosts(ownerKey);
+    std::vector<double> links;
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      if (in.OriginalIds[i] < 0 && touches(i) && ownerKey[i] >= 0.0)
+      {
+        links.insert(links.end(), { rankKey + Root(parent, slot[i]), ownerKey[i] });
+      }
+    }
+    ranks.GatherAll(links);
+    for (std::size_t k = 0; k < links.size(); k += 2)
+    {
+      const double a = Find(joined, links[k]), b = Find(joined, links[k + 1]);
+      if (a != b)
+      {
+        joined[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  // Every rank's part of every component, gathered and added up by component.
+  std::vector<double> packed;
   for (vtkIdType p = 0; p < n; ++p)
   {
-    if (inside[p])
+    if (sums[p].HasReference)
     {
-      found.push_back(p);
+      const double key = rankKey + p;
+      Pack(ranks.Distributed() ? Find(joined, key) : key, sums[p], packed);
+    }
+  }
+  ranks.GatherAll(packed);
+  std::map<double, Sums> byKey;
+  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
+  for (std::size_t k = 0; k + record <= packed.size(); k += record)
+  {
+    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)), in.Box);
+  }
+  // Components with an inside particle, the largest volume first (ties: the lowest key).
+  std::vector<const Sums*> found;
+  for (const auto& entry : byKey)
+  {
+    if (entry.second.Inside)
+    {
+      found.push_back(&entry.second);
     }
   }
   std::stable_sort(found.begin(), found.end(),
-    [&](vtkIdType a, vtkIdType b) { return sums[a].Volume > sums[b].Volume; });
+    [&](const Sums* a, const Sums* b) { return a->Volume > b->Volume; });
   Sums total;
   total.Means.assign(static_cast<std::size_t>(components), 0.0);
-  for (vtkIdType root : found)
+  for (const Sums* part : found)
   {
-    const Sums& c = sums[root];
+    const Sums& c = *part;
     total.Particles += c.Particles;
     total.Mass += c.Mass;
     total.Volume += c.Volume;
@@ -305,7 +436,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   };
   for (std::size_t r = 0; r < found.size(); ++r)
   {
-    addRow("Component " + std::to_string(r + 1), sums[found[r]], true);
+    addRow("Component " + std::to_string(r + 1), *found[r], true);
   }
   addRow("Total", total, false);
   table->AddColumn(name);

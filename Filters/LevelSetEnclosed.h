@@ -12,6 +12,7 @@
 #ifndef LevelSetEnclosed_h
 #define LevelSetEnclosed_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetPeriodicImages.h"
 
@@ -41,6 +42,9 @@ struct EnclosedInputs
   // nearest surface point (phi's own distances are offset by a fraction of a spacing there).
   const std::vector<double>* SurfacePoints = nullptr;
   const std::vector<double>* SurfaceNormals = nullptr;
+  // Under MPI: components joined across ranks through the ghosts, sums over every rank's
+  // particles (each table is then the whole run's).
+  const Communicator* Ranks = &SingleProcess();
 };
 
 /// One row per connected component of the particles inside (phi > 0; connected through the

@@ -119,17 +119,23 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   {
     this->Phi[this->Band[k]] = this->NewValues[k];
   }
+  this->Ranks->RefreshGhosts(this->Phi);
 }
 
 void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationRecord& record)
 {
   const std::size_t n = this->Geometry.NumberOfSamples;
+  const Communicator& ranks = *this->Ranks;
   // P = (1/2N) sum |sgn(phi_i) - sgn(f_i - f_iso)|, with sgn(phi) taken as +1 / -1.
   vtkSMPThreadLocal<double> mismatch(0.0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     double& local = mismatch.Local();
     for (vtkIdType i = begin; i < end; ++i)
     {
+      if (!ranks.Owns(static_cast<std::size_t>(i)))
+      {
+        continue;
+      }
       const double s = Positive(this->Phi[i]) ? 1.0 : -1.0;
       local += std::abs(s - this->DataSign[i]);
     }
@@ -139,7 +145,6 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
   {
     total += v;
   }
-  record.SignMismatch = n ? total / (2.0 * n) : 0.0;
 
   // MG and AG over the zero crossings between neighbours (the rough isopoints), with the
   // gradient interpolated linearly along each crossing segment.
@@ -156,7 +161,7 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
   const int stride = this->Geometry.Stride;
   ForEachIn(this->Front, [&](std::size_t, std::size_t i) {
     const double phii = this->Phi[i];
-    if (!Positive(phii))
+    if (!Positive(phii) || !ranks.Owns(i))
     {
       return;
     }
@@ -188,8 +193,24 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
     all.Sum += s.Sum;
     all.Count += s.Count;
   }
+  // Totals over the ranks: the statistics and the band.
+  double owned = 0.0, band = 0.0;
+  for (std::size_t i = 0; i < n && ranks.Distributed(); ++i)
+  {
+    owned += ranks.Owns(i) ? 1.0 : 0.0;
+  }
+  for (std::size_t i : this->Band)
+  {
+    band += ranks.Owns(i) ? 1.0 : 0.0;
+  }
+  double sums[5] = { total, ranks.Distributed() ? owned : static_cast<double>(n), all.Sum,
+    static_cast<double>(all.Count), band };
+  ranks.Sum(sums, 5);
+  all.Max = ranks.Max(all.Max);
+  record.SignMismatch = sums[1] > 0.0 ? sums[0] / (2.0 * sums[1]) : 0.0;
   record.MaxGradientDeviation = all.Max;
-  record.MeanGradientDeviation = all.Count ? all.Sum / all.Count : 0.0;
+  record.MeanGradientDeviation = sums[3] > 0.0 ? sums[2] / sums[3] : 0.0;
+  record.BandSize = static_cast<std::size_t>(sums[4]);
 }
 
 bool LevelSetEvolution::Run(const EvolutionSettings& settings,
@@ -211,9 +232,11 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   {
     this->InitiallyPositive[i] = Positive(this->Phi[i]);
   }
+  const Communicator& ranks = *this->Ranks;
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {
-    if (Aborted(aborted))
+    // Under MPI every rank stops together, when any rank was asked to.
+    if (!ranks.All(!Aborted(aborted)))
     {
       return false;
     }
@@ -221,12 +244,11 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     IterationRecord record;
     record.Iteration = iteration;
     this->Evolve(settings);
-    record.BandSize = this->Band.size();
     const bool reinitialize =
       settings.Method != Scheme::WithoutReinitialization && settings.ReinitializationSteps > 0;
     if (reinitialize)
     {
-      this->Reinitializer.Run(settings, this->Phi);
+      this->Reinitializer.Run(settings, this->Phi, ranks);
     }
     // First-time sign changes: scan the samples that may have changed (the band, and the
     // reinitialised region or else the band's neighbours).
@@ -237,7 +259,8 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     {
       for (std::size_t i : *touched)
       {
-        if (!this->HasChangedSign[i] && Positive(this->Phi[i]) != this->InitiallyPositive[i])
+        if (!this->HasChangedSign[i] && Positive(this->Phi[i]) != this->InitiallyPositive[i] &&
+          ranks.Owns(i))
         {
           this->HasChangedSign[i] = 1;
           ++record.FirstSignChanges;
@@ -246,7 +269,9 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     }
     record.Seconds = SecondsSince(start);
     this->Measure(settings, record); // statistics are reported, not timed as part of the iteration
-    if (observeIteration && observeIteration(record))
+    record.FirstSignChanges =
+      static_cast<std::size_t>(ranks.Sum(static_cast<double>(record.FirstSignChanges)));
+    if (!ranks.All(!(observeIteration && observeIteration(record))))
     {
       return false;
     }

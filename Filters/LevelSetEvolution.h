@@ -8,6 +8,7 @@
 #define LevelSetEvolution_h
 
 #include "LevelSetBand.h"
+#include "LevelSetCommunicator.h"
 #include "LevelSetEvolutionSettings.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
@@ -50,6 +51,10 @@ public:
 
   bool Converged() const { return this->HasConverged; }
 
+  /// Under MPI: the ghosts are refreshed after every write, the statistics and the stopping
+  /// rule count the owned samples of every rank, so every rank stops at the same iteration.
+  void SetCommunicator(const Communicator& ranks) { this->Ranks = &ranks; }
+
 private:
   void ComputeGradients(const std::vector<std::size_t>& where, const std::vector<double>& values);
   void Evolve(const EvolutionSettings& settings);
@@ -66,6 +71,7 @@ private:
   std::vector<double> NewValues;
   std::vector<char> InitiallyPositive, HasChangedSign;
   bool HasConverged = false;
+  const Communicator* Ranks = &SingleProcess();
 };
 
 } // namespace lsi

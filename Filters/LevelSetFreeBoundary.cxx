@@ -79,7 +79,7 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
   IsopointSet all = out;
   AppendSelected(points, normals, ValidIndices(found), all);
   std::vector<std::size_t> added;
-  for (std::size_t k : ThinByVoxels(all.Points, settings.CellSize))
+  for (std::size_t k : ThinByVoxels(all.Points, settings.CellSize, before))
   {
     if (k >= before)
     {

@@ -17,14 +17,10 @@
 namespace lsi
 {
 
-std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
-  int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
-  std::vector<double>& values)
+std::string CheckCount(vtkIdType n, int numberOfNeighbors)
 {
   std::ostringstream problem;
-  const vtkIdType n = input->GetNumberOfPoints();
-  const std::string name = scalars && scalars->GetName() ? scalars->GetName() : "";
-  if (n == 0 || !input->GetPoints())
+  if (n == 0)
   {
     problem << "The input has no points.";
   }
@@ -33,7 +29,23 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
     problem << "The input has " << n
             << " points, fewer than NumberOfNeighbors + 1 = " << numberOfNeighbors + 1 << ".";
   }
-  else if (n >= static_cast<vtkIdType>(UINT32_MAX))
+  return problem.str();
+}
+
+std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int association,
+  std::vector<double>& values, double range[2])
+{
+  std::ostringstream problem;
+  const vtkIdType n = input->GetNumberOfPoints();
+  const std::string name = scalars && scalars->GetName() ? scalars->GetName() : "";
+  range[0] = DBL_MAX;
+  range[1] = -DBL_MAX;
+  values.clear();
+  if (n == 0 || !input->GetPoints())
+  {
+    return std::string(); // an empty piece (under MPI) has nothing to check
+  }
+  if (n >= static_cast<vtkIdType>(UINT32_MAX))
   {
     problem << "The input has " << n << " points; at most 2^32 - 1 are supported.";
   }
@@ -61,7 +73,6 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
   }
 
   values.resize(n);
-  double range[2] = { DBL_MAX, -DBL_MAX };
   for (vtkIdType i = 0; i < n; ++i)
   {
     values[i] = scalars->GetComponent(i, 0);
@@ -80,6 +91,13 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
       return problem.str();
     }
   }
+  return std::string();
+}
+
+std::string CheckRangeAndSeeds(
+  const double range[2], double isoValue, const std::vector<double>& additionalSeeds)
+{
+  std::ostringstream problem;
   if (!(isoValue > range[0] && isoValue < range[1]))
   {
     problem << "IsoValue " << isoValue << " is outside the open range of the data (" << range[0]
@@ -96,6 +114,20 @@ std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int associatio
     }
   }
   return std::string();
+}
+
+std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
+  int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
+  std::vector<double>& values)
+{
+  std::string problem =
+    CheckCount(input->GetPoints() ? input->GetNumberOfPoints() : 0, numberOfNeighbors);
+  double range[2];
+  if (problem.empty())
+  {
+    problem = CheckPiece(input, scalars, association, values, range);
+  }
+  return problem.empty() ? CheckRangeAndSeeds(range, isoValue, additionalSeeds) : problem;
 }
 
 std::string NonFiniteParameter(const std::vector<std::pair<const char*, double>>& named)

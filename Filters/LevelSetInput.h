@@ -8,6 +8,8 @@
 
 #include "LevelSetNeighborhoods.h"
 
+#include "vtkType.h"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +25,15 @@ namespace lsi
 std::string CheckInput(vtkPointSet* input, vtkDataArray* scalars, int association,
   int numberOfNeighbors, double isoValue, const std::vector<double>& additionalSeeds,
   std::vector<double>& values);
+
+/// The parts of CheckInput, for an input in pieces (MPI): the count of the whole input; one
+/// piece's points and scalar (an empty piece passes), with its range; the whole input's range
+/// against IsoValue, and the seeds' radii.
+std::string CheckCount(vtkIdType n, int numberOfNeighbors);
+std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int association,
+  std::vector<double>& values, double range[2]);
+std::string CheckRangeAndSeeds(
+  const double range[2], double isoValue, const std::vector<double>& additionalSeeds);
 
 /// A parameter that is NaN or infinite (a clamp macro lets NaN through): its name, or "".
 /// `named` lists each parameter's name and value.

@@ -17,7 +17,8 @@
 namespace lsi
 {
 
-std::vector<std::size_t> ThinByVoxels(const std::vector<double>& points, double cell)
+std::vector<std::size_t> ThinByVoxels(
+  const std::vector<double>& points, double cell, std::size_t preferred)
 {
   const std::size_t count = points.size() / 3;
   std::vector<std::uint64_t> keys(count);
@@ -33,8 +34,24 @@ std::vector<std::size_t> ThinByVoxels(const std::vector<double>& points, double 
   }
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(
-    order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  // In each voxel the first of the preferred points wins, else the point with the smallest
+  // coordinates: a choice that does not depend on the order in which points were found (which
+  // differs between thread counts and between MPI ranks).
+  auto before = [&](std::size_t a, std::size_t b) {
+    if (keys[a] != keys[b])
+    {
+      return keys[a] < keys[b];
+    }
+    const bool pa = a < preferred, pb = b < preferred;
+    if (pa != pb || (pa && pb))
+    {
+      return pa != pb ? pa : a < b;
+    }
+    const double* x = &points[3 * a];
+    const double* y = &points[3 * b];
+    return std::lexicographical_compare(x, x + 3, y, y + 3) || (std::equal(x, x + 3, y) && a < b);
+  };
+  std::sort(order.begin(), order.end(), before);
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < count; ++k)
   {

@@ -104,9 +104,12 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
 
 // Pieces shared by the three steps.
 
-/// Indices of the points (3 doubles each) that come first, in input order, in their cubic voxel
-/// of side `cell`: removes near-duplicates deterministically and bounds the output's density.
-std::vector<std::size_t> ThinByVoxels(const std::vector<double>& points, double cell);
+/// Indices (ascending) of one point per cubic voxel of side `cell` (points: 3 doubles each): the
+/// first of the `preferred` leading points in the voxel, else the one with the smallest
+/// coordinates, so the choice does not depend on the order of the points. Removes
+/// near-duplicates and bounds the output's density.
+std::vector<std::size_t> ThinByVoxels(
+  const std::vector<double>& points, double cell, std::size_t preferred = 0);
 
 /// Appends the selected points and their normals to `out`.
 void AppendSelected(const std::vector<double>& points, const std::vector<double>& normals,

@@ -83,6 +83,11 @@ struct Neighborhoods
   bool Flat = false;                       // all samples on one plane or line: no 3D fit anywhere
   mutable std::size_t SingularSamples = 0; // among the stencils computed so far
 
+  // Under MPI (LevelSetDistribution.h): ghost samples whose neighbour list the edge of the
+  // rank's halo cuts short. Their lists name nearer stand-ins for the missing neighbours, so
+  // searches over the neighbour graph do not go on from them. Empty in a serial run.
+  mutable std::vector<char> Truncated;
+
   const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }
   /// Computes the stencils that `samples` (count indices, no repeats) still lack, in parallel.
   /// Call from the main thread between parallel loops.
@@ -119,6 +124,10 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
     if (stop && stop->Stop())
     {
       return false;
+    }
+    if (!geometry.Truncated.empty() && geometry.Truncated[queue[head]])
+    {
+      continue;
     }
     const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
     for (int m = 1; m < geometry.Stride; ++m)

@@ -9,12 +9,21 @@
 namespace lsi
 {
 
-SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign)
+SurfaceScale ScaleAtSurface(
+  const Neighborhoods& geometry, const std::vector<double>& dataSign, const Communicator& ranks)
 {
-  double sum = 0.0;
-  std::size_t count = 0;
+  // Sums: of the radii at the surface, their count, and of all radii and theirs.
+  double sums[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double& sum = sums[0];
+  double& count = sums[1];
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
+    if (!ranks.Owns(i))
+    {
+      continue;
+    }
+    sums[2] += geometry.Radius[i];
+    sums[3] += 1.0;
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
     {
@@ -26,8 +35,9 @@ SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<dou
       }
     }
   }
+  ranks.Sum(sums, 4);
   SurfaceScale scale;
-  scale.NeighborhoodRadius = count ? sum / count : geometry.MeanRadius;
+  scale.NeighborhoodRadius = count > 0.0 ? sum / count : sums[2] / sums[3];
   scale.Spacing = SpacingFromNeighborhoodRadius(scale.NeighborhoodRadius, geometry.Stride - 1);
   return scale;
 }

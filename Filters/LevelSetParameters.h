@@ -6,6 +6,7 @@
 #ifndef LevelSetParameters_h
 #define LevelSetParameters_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetEvolutionSettings.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborhoods.h"
@@ -42,7 +43,8 @@ struct SurfaceScale
 /// Adaptive data (SPH) is sampled far more densely in some places than at the isosurface, so
 /// the scale is measured on the samples with a neighbour on the other side of the isovalue
 /// (`dataSign`, the sign of f - f_iso per sample), or on all samples if there is none.
-SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign);
+SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign,
+  const Communicator& ranks = SingleProcess());
 
 EvolutionSettings ChooseEvolutionSettings(
   const RequestedParameters& requested, const SurfaceScale& scale);

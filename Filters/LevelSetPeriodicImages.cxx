@@ -158,7 +158,8 @@ std::vector<vtkIdType> OriginalIds(
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
     const vtkIdType id = geometry.Order[i];
-    original[i] = id < originalCount ? id : imageOf[id - originalCount];
+    const std::size_t image = static_cast<std::size_t>(id - originalCount);
+    original[i] = id < originalCount ? id : (image < imageOf.size() ? imageOf[image] : -1);
   }
   return original;
 }

@@ -76,7 +76,8 @@ void ForEachPeriodicImage(
 vtkSmartPointer<vtkPolyData> WithPeriodicImages(
   vtkPointSet* input, const PeriodicBox& box, double margin, std::vector<vtkIdType>& imageOf);
 
-/// The samples (storage order) that are one particle: each sample's original input id.
+/// The samples (storage order) that are one particle: each sample's original input id (-1 for
+/// the ghosts of other MPI ranks, which come after the images).
 std::vector<vtkIdType> OriginalIds(
   const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf);
 

@@ -23,7 +23,8 @@ Reinitialization::Reinitialization(const Neighborhoods& geometry, BandCollector&
 {
 }
 
-void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double>& phi)
+void Reinitialization::Run(
+  const EvolutionSettings& settings, std::vector<double>& phi, const Communicator& ranks)
 {
   // Only where it matters: the band plus a margin, so that samples about to enter the band
   // already hold a distance; plus one ring of neighbours, so that clamped (stale) values next
@@ -75,6 +76,7 @@ void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double
       phi[region[k]] = this->NewValues[k];
     }
   }
+  ranks.RefreshGhosts(phi);
   for (int step = 0; step < settings.ReinitializationSteps; ++step)
   {
     ForEachIn(region, [&](std::size_t k, std::size_t i) {
@@ -96,6 +98,7 @@ void Reinitialization::Run(const EvolutionSettings& settings, std::vector<double
     {
       phi[region[k]] = this->NewValues[k];
     }
+    ranks.RefreshGhosts(phi);
   }
 }
 

@@ -8,6 +8,7 @@
 #define LevelSetReinitialization_h
 
 #include "LevelSetBand.h"
+#include "LevelSetCommunicator.h"
 #include "LevelSetEvolutionSettings.h"
 
 #include <cstddef>
@@ -26,8 +27,10 @@ public:
   Reinitialization(const Neighborhoods& geometry, BandCollector& band);
 
   /// settings.ReinitializationSteps pseudo-time steps on the region |phi| <
-  /// ReinitializationHalfWidth plus one ring of neighbours, in place.
-  void Run(const EvolutionSettings& settings, std::vector<double>& phi);
+  /// ReinitializationHalfWidth plus one ring of neighbours, in place. Under MPI the ghosts
+  /// take their owners' values after each step.
+  void Run(const EvolutionSettings& settings, std::vector<double>& phi,
+    const Communicator& ranks = SingleProcess());
 
   /// The samples the last Run updated.
   const std::vector<std::size_t>& Region() const { return this->Updated; }

@@ -373,13 +373,17 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
 }
 
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
-  const std::vector<double>& values, double isoValue)
+  const std::vector<double>& values, double isoValue, const Communicator& ranks)
 {
   // The samples next to the surface: a neighbour on the other side of the isovalue (all
-  // samples if there is none).
+  // samples if there is none). Under MPI, the owned samples of every rank.
   std::vector<double> supports, radii;
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
+    if (!ranks.Owns(i))
+    {
+      continue;
+    }
     const bool above = values[geometry.Order[i]] > isoValue;
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
@@ -392,14 +396,19 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
       }
     }
   }
-  if (supports.empty())
+  if (ranks.Sum(static_cast<double>(supports.size())) == 0.0)
   {
     for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
     {
-      supports.push_back(field.Support(i));
-      radii.push_back(geometry.Radius[i]);
+      if (ranks.Owns(i))
+      {
+        supports.push_back(field.Support(i));
+        radii.push_back(geometry.Radius[i]);
+      }
     }
   }
+  ranks.GatherAll(supports);
+  ranks.GatherAll(radii);
   if (supports.empty())
   {
     return 1.0;

@@ -10,6 +10,7 @@
 #ifndef LevelSetSPHField_h
 #define LevelSetSPHField_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "SPHKernels.h"
 
@@ -192,7 +193,7 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
 /// placeholder smoothing lengths or ones that vanish at the surface, where the field cannot
 /// resolve it.
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
-  const std::vector<double>& values, double isoValue);
+  const std::vector<double>& values, double isoValue, const Communicator& ranks = SingleProcess());
 
 /// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
 /// sign at the samples as the field itself gives it. Returns false only when aborted.

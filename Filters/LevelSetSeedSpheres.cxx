@@ -42,7 +42,7 @@ std::vector<double> SeedSpheres(const double center[3], double radius,
 
 SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
   const std::vector<double>& spheres, const double bounds[6], double margin,
-  std::vector<double>& phi)
+  std::vector<double>& phi, const Communicator& ranks)
 {
   double box[6];
   for (int k = 0; k < 3; ++k)
@@ -65,12 +65,15 @@ SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
         std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
           (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
           (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
-      start.SamplesPerSphere[s / 4] += d > 0.0;
+      start.SamplesPerSphere[s / 4] += d > 0.0 && ranks.Owns(i);
       seed = std::max(seed, d);
     }
     start.InSeed[i] = spheres.empty() || seed > 0.0;
     phi[i] = std::min(seed, DistanceInsideBox(x, box));
   }
+  std::vector<double> counts(start.SamplesPerSphere.begin(), start.SamplesPerSphere.end());
+  ranks.Sum(counts.data(), static_cast<int>(counts.size()));
+  start.SamplesPerSphere.assign(counts.begin(), counts.end());
   return start;
 }
 

@@ -6,6 +6,7 @@
 #ifndef LevelSetSeedSpheres_h
 #define LevelSetSeedSpheres_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 
 #include <cstddef>
@@ -31,7 +32,7 @@ struct SeedSphereStart
 /// sphere seeds the whole box.
 SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
   const std::vector<double>& spheres, const double bounds[6], double margin,
-  std::vector<double>& phi);
+  std::vector<double>& phi, const Communicator& ranks = SingleProcess());
 
 } // namespace lsi
 

@@ -3,6 +3,7 @@
 #include "vtkLevelSetIsosurface.h"
 
 #include "LevelSetConvergenceTable.h"
+#include "LevelSetDistribution.h"
 #include "LevelSetDuplicates.h"
 #include "LevelSetEnclosed.h"
 #include "LevelSetEvolution.h"
@@ -23,6 +24,7 @@
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -50,6 +52,13 @@ constexpr double EvolutionStage[2] = { 0.45, 0.8 };
 constexpr double IsopointStage[2] = { 0.8, 0.92 };
 constexpr double SurfaceStage[2] = { 0.92, 0.98 };
 constexpr double SplatStage[2] = { 0.98, 1.0 };
+
+// Under MPI, each rank receives the other ranks' particles within this many of its own
+// particles' neighbourhood radii: enough for the initial signed distance (the reinitialised
+// band, about 4.7 radii with the automatic Epsilon) plus one radius of whole neighbourhoods.
+constexpr double HaloRadii = 6.0;
+// Inputs with fewer particles per rank than this are gathered and processed on rank 0.
+constexpr double SmallestSharePerRank = 2000.0;
 } // namespace
 
 struct vtkLevelSetIsosurface::Internals
@@ -60,6 +69,7 @@ struct vtkLevelSetIsosurface::Internals
   vtkIdType OriginalCount = 0;
   std::vector<vtkIdType> ImageOf;
   double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
+  lsi::Distribution* Ranks = nullptr;       // this execution's MPI ranks
 };
 
 vtkLevelSetIsosurface::vtkLevelSetIsosurface()
@@ -68,9 +78,20 @@ vtkLevelSetIsosurface::vtkLevelSetIsosurface()
   this->SetNumberOfOutputPorts(4);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkLevelSetIsosurface::~vtkLevelSetIsosurface() = default;
+vtkLevelSetIsosurface::~vtkLevelSetIsosurface()
+{
+  this->SetController(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkLevelSetIsosurface, Controller, vtkMultiProcessController);
+
+bool vtkLevelSetIsosurface::ReportsForAll() const
+{
+  return !this->Internal->Ranks || this->Internal->Ranks->Rank == 0;
+}
 
 void vtkLevelSetIsosurface::AddAdditionalSeed(double cx, double cy, double cz, double radius)
 {
@@ -169,21 +190,33 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 {
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
+  lsi::Distribution ranks(this->Controller);
+  this->Internal->Ranks = &ranks;
+  struct Forget // the steps below must not keep a pointer to this execution's ranks
+  {
+    Internals& In;
+    ~Forget() { In.Ranks = nullptr; }
+  } forget{ *this->Internal };
   std::vector<double> values; // f, in input order
   if (!this->ValidateInput(input, values))
   {
     return false;
   }
   vtkSmartPointer<vtkPointSet> original = input;
-  vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(input, values);
+  if (ranks.Distributed())
+  {
+    bool idle = false; // a rank left without particles by an input too small to spread
+    original = this->Distribute(input, values, idle);
+    if (idle)
+    {
+      return true;
+    }
+  }
+  vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(original, values);
   const lsi::Neighborhoods* geometry =
     work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
-  if (!geometry)
-  {
-    return false;
-  }
   std::vector<vtkIdType> mergedId; // input id -> merged point, when duplicates were merged
-  if (geometry->DuplicateSamples > 0)
+  if (geometry && geometry->DuplicateSamples > 0)
   {
     values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
     vtkIdType merged = 0;
@@ -194,29 +227,47 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
                     << "): each group was merged into one, its values averaged.");
     work = this->WithPeriodicImages(distinct, values);
     geometry = work ? this->FindNeighborhoods(work->GetPoints(), false) : nullptr;
-    if (!geometry)
+  }
+  if (!ranks.All(geometry != nullptr))
+  {
+    return false;
+  }
+  if (ranks.Distributed())
+  {
+    work = this->WithGhosts(work, *geometry, values);
+    geometry = this->FindNeighborhoods(work->GetPoints(), false);
+    if (!ranks.All(geometry != nullptr))
     {
       return false;
     }
+    ranks.Attach(*geometry);
   }
-  input = work; // from here on: the distinct particles and their ghost images, if any
+  input = work; // from here on: the distinct particles, their ghost images and MPI ghosts
   std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples
-  if (!this->BuildSPHField(input, *geometry, values, field))
+  if (!ranks.All(this->BuildSPHField(input, *geometry, values, field)))
   {
     return false;
   }
   this->CheckPeriodicMargin(*geometry, field.get());
   std::vector<double> dataOffsets, dataSign; // f - f_iso and its sign, in storage order
+  bool ok = true;
   if (!field)
   {
     lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
   }
-  else if (!lsi::SPHOffsetsAtSamples(
-             *geometry, *field, this->IsoValue, dataOffsets, dataSign, this->Stage(SPHFieldStage)))
+  else
+  {
+    ok = lsi::SPHOffsetsAtSamples(
+      *geometry, *field, this->IsoValue, dataOffsets, dataSign, this->Stage(SPHFieldStage));
+  }
+  if (!ranks.All(ok))
   {
     return false;
   }
-  const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign);
+  // A ghost at the halo's edge misses part of its kernel sum: its owner's value is the serial one.
+  ranks.RefreshGhosts(dataOffsets);
+  ranks.RefreshGhosts(dataSign);
+  const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign, ranks);
   const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
   std::vector<double> phi;
   if (!this->Initialize(input, *geometry, dataOffsets, settings, phi))
@@ -229,11 +280,16 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   lsi::IsopointSet isopoints;
-  if (!this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, field.get(), isopoints))
+  ok = this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, field.get(), isopoints);
+  if (!ranks.All(ok))
   {
     return false;
   }
-  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(), surfaceOutput))
+  this->KeepOwnedIsopoints(*geometry, isopoints);
+  this->KeepPeriodicCell(isopoints);
+  this->WarnIfEmpty(*geometry, dataOffsets, phi, isopoints);
+  ok = this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(), surfaceOutput);
+  if (!ranks.All(ok))
   {
     return false;
   }
@@ -250,10 +306,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
   inside.SurfacePoints = &isopoints.Points;
   inside.SurfaceNormals = &isopoints.Normals;
-  enclosed->ShallowCopy(lsi::EnclosedTable(inside));
-  convergence->ShallowCopy(iterations);
+  inside.Ranks = &ranks;
+  vtkSmartPointer<vtkTable> table = lsi::EnclosedTable(inside);
+  if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
+  {
+    enclosed->ShallowCopy(table);
+    convergence->ShallowCopy(iterations);
+  }
   // An abort that arrived during the last stage still empties the outputs.
-  return !this->ProgressOrAbort(1.0);
+  return ranks.All(!this->ProgressOrAbort(1.0));
 }
 
 bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double>& values)
@@ -282,19 +343,111 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
   const std::string badParameter = lsi::NonFiniteParameter(parameters);
   if (!badParameter.empty())
   {
-    vtkErrorMacro(<< badParameter);
+    if (this->ReportsForAll())
+    {
+      vtkErrorMacro(<< badParameter);
+    }
     return false;
   }
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
-  const std::string problem = lsi::CheckInput(input, scalars, association, this->NumberOfNeighbors,
-    this->IsoValue, this->AdditionalSeeds, values);
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  std::string problem;
+  if (!ranks.Distributed())
+  {
+    problem = lsi::CheckInput(input, scalars, association, this->NumberOfNeighbors, this->IsoValue,
+      this->AdditionalSeeds, values);
+  }
+  else
+  {
+    // Each rank checks its piece; the count and the range are the whole input's.
+    double range[2];
+    problem = ranks.FirstProblem(lsi::CheckPiece(input, scalars, association, values, range));
+    if (problem.empty())
+    {
+      const double count = ranks.Sum(static_cast<double>(values.size()));
+      range[0] = -ranks.Max(-range[0]);
+      range[1] = ranks.Max(range[1]);
+      problem = lsi::CheckCount(static_cast<vtkIdType>(count), this->NumberOfNeighbors);
+      if (problem.empty())
+      {
+        problem = lsi::CheckRangeAndSeeds(range, this->IsoValue, this->AdditionalSeeds);
+      }
+    }
+  }
   if (!problem.empty())
   {
-    vtkErrorMacro(<< problem);
+    if (this->ReportsForAll())
+    {
+      vtkErrorMacro(<< problem);
+    }
     return false;
   }
   return true;
+}
+
+vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::Distribute(
+  vtkPointSet* input, std::vector<double>& values, bool& idle)
+{
+  lsi::Distribution& ranks = *this->Internal->Ranks;
+  const double count = ranks.Sum(static_cast<double>(input->GetNumberOfPoints()));
+  const double smallest = std::max(SmallestSharePerRank, 20.0 * (this->NumberOfNeighbors + 1));
+  vtkSmartPointer<vtkPointSet> piece;
+  if (count < smallest * ranks.Size)
+  {
+    piece = ranks.GatheredOnFirst(input);
+    vtkDebugMacro(<< count << " particles: gathered on rank 0, which processes them alone.");
+    ranks.Size = 1; // a serial run from here on
+    idle = ranks.Rank != 0;
+    if (idle)
+    {
+      return nullptr;
+    }
+  }
+  else
+  {
+    std::string report;
+    piece = ranks.Balanced(input, report);
+    vtkDebugMacro(<< (report.empty() ? std::string("the partition is kept") : report));
+  }
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, piece, association);
+  double range[2];
+  lsi::CheckPiece(piece, scalars, association, values, range); // checked before moving
+  return piece;
+}
+
+vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
+  vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values)
+{
+  // Each owned sample's halo: HaloRadii of its own neighbourhood radii (found among this rank's
+  // samples only, so never less than the serial radius), and a wider band if Epsilon asks.
+  const std::size_t n = owned.NumberOfSamples;
+  const double band =
+    this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
+  std::vector<double> reach(n), support;
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    reach[owned.Order[s]] = HaloRadii * owned.Radius[s] + band;
+  }
+  // The SPH field at a point sums every particle whose kernel reaches it.
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
+  lsi::SPHFieldArrays arrays;
+  std::string problem, choice;
+  if (lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice))
+  {
+    support.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double h = arrays.SmoothingLength->GetComponent(static_cast<vtkIdType>(i), 0);
+      support[i] = std::isfinite(h) ? std::abs(h) * arrays.SupportPerSmoothingLength : 0.0;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> withGhosts =
+    this->Internal->Ranks->WithGhosts(work, reach, support, values);
+  vtkDebugMacro(<< this->Internal->Ranks->GhostCount << " ghost particles from other ranks.");
+  return withGhosts;
 }
 
 vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
@@ -315,16 +468,17 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
     return input;
   }
   double bounds[6];
-  input->GetBounds(bounds);
+  this->Bounds(input, bounds);
   if (!lsi::PlaceBox(internal.Box, bounds, 0.5 * this->PeriodicMargin))
   {
-    vtkWarningMacro("The particles (from "
-      << bounds[0] << ", " << bounds[2] << ", " << bounds[4] << " to " << bounds[1] << ", "
-      << bounds[3] << ", " << bounds[5]
-      << ") lie neither in the periodic box [0, BoxSize) nor in one centred on 0 (BoxSize "
-      << internal.Box.Size[0] << ", " << internal.Box.Size[1] << ", " << internal.Box.Size[2]
-      << "): the box is not taken as periodic. Set BoxSize, or turn Periodic off to silence "
-         "this.");
+    if (this->ReportsForAll())
+      vtkWarningMacro("The particles (from "
+        << bounds[0] << ", " << bounds[2] << ", " << bounds[4] << " to " << bounds[1] << ", "
+        << bounds[3] << ", " << bounds[5]
+        << ") lie neither in the periodic box [0, BoxSize) nor in one centred on 0 (BoxSize "
+        << internal.Box.Size[0] << ", " << internal.Box.Size[1] << ", " << internal.Box.Size[2]
+        << "): the box is not taken as periodic. Set BoxSize, or turn Periodic off to silence "
+           "this.");
     internal.Box = lsi::PeriodicBox();
     return input;
   }
@@ -337,6 +491,27 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
   }
   vtkDebugMacro(<< internal.ImageOf.size() << " ghost images across the periodic box's faces.");
   return work;
+}
+
+void vtkLevelSetIsosurface::Bounds(vtkPointSet* input, double bounds[6])
+{
+  // Under MPI, the whole input's: the largest of -min and max over the ranks.
+  double signedBounds[6] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  if (input->GetNumberOfPoints() > 0)
+  {
+    input->GetBounds(bounds);
+    for (int d = 0; d < 3; ++d)
+    {
+      signedBounds[2 * d] = -bounds[2 * d];
+      signedBounds[2 * d + 1] = bounds[2 * d + 1];
+    }
+  }
+  this->Internal->Ranks->Max(signedBounds, 6);
+  for (int d = 0; d < 3; ++d)
+  {
+    bounds[2 * d] = -signedBounds[2 * d];
+    bounds[2 * d + 1] = signedBounds[2 * d + 1];
+  }
 }
 
 bool vtkLevelSetIsosurface::FollowAcrossFaces(const lsi::Neighborhoods& geometry,
@@ -358,12 +533,16 @@ bool vtkLevelSetIsosurface::FollowAcrossFaces(const lsi::Neighborhoods& geometry
     std::vector<char> reached(static_cast<std::size_t>(internal.OriginalCount), 0);
     for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
     {
-      reached[original[i]] |= phi[i] > 0.0 ? 1 : 0;
+      if (original[i] >= 0) // not another rank's ghost
+      {
+        reached[original[i]] |= phi[i] > 0.0 ? 1 : 0;
+      }
     }
     bool added = false;
     for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
     {
-      if (reached[original[i]] && !inSeed[i] && !(phi[i] > 0.0) && dataOffsets[i] > 0.0)
+      if (original[i] >= 0 && reached[original[i]] && !inSeed[i] && !(phi[i] > 0.0) &&
+        dataOffsets[i] > 0.0)
       {
         inSeed[i] = 1;
         added = true;
@@ -491,7 +670,10 @@ lsi::EvolutionSettings vtkLevelSetIsosurface::ChooseEvolutionSettings(
   for (const std::string& concern : lsi::EvolutionConcerns(
          this->RequestedParameters(), scale, settings, this->Initialization == SEED_SPHERES))
   {
-    vtkWarningMacro(<< concern);
+    if (this->ReportsForAll())
+    {
+      vtkWarningMacro(<< concern);
+    }
   }
   this->MeanSampleSpacing = scale.Spacing;
   this->EffectiveEpsilon = settings.Coefficients.Epsilon;
@@ -522,8 +704,9 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   std::vector<double>& phi)
 {
   const auto start = Clock::now();
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
   double bounds[6];
-  input->GetBounds(bounds);
+  this->Bounds(input, bounds);
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
   for (int d = 0; d < 3; ++d) // the kept periodic cell's centre: the main seed, else the box's
@@ -533,27 +716,31 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
       : spheres[d];
   }
   const lsi::SeedSphereStart seeds =
-    lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi);
+    lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi, ranks);
   const std::string problem = lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere);
   if (!problem.empty())
   {
-    vtkErrorMacro(<< problem);
+    if (this->ReportsForAll())
+    {
+      vtkErrorMacro(<< problem);
+    }
     return false;
   }
   if (this->Initialization == FLOOD)
   {
-    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, seeds.InSeed,
-      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
-      this->Stage(InitializationStage));
     std::vector<char> inSeed = seeds.InSeed;
-    if (flood.Aborted || !this->FollowAcrossFaces(geometry, dataOffsets, settings, inSeed, phi))
+    double seedSamples = 0.0;
+    if (!this->FloodAcrossRanks(geometry, dataOffsets, settings, inSeed, phi, seedSamples))
     {
       return false;
     }
-    if (flood.SeedSamples == 0)
+    if (seedSamples == 0.0 && this->ReportsForAll())
     {
       vtkErrorMacro("No sample inside the seed sphere(s) has a value above IsoValue "
         << this->IsoValue << ": there is nothing to flood. Move the seed into the object.");
+    }
+    if (seedSamples == 0.0)
+    {
       return false;
     }
   }
@@ -561,17 +748,74 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   return true;
 }
 
+bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+  std::vector<char>& inSeed, std::vector<double>& phi, double& seedSamples)
+{
+  // Each rank floods its samples and ghosts. Where a flood reached a ghost, the ghost's owner
+  // is seeded there; where an owner's sample is inside, its ghosts elsewhere are seeded; and
+  // every rank floods again, until no rank adds a seed. The component is then the serial one:
+  // the ranks' neighbour graphs, joined at the ghosts, are the serial graph.
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  const std::size_t n = geometry.NumberOfSamples;
+  const int rounds = 8 + 4 * ranks.Size;
+  for (int round = 0; round < rounds; ++round)
+  {
+    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
+      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
+      this->Stage(InitializationStage));
+    const bool ok =
+      !flood.Aborted && this->FollowAcrossFaces(geometry, dataOffsets, settings, inSeed, phi);
+    if (!ranks.All(ok))
+    {
+      return false;
+    }
+    if (round == 0)
+    {
+      seedSamples = ranks.Sum(static_cast<double>(flood.SeedSamples));
+    }
+    if (!ranks.Distributed())
+    {
+      return true;
+    }
+    std::vector<double> reachedHere(n, 0.0), insideAtOwner(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      reachedHere[i] = !ranks.Owns(i) && phi[i] > 0.0 ? 1.0 : 0.0;
+      insideAtOwner[i] = phi[i] > 0.0 ? 1.0 : 0.0;
+    }
+    ranks.MaxToOwners(reachedHere);
+    ranks.RefreshGhosts(insideAtOwner);
+    double added = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const bool reached = ranks.Owns(i) ? reachedHere[i] > 0.0 : insideAtOwner[i] > 0.0;
+      if (reached && !inSeed[i] && !(phi[i] > 0.0) && dataOffsets[i] > 0.0)
+      {
+        inSeed[i] = 1;
+        added += 1.0;
+      }
+    }
+    if (ranks.Sum(added) == 0.0)
+    {
+      ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
+      return true;
+    }
+  }
+  if (this->ReportsForAll())
+  {
+    vtkWarningMacro("The flood was still crossing between ranks after "
+      << rounds << " rounds: the seeded component may be incomplete.");
+  }
+  ranks.RefreshGhosts(phi);
+  return true;
+}
+
 bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
   const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field)
 {
   this->UsedSPHField = false;
-  lsi::SPHFieldRequest request;
-  request.Model = this->Field;
-  request.Kernel = this->Kernel;
-  request.SupportPerSmoothingLength = this->SupportPerSmoothingLength;
-  request.SmoothingLengthArray = this->SmoothingLengthArray;
-  request.MassArray = this->MassArray;
-  request.DensityArray = this->DensityArray;
+  const lsi::SPHFieldRequest request = this->SPHRequest();
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
   lsi::SPHFieldArrays arrays;
@@ -596,29 +840,38 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   }
   // Placeholder smoothing lengths (some files carry a constant or stale column) do not describe
   // these particles: a support far below the neighbourhood radius leaves most of space empty.
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
   const double fit =
-    lsi::MedianSupportPerNeighborhoodRadius(geometry, *field, values, this->IsoValue);
+    lsi::MedianSupportPerNeighborhoodRadius(geometry, *field, values, this->IsoValue, ranks);
+  const bool reports = this->ReportsForAll();
+  const double summed = ranks.Sum(static_cast<double>(field->SummedDensities));
   if (fit < 0.5)
   {
     if (this->Field == AUTOMATIC_FIELD)
     {
-      vtkWarningMacro("The smoothing lengths do not fit these particles: at the surface the "
-                      "median kernel support is "
-        << fit << " times the median distance to the " << geometry.Stride - 1
-        << "th neighbour (real SPH supports hold 30 or more neighbours). Using the MLS fit of "
-           "the samples; set Field to SPH to use them anyway, or make them with Particle "
-           "Density.");
+      if (reports)
+      {
+        vtkWarningMacro("The smoothing lengths do not fit these particles: at the surface the "
+                        "median kernel support is "
+          << fit << " times the median distance to the " << geometry.Stride - 1
+          << "th neighbour (real SPH supports hold 30 or more neighbours). Using the MLS fit of "
+             "the samples; set Field to SPH to use them anyway, or make them with Particle "
+             "Density.");
+      }
       field.reset();
       return true;
     }
-    vtkWarningMacro("The smoothing lengths look too small for these particles: the median kernel "
-                    "support is "
-      << fit << " times the median distance to the " << geometry.Stride - 1
-      << "th neighbour. The SPH field is used, as Field asks, but it is spiky.");
+    if (reports)
+    {
+      vtkWarningMacro("The smoothing lengths look too small for these particles: the median "
+                      "kernel support is "
+        << fit << " times the median distance to the " << geometry.Stride - 1
+        << "th neighbour. The SPH field is used, as Field asks, but it is spiky.");
+    }
   }
-  if (field->SummedDensities > 0)
+  if (summed > 0 && reports)
   {
-    vtkWarningMacro(<< field->SummedDensities << " particles have a density that is not positive "
+    vtkWarningMacro(<< summed << " particles have a density that is not positive "
                     << "and finite in '" << arrays.Density->GetName()
                     << "': their volumes m / rho for the interpolated arrays use the density "
                        "summed from the masses instead.");
@@ -633,6 +886,7 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
 {
   const auto start = Clock::now();
   lsi::LevelSetEvolution evolution(geometry, dataSign, dataOffsets, phi);
+  evolution.SetCommunicator(*this->Internal->Ranks);
   const lsi::AbortCheck progress = this->Stage(EvolutionStage);
   const bool finished = evolution.Run(
     settings,
@@ -649,14 +903,14 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
     return false;
   }
   this->Converged = evolution.Converged();
-  if (!this->Converged)
+  if (!this->Converged && this->ReportsForAll())
   {
     vtkWarningMacro("The evolution stopped at MaximumNumberOfIterations ("
       << this->MaximumNumberOfIterations
       << ") before its stopping rule held: the front was still moving, so the surface may be "
          "wrong. Raise MaximumNumberOfIterations, or check TimeStep and Epsilon.");
   }
-  return !this->ProgressOrAbort(EvolutionStage[1]);
+  return this->Internal->Ranks->All(!this->ProgressOrAbort(EvolutionStage[1]));
 }
 
 bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
@@ -703,23 +957,6 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
     return false;
   }
   this->DataRefinementSeconds = SecondsSince(partStart);
-  this->KeepPeriodicCell(isopoints);
-  if (isopoints.Points.empty())
-  {
-    // Valid inputs, no surface: say why, rather than return an empty output silently.
-    const auto above = std::count_if(
-      dataOffsets.begin(), dataOffsets.end(), [](double offset) { return offset > 0.0; });
-    const auto inside =
-      std::count_if(evolvedPhi.begin(), evolvedPhi.end(), [](double phi) { return phi > 0.0; });
-    vtkWarningMacro("No isosurface was found: "
-      << above << " of " << dataOffsets.size() << " samples lie above IsoValue " << this->IsoValue
-      << ", " << inside
-      << " of them in the seeded region after the evolution. A component needs more samples "
-         "than one neighbourhood (NumberOfNeighbors + 1 = "
-      << geometry.Stride
-      << ") to be found: lower IsoValue, move or enlarge the seed, or use fewer "
-         "NumberOfNeighbors.");
-  }
   this->IsopointSeconds = SecondsSince(start);
   this->StencilSeconds = geometry.StencilSeconds;
   if (geometry.SingularSamples > 0)
@@ -730,6 +967,75 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
          "More NumberOfNeighbors may help.");
   }
   return !this->ProgressOrAbort(IsopointStage[1]);
+}
+
+void vtkLevelSetIsosurface::KeepOwnedIsopoints(
+  const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints)
+{
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  if (!ranks.Distributed())
+  {
+    return;
+  }
+  // Each piece of surface near a rank's boundary is found by both ranks: the rank that owns the
+  // nearest sample keeps it.
+  std::vector<char> kept(isopoints.Points.size() / 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+  {
+    std::uint32_t nearest = 0;
+    double d2 = 0.0;
+    kept[i] = geometry.Index->Nearest(&isopoints.Points[3 * i], 1, &nearest, &d2) == 1 &&
+        ranks.Owns(nearest)
+      ? 1
+      : 0;
+  }
+  lsi::IsopointSet owned;
+  lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), owned);
+  isopoints.Points.swap(owned.Points);
+  isopoints.Normals.swap(owned.Normals);
+}
+
+void vtkLevelSetIsosurface::WarnIfEmpty(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<double>& phi,
+  const lsi::IsopointSet& isopoints)
+{
+  // Valid inputs, no surface: say why, rather than return an empty output silently.
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  double counts[4] = { static_cast<double>(isopoints.Points.size() / 3), 0.0, 0.0, 0.0 };
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (ranks.Owns(i))
+    {
+      counts[1] += dataOffsets[i] > 0.0 ? 1.0 : 0.0;
+      counts[2] += phi[i] > 0.0 ? 1.0 : 0.0;
+      counts[3] += 1.0;
+    }
+  }
+  ranks.Sum(counts, 4);
+  this->NumberOfIsopoints = static_cast<vtkIdType>(counts[0]);
+  if (counts[0] == 0.0 && this->ReportsForAll())
+  {
+    vtkWarningMacro("No isosurface was found: "
+      << counts[1] << " of " << counts[3] << " samples lie above IsoValue " << this->IsoValue
+      << ", " << counts[2]
+      << " of them in the seeded region after the evolution. A component needs more samples "
+         "than one neighbourhood (NumberOfNeighbors + 1 = "
+      << geometry.Stride
+      << ") to be found: lower IsoValue, move or enlarge the seed, or use fewer "
+         "NumberOfNeighbors.");
+  }
+}
+
+lsi::SPHFieldRequest vtkLevelSetIsosurface::SPHRequest() const
+{
+  lsi::SPHFieldRequest request;
+  request.Model = this->Field;
+  request.Kernel = this->Kernel;
+  request.SupportPerSmoothingLength = this->SupportPerSmoothingLength;
+  request.SmoothingLengthArray = this->SmoothingLengthArray;
+  request.MassArray = this->MassArray;
+  request.DensityArray = this->DensityArray;
+  return request;
 }
 
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
@@ -746,7 +1052,6 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   {
     return false;
   }
-  this->NumberOfIsopoints = surface->GetNumberOfPoints();
   if (this->OutputType == SPLATS)
   {
     if (!lsi::MakeSplatPolygons(

@@ -50,6 +50,14 @@
  * Threads: loops run in vtkSMPTools with the STDThread backend on NumberOfThreads threads
  * (0: all cores), whatever the global backend is.
  *
+ * MPI (pvbatch, pvserver): with the particles spread over the ranks of Controller (by default
+ * the global controller), every rank runs the method on its own particles plus ghost copies of
+ * the other ranks' particles within a halo (LevelSetDistribution): the ghosts' level set is
+ * refreshed from its owners after every step, the flood crosses ranks, sums and the stopping
+ * rule are global, and each isopoint is made by the rank that owns its nearest particle. A poor
+ * partition (a file read by rank 0 alone, interleaved pieces) is first redistributed by space;
+ * inputs too small to spread are gathered and processed on rank 0. Tables are on rank 0.
+ *
  * @sa vtkSPHInterpolator vtkFlyingEdges3D vtkPCANormalEstimation
  */
 #ifndef vtkLevelSetIsosurface_h
@@ -65,6 +73,7 @@
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
+class vtkMultiProcessController;
 class vtkPoints;
 class vtkPointSet;
 class vtkTable;
@@ -74,7 +83,9 @@ struct EvolutionSettings;
 struct IsopointSet;
 struct Neighborhoods;
 struct RequestedParameters;
+class Distribution;
 class SPHField;
+struct SPHFieldRequest;
 struct SurfaceScale;
 }
 
@@ -415,6 +426,15 @@ public:
   vtkGetMacro(OutputSeconds, double);         // splat radii, interpolated arrays, polygons
   ///@}
 
+  ///@{
+  /**
+   * The MPI controller whose ranks hold the particles (by default the global controller). With
+   * more than one rank the filter runs distributed; null or one rank is a serial run.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkLevelSetIsosurface();
   ~vtkLevelSetIsosurface() override;
@@ -441,6 +461,7 @@ protected:
   int Initialization = FLOOD;
   bool DataRefinement = true;
   int NumberOfThreads = 0;
+  vtkMultiProcessController* Controller = nullptr;
   int OutputType = SPLATS;
   double SplatScale = 1.0;
   int SplatSides = 8;
@@ -475,6 +496,20 @@ private:
   bool Execute(vtkPointSet* input, vtkPolyData* surfaceOutput, vtkPolyData* particleOutput,
     vtkTable* convergence, vtkTable* enclosed);
   bool ValidateInput(vtkPointSet* input, std::vector<double>& values);
+  vtkSmartPointer<vtkPointSet> Distribute(
+    vtkPointSet* input, std::vector<double>& values, bool& idle);
+  vtkSmartPointer<vtkPointSet> WithGhosts(
+    vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values);
+  bool FloodAcrossRanks(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi,
+    double& seedSamples);
+  void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
+  void WarnIfEmpty(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    const std::vector<double>& phi, const lsi::IsopointSet& isopoints);
+  lsi::SPHFieldRequest SPHRequest() const;
+  void Bounds(vtkPointSet* input, double bounds[6]);
+  // Under MPI, messages about the whole run come from rank 0 only.
+  bool ReportsForAll() const;
   vtkSmartPointer<vtkPointSet> WithPeriodicImages(vtkPointSet* input, std::vector<double>& values);
   bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);

@@ -1,0 +1,574 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetDistribution.h"
+
+#include "LevelSetNeighborhoods.h"
+
+#include "vtkCommunicator.h"
+#include "vtkDistributedPointCloudFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkMPIController.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lsi
+{
+
+namespace
+{
+enum Tag
+{
+  GhostTag = 71001,
+  RefreshTag = 71002,
+  ToOwnersTag = 71003,
+  GatherTag = 71004
+};
+
+const char* const ValueArrayName = "vtkLevelSetIsosurfaceValue";
+
+// The points and point arrays of `ids` of `input` (all of them when ids is null), as a vertex-
+// free vtkPolyData, the form in which pieces travel between ranks.
+vtkSmartPointer<vtkPolyData> PointsOf(vtkPointSet* input, const std::vector<vtkIdType>* ids)
+{
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  const vtkIdType n =
+    ids ? static_cast<vtkIdType>(ids->size()) : (input ? input->GetNumberOfPoints() : 0);
+  vtkNew<vtkIdList> list;
+  list->SetNumberOfIds(n);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    list->SetId(k, ids ? (*ids)[k] : k);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    points->SetPoint(k, input->GetPoint(list->GetId(k)));
+  }
+  piece->SetPoints(points);
+  if (!input)
+  {
+    return piece;
+  }
+  vtkPointData* from = input->GetPointData();
+  for (int a = 0; a < from->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = from->GetAbstractArray(a);
+    if (!array || !array->GetName())
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> subset = vtk::TakeSmartPointer(array->NewInstance());
+    subset->SetName(array->GetName());
+    subset->SetNumberOfComponents(array->GetNumberOfComponents());
+    subset->SetNumberOfTuples(n);
+    array->GetTuples(list, subset);
+    piece->GetPointData()->AddArray(subset);
+  }
+  piece->GetFieldData()->ShallowCopy(input->GetFieldData());
+  return piece;
+}
+
+// `pieces` one after the other: the first piece's arrays, each filled from the later pieces'
+// array of the same name (zeros where a piece lacks it).
+vtkSmartPointer<vtkPolyData> Concatenated(const std::vector<vtkSmartPointer<vtkPolyData>>& pieces)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkIdType total = 0;
+  for (const auto& piece : pieces)
+  {
+    total += piece->GetNumberOfPoints();
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(total);
+  vtkIdType at = 0;
+  for (const auto& piece : pieces)
+  {
+    for (vtkIdType k = 0; k < piece->GetNumberOfPoints(); ++k)
+    {
+      points->SetPoint(at++, piece->GetPoint(k));
+    }
+  }
+  out->SetPoints(points);
+  vtkPointData* first = pieces.front()->GetPointData();
+  for (int a = 0; a < first->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* model = first->GetAbstractArray(a);
+    vtkSmartPointer<vtkAbstractArray> joined = vtk::TakeSmartPointer(model->NewInstance());
+    joined->SetName(model->GetName());
+    joined->SetNumberOfComponents(model->GetNumberOfComponents());
+    joined->SetNumberOfTuples(total);
+    if (auto* numbers = vtkDataArray::SafeDownCast(joined))
+    {
+      numbers->Fill(0.0);
+    }
+    at = 0;
+    for (const auto& piece : pieces)
+    {
+      vtkAbstractArray* part = piece->GetPointData()->GetAbstractArray(model->GetName());
+      const vtkIdType n = piece->GetNumberOfPoints();
+      if (part && part->GetNumberOfComponents() == model->GetNumberOfComponents() && n > 0)
+      {
+        joined->InsertTuples(at, n, 0, part);
+      }
+      at += n;
+    }
+    out->GetPointData()->AddArray(joined);
+  }
+  out->GetFieldData()->ShallowCopy(pieces.front()->GetFieldData());
+  return out;
+}
+
+double BoxDistance(const double* x, const double* box)
+{
+  double d2 = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double below = box[2 * d] - x[d], above = x[d] - box[2 * d + 1];
+    const double gap = std::max(0.0, std::max(below, above));
+    d2 += gap * gap;
+  }
+  return std::sqrt(d2);
+}
+} // namespace
+
+Distribution::Distribution(vtkMultiProcessController* controller)
+  : Controller(controller)
+{
+  if (controller)
+  {
+    this->Rank = controller->GetLocalProcessId();
+    this->Size = controller->GetNumberOfProcesses();
+  }
+}
+
+void Distribution::Sum(double* values, int count) const
+{
+  if (this->Size > 1)
+  {
+    std::vector<double> in(values, values + count);
+    this->Controller->AllReduce(in.data(), values, count, vtkCommunicator::SUM_OP);
+  }
+}
+
+void Distribution::Max(double* values, int count) const
+{
+  if (this->Size > 1)
+  {
+    std::vector<double> in(values, values + count);
+    this->Controller->AllReduce(in.data(), values, count, vtkCommunicator::MAX_OP);
+  }
+}
+
+std::vector<double> Distribution::AllNumbers(double local) const
+{
+  std::vector<double> all(static_cast<std::size_t>(this->Size), local);
+  if (this->Size > 1)
+  {
+    this->Controller->AllGather(&local, all.data(), 1);
+  }
+  return all;
+}
+
+void Distribution::GatherAll(std::vector<double>& values) const
+{
+  if (this->Size <= 1)
+  {
+    return;
+  }
+  std::vector<double> counts = this->AllNumbers(static_cast<double>(values.size()));
+  std::vector<vtkIdType> lengths(counts.size()), offsets(counts.size());
+  vtkIdType total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r)
+  {
+    lengths[r] = static_cast<vtkIdType>(counts[r]);
+    offsets[r] = total;
+    total += lengths[r];
+  }
+  std::vector<double> all(static_cast<std::size_t>(total) + 1);
+  std::vector<double> mine(values);
+  mine.push_back(0.0); // never a null buffer
+  this->Controller->AllGatherV(
+    mine.data(), all.data(), static_cast<vtkIdType>(values.size()), lengths.data(), offsets.data());
+  all.resize(static_cast<std::size_t>(total));
+  values.swap(all);
+}
+
+std::string Distribution::FirstProblem(const std::string& local) const
+{
+  if (this->Size <= 1)
+  {
+    return local;
+  }
+  const std::vector<double> lengths = this->AllNumbers(static_cast<double>(local.size()));
+  for (int r = 0; r < this->Size; ++r)
+  {
+    const auto length = static_cast<vtkIdType>(lengths[r]);
+    if (length == 0)
+    {
+      continue;
+    }
+    std::string message(static_cast<std::size_t>(length), ' ');
+    if (r == this->Rank)
+    {
+      message = local;
+    }
+    this->Controller->Broadcast(&message[0], length, r);
+    return message;
+  }
+  return std::string();
+}
+
+template <typename Exchange>
+void Distribution::WithEachPartner(const std::vector<char>& partners, Exchange&& exchange) const
+{
+  for (int other = 0; other < this->Size; ++other)
+  {
+    if (other != this->Rank && partners[other])
+    {
+      exchange(other, this->Rank < other);
+    }
+  }
+}
+
+vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::string& report)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  double bounds[6] = { 1, -1, 1, -1, 1, -1 };
+  if (n > 0)
+  {
+    input->GetBounds(bounds);
+  }
+  const std::vector<double> counts = this->AllNumbers(static_cast<double>(n));
+  std::vector<double> boxes(6 * static_cast<std::size_t>(this->Size));
+  this->Controller->AllGather(bounds, boxes.data(), 6);
+  // The measure: the largest piece against the mean, and the sum of the pieces' box volumes
+  // against the whole box's (1 for a partition by space, up to the number of ranks for
+  // interleaved pieces).
+  double total = 0.0, largest = 0.0, volumes = 0.0;
+  double whole[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+  int lowestWithPoints = -1;
+  for (int r = 0; r < this->Size; ++r)
+  {
+    total += counts[r];
+    largest = std::max(largest, counts[r]);
+    if (counts[r] > 0)
+    {
+      lowestWithPoints = lowestWithPoints < 0 ? r : lowestWithPoints;
+      for (int d = 0; d < 3; ++d)
+      {
+        whole[2 * d] = std::min(whole[2 * d], boxes[6 * r + 2 * d]);
+        whole[2 * d + 1] = std::max(whole[2 * d + 1], boxes[6 * r + 2 * d + 1]);
+      }
+    }
+  }
+  auto volume = [&](const double* box) {
+    double v = 1.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      // Padded by a millionth of the whole box, so that flat pieces still compare.
+      const double pad = 1e-6 * (whole[2 * d + 1] - whole[2 * d]) + 1e-300;
+      v *= box[2 * d + 1] - box[2 * d] + pad;
+    }
+    return v;
+  };
+  for (int r = 0; r < this->Size; ++r)
+  {
+    volumes += counts[r] > 0 ? volume(&boxes[6 * r]) : 0.0;
+  }
+  const double imbalance = largest / (total / this->Size);
+  const double overlap = volumes / volume(whole);
+
+  // The readers' markers (which arrays are density, mass, smoothing length; the kernel; the
+  // periodic box) travel as field data: every rank takes those of the lowest rank with points.
+  vtkNew<vtkPolyData> markers;
+  if (this->Rank == lowestWithPoints)
+  {
+    markers->GetFieldData()->ShallowCopy(input->GetFieldData());
+  }
+  this->Controller->Broadcast(markers, std::max(0, lowestWithPoints));
+
+  vtkSmartPointer<vtkPointSet> piece = PointsOf(input, nullptr);
+  vtkMPIController* mpi = vtkMPIController::SafeDownCast(this->Controller);
+  if ((imbalance > 1.5 || overlap > 1.5) && mpi)
+  {
+    vtkNew<vtkDistributedPointCloudFilter> distribute;
+    distribute->SetController(mpi);
+    distribute->SetInputData(piece);
+    distribute->Update();
+    piece = PointsOf(distribute->GetOutput(), nullptr);
+    std::ostringstream why;
+    why << "redistributed by space: the largest piece held " << imbalance
+        << " times the mean, the pieces' boxes " << overlap << " times the whole volume";
+    report = why.str();
+  }
+  piece->GetFieldData()->ShallowCopy(markers->GetFieldData());
+  return piece;
+}
+
+vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
+{
+  vtkSmartPointer<vtkPolyData> mine = PointsOf(input, nullptr);
+  if (this->Rank != 0)
+  {
+    this->Controller->Send(mine, 0, GatherTag);
+    return PointsOf(nullptr, nullptr);
+  }
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces = { mine };
+  for (int r = 1; r < this->Size; ++r)
+  {
+    auto piece = vtkSmartPointer<vtkPolyData>::New();
+    this->Controller->Receive(piece, r, GatherTag);
+    pieces.push_back(piece);
+  }
+  // Field data (the markers) from the first piece with points.
+  for (const auto& piece : pieces)
+  {
+    if (piece->GetNumberOfPoints() > 0)
+    {
+      std::swap(pieces.front(), pieces[&piece - &pieces.front()]);
+      break;
+    }
+  }
+  return Concatenated(pieces);
+}
+
+vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned,
+  const std::vector<double>& reach, const std::vector<double>& support, std::vector<double>& values)
+{
+  const vtkIdType n = owned->GetNumberOfPoints();
+  this->OwnedCount = n;
+  double* box = this->ReachBox;
+  for (int d = 0; d < 3; ++d)
+  {
+    box[2 * d] = HUGE_VAL;
+    box[2 * d + 1] = -HUGE_VAL;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = owned->GetPoint(i);
+    for (int d = 0; d < 3; ++d)
+    {
+      box[2 * d] = std::min(box[2 * d], x[d] - reach[i]);
+      box[2 * d + 1] = std::max(box[2 * d + 1], x[d] + reach[i]);
+    }
+  }
+  const std::size_t size = static_cast<std::size_t>(this->Size);
+  std::vector<double> boxes(6 * size);
+  this->Controller->AllGather(box, boxes.data(), 6);
+
+  // What goes where: every owned sample in another rank's box, or whose support reaches it.
+  this->SentIds.assign(size, {});
+  this->ReceivedIds.assign(size, {});
+  for (vtkIdType j = 0; j < n; ++j)
+  {
+    const double* x = owned->GetPoint(j);
+    const double within = support.empty() ? 0.0 : support[j];
+    for (int other = 0; other < this->Size; ++other)
+    {
+      if (other != this->Rank && BoxDistance(x, &boxes[6 * other]) <= within)
+      {
+        this->SentIds[other].push_back(j);
+      }
+    }
+  }
+  std::vector<double> sentCounts(size), allCounts(size * size);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    sentCounts[r] = static_cast<double>(this->SentIds[r].size());
+  }
+  this->Controller->AllGather(sentCounts.data(), allCounts.data(), this->Size);
+  this->Partners.assign(size, 0);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    this->Partners[r] = (sentCounts[r] > 0 || allCounts[r * size + this->Rank] > 0) ? 1 : 0;
+  }
+
+  // The owned samples carry f along, as an array, to their ghost copies.
+  vtkSmartPointer<vtkPolyData> mine = PointsOf(owned, nullptr);
+  vtkNew<vtkDoubleArray> f;
+  f->SetName(ValueArrayName);
+  f->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    f->SetValue(i, values[i]);
+  }
+  mine->GetPointData()->AddArray(f);
+  std::vector<vtkSmartPointer<vtkPolyData>> received(size);
+  this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
+    auto send = [&]() {
+      if (!this->SentIds[other].empty())
+      {
+        vtkSmartPointer<vtkPolyData> piece = PointsOf(mine, &this->SentIds[other]);
+        this->Controller->Send(piece, other, GhostTag);
+      }
+    };
+    auto receive = [&]() {
+      if (allCounts[other * size + this->Rank] > 0)
+      {
+        received[other] = vtkSmartPointer<vtkPolyData>::New();
+        this->Controller->Receive(received[other], other, GhostTag);
+      }
+    };
+    sendFirst ? (send(), receive()) : (receive(), send());
+  });
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces = { mine };
+  vtkIdType next = n;
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    if (received[r])
+    {
+      pieces.push_back(received[r]);
+      const vtkIdType count = received[r]->GetNumberOfPoints();
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        this->ReceivedIds[r].push_back(next + k);
+      }
+      next += count;
+    }
+  }
+  this->GhostCount = next - n;
+  vtkSmartPointer<vtkPolyData> all = Concatenated(pieces);
+  vtkDataArray* allValues = all->GetPointData()->GetArray(ValueArrayName);
+  values.resize(static_cast<std::size_t>(next));
+  for (vtkIdType i = 0; i < next; ++i)
+  {
+    values[i] = allValues->GetComponent(i, 0);
+  }
+  all->GetPointData()->RemoveArray(ValueArrayName);
+  return all;
+}
+
+void Distribution::Attach(const Neighborhoods& geometry)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  std::vector<std::uint32_t> storageOf(n);
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    storageOf[geometry.Order[s]] = static_cast<std::uint32_t>(s);
+  }
+  this->OwnedSamples.assign(n, 0);
+  geometry.Truncated.assign(n, 0);
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    if (static_cast<vtkIdType>(geometry.Order[s]) < this->OwnedCount)
+    {
+      this->OwnedSamples[s] = 1;
+      continue;
+    }
+    // A ghost's neighbourhood is whole only if its ball lies in the reach box, inside which
+    // this rank holds every sample.
+    const double* x = geometry.Position(s);
+    const double r = geometry.Radius[s];
+    for (int d = 0; d < 3; ++d)
+    {
+      if (x[d] - r < this->ReachBox[2 * d] || x[d] + r > this->ReachBox[2 * d + 1])
+      {
+        geometry.Truncated[s] = 1;
+      }
+    }
+  }
+  auto inStorageOrder = [&](const std::vector<std::vector<vtkIdType>>& ids) {
+    std::vector<std::vector<std::uint32_t>> samples(ids.size());
+    for (std::size_t r = 0; r < ids.size(); ++r)
+    {
+      for (vtkIdType id : ids[r])
+      {
+        samples[r].push_back(storageOf[id]);
+      }
+    }
+    return samples;
+  };
+  this->SentSamples = inStorageOrder(this->SentIds);
+  this->ReceivedSamples = inStorageOrder(this->ReceivedIds);
+}
+
+void Distribution::RefreshGhosts(std::vector<double>& perSample) const
+{
+  if (this->Size <= 1)
+  {
+    return;
+  }
+  std::vector<double> buffer;
+  this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
+    auto send = [&]() {
+      const std::vector<std::uint32_t>& samples = this->SentSamples[other];
+      if (!samples.empty())
+      {
+        buffer.resize(samples.size());
+        for (std::size_t k = 0; k < samples.size(); ++k)
+        {
+          buffer[k] = perSample[samples[k]];
+        }
+        this->Controller->Send(
+          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, RefreshTag);
+      }
+    };
+    auto receive = [&]() {
+      const std::vector<std::uint32_t>& samples = this->ReceivedSamples[other];
+      if (!samples.empty())
+      {
+        buffer.resize(samples.size());
+        this->Controller->Receive(
+          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, RefreshTag);
+        for (std::size_t k = 0; k < samples.size(); ++k)
+        {
+          perSample[samples[k]] = buffer[k];
+        }
+      }
+    };
+    sendFirst ? (send(), receive()) : (receive(), send());
+  });
+}
+
+void Distribution::MaxToOwners(std::vector<double>& perSample) const
+{
+  if (this->Size <= 1)
+  {
+    return;
+  }
+  std::vector<double> buffer;
+  this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
+    auto send = [&]() { // from the ghosts here to their owner
+      const std::vector<std::uint32_t>& samples = this->ReceivedSamples[other];
+      if (!samples.empty())
+      {
+        buffer.resize(samples.size());
+        for (std::size_t k = 0; k < samples.size(); ++k)
+        {
+          buffer[k] = perSample[samples[k]];
+        }
+        this->Controller->Send(
+          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, ToOwnersTag);
+      }
+    };
+    auto receive = [&]() { // onto the owned samples whose copies are there
+      const std::vector<std::uint32_t>& samples = this->SentSamples[other];
+      if (!samples.empty())
+      {
+        buffer.resize(samples.size());
+        this->Controller->Receive(
+          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, ToOwnersTag);
+        for (std::size_t k = 0; k < samples.size(); ++k)
+        {
+          perSample[samples[k]] = std::max(perSample[samples[k]], buffer[k]);
+        }
+      }
+    };
+    sendFirst ? (send(), receive()) : (receive(), send());
+  });
+}
+
+} // namespace lsi

@@ -1,0 +1,93 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The particles spread over MPI ranks (pvbatch, pvserver): the Communicator of
+// LevelSetCommunicator.h on a vtkMultiProcessController, and the two steps that prepare a rank's
+// samples before the method runs on them:
+// 1. Balanced: when the partition the pipeline gave is poor (a rank holds far more than its
+//    share, or the ranks' bounding boxes overlap, as in a file read in interleaved pieces or
+//    held by rank 0 alone), the particles are redistributed by space with
+//    vtkDistributedPointCloudFilter.
+// 2. WithGhosts: every rank receives copies of the other ranks' samples within a halo of its
+//    own. Each owned sample asks for a reach (a multiple of its neighbourhood radius, set by the
+//    filter); a sample is sent where its own kernel support or position falls in another
+//    rank's reach box. The neighbourhoods of owned samples are then exactly those of a serial
+//    run; ghosts whose neighbourhood the box cuts are marked (Neighborhoods::Truncated).
+#ifndef LevelSetDistribution_h
+#define LevelSetDistribution_h
+
+#include "LevelSetCommunicator.h"
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkMultiProcessController;
+class vtkPointSet;
+class vtkPolyData;
+
+namespace lsi
+{
+
+struct Neighborhoods;
+
+class Distribution : public Communicator
+{
+public:
+  /// A null controller, or one of a single process, is a serial run.
+  explicit Distribution(vtkMultiProcessController* controller);
+
+  void Sum(double* values, int count) const override;
+  void Max(double* values, int count) const override;
+  void GatherAll(std::vector<double>& values) const override;
+  void RefreshGhosts(std::vector<double>& perSample) const override;
+  void MaxToOwners(std::vector<double>& perSample) const override;
+  using Communicator::Max;
+  using Communicator::Sum;
+
+  /// The lowest rank's non-empty message, on every rank ("" when every rank passed "").
+  std::string FirstProblem(const std::string& local) const;
+
+  /// Every rank's number, in rank order, on every rank.
+  std::vector<double> AllNumbers(double local) const;
+
+  /// The input, or its particles redistributed by space when the partition is poor (`report`
+  /// says why). Field data (the readers' markers) come from the lowest rank with particles.
+  vtkSmartPointer<vtkPointSet> Balanced(vtkPointSet* input, std::string& report);
+
+  /// Every rank's particles on rank 0 (others: empty), for inputs too small to spread.
+  vtkSmartPointer<vtkPointSet> GatheredOnFirst(vtkPointSet* input);
+
+  /// The owned samples followed by ghost copies of other ranks' samples: those inside this
+  /// rank's reach box (the union of the boxes x_i +- reach_i over owned samples), or whose
+  /// `support` (per sample, may be empty) reaches into it. `values` (f per sample) is extended.
+  vtkSmartPointer<vtkPolyData> WithGhosts(vtkPointSet* owned, const std::vector<double>& reach,
+    const std::vector<double>& support, std::vector<double>& values);
+
+  /// After the neighbour search on WithGhosts' output: the owned samples and the ghosts'
+  /// owners in storage order; marks the ghosts whose neighbourhood the reach box cuts.
+  void Attach(const Neighborhoods& geometry);
+
+  vtkIdType OwnedCount = 0; // samples before the ghosts (input order)
+  vtkIdType GhostCount = 0;
+
+private:
+  // Calls exchange(other) for every other rank with which this rank trades, in an order in
+  // which blocking sends cannot deadlock (the lower rank of each pair sends first).
+  template <typename Exchange>
+  void WithEachPartner(const std::vector<char>& partners, Exchange&& exchange) const;
+
+  vtkMultiProcessController* Controller = nullptr;
+  double ReachBox[6] = { 0, 0, 0, 0, 0, 0 };
+  // Per rank: the input ids of the owned samples sent to it; the input ids of its ghosts here.
+  std::vector<std::vector<vtkIdType>> SentIds, ReceivedIds;
+  // The same in storage order (after Attach).
+  std::vector<std::vector<std::uint32_t>> SentSamples, ReceivedSamples;
+  std::vector<char> Partners; // ranks with which ghosts are traded
+};
+
+} // namespace lsi
+
+#endif

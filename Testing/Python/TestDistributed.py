@@ -1,0 +1,124 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The same surface on any number of MPI ranks.
+
+  pvbatch TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz --reference
+      runs serially and writes the reference (isopoints, convergence table, enclosed table);
+  mpiexec -n N pvbatch TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz [PARTITION]
+      runs on N ranks and compares with the reference on rank 0.
+
+CASE: one-component, multi-component or adaptive-noisy (files of LevelSetGenerateData).
+SEED: inside (the seeds inside one rank's half) or cut (a seed across the middle, where the
+ranks' parts meet). PARTITION: single-piece (the .vtp as read: rank 0 holds every particle,
+the default) or distribute-points (ParaView's Distribute Points first).
+Checks: every serial isopoint has a distributed one within half a spacing and the other way
+round, counts within 2%, the same convergence table (iterations, band sizes, first sign
+changes), the same enclosed table (rows, particles; volumes within 0.5%)."""
+import sys
+import time
+
+import numpy as np
+from paraview import servermanager
+from paraview.simple import LoadPlugin, XMLPolyDataReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+plugin, case, path, seed, reference = sys.argv[1:6]
+options = sys.argv[6:]
+LoadPlugin(plugin, ns=globals())
+ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+# Isovalue and seeds of each case (Data/Synthetic/SyntheticCases.h); "inside" seeds lie in
+# x < 64, one rank's half whenever the ranks split the box in x.
+CASES = {
+    "one-component": (0.0, {"inside": [52, 64, 60, 6], "cut": [64, 64, 64, 12]}, []),
+    "multi-component": (0.5, {"inside": [44, 64, 64, 14], "cut": [44, 64, 64, 14]},
+                        {"inside": [], "cut": [70, 64, 64, 14]}),
+    "adaptive-noisy": (0.000839224, {"inside": [56, 64, 64, 4], "cut": [64, 64, 64, 8]}, []),
+}
+iso, seeds, additional = CASES[case]
+main = seeds[seed]
+more = additional[seed] if isinstance(additional, dict) else additional
+
+source = XMLPolyDataReader(FileName=[path])
+if "distribute-points" in options:
+    from paraview.simple import DistributePoints
+    source = DistributePoints(Input=source)
+source.UpdatePipeline()
+surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "f"], IsoValue=iso,
+                             SeedCenter=main[:3], SeedRadius=main[3], AdditionalSeeds=more,
+                             OutputType="Isopoints")
+start = time.time()
+surface.UpdatePipeline()
+surface.UpdatePropertyInformation()
+seconds = time.time() - start
+points = servermanager.Fetch(surface, idx=0)
+table = servermanager.Fetch(surface, idx=2)
+enclosed = servermanager.Fetch(surface, idx=3)
+
+
+def column(t, name):
+    return vtk_to_numpy(t.GetColumnByName(name)).astype(float)
+
+
+result = {
+    "points": vtk_to_numpy(points.GetPoints().GetData()) if points.GetNumberOfPoints() else
+    np.zeros((0, 3)),
+    "band": column(table, "BandSize"),
+    "mismatch": column(table, "SignMismatch"),
+    "particles": column(enclosed, "Particles"),
+    "volume": column(enclosed, "Volume"),
+    "spacing": np.array([surface.GetProperty("MeanSampleSpacing").GetElement(0)]),
+}
+print("%s, seed %s, %d rank(s) %s: %d isopoints, %d iterations, %.2f s"
+      % (case, seed, ranks, " ".join(options), len(result["points"]), len(result["band"]), seconds))
+if "--reference" in options:
+    np.savez(reference, **result)
+    sys.exit(0)
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok      " if ok else "FAILED  ") + what)
+    if not ok:
+        failures.append(what)
+
+
+serial = np.load(reference)
+from scipy.spatial import cKDTree  # noqa: E402
+
+spacing = float(serial["spacing"][0])
+mine, theirs = result["points"], serial["points"]
+check(abs(len(mine) - len(theirs)) <= 0.02 * len(theirs),
+      "isopoint counts within 2%%: %d distributed, %d serial" % (len(mine), len(theirs)))
+if len(mine) and len(theirs):
+    to_mine = cKDTree(mine).query(theirs)[0] / spacing
+    to_theirs = cKDTree(theirs).query(mine)[0] / spacing
+    print("distances in spacings: serial->distributed max %.3g (99.9%% %.3g), "
+          "distributed->serial max %.3g (99.9%% %.3g)"
+          % (to_mine.max(), np.percentile(to_mine, 99.9), to_theirs.max(),
+             np.percentile(to_theirs, 99.9)))
+    check(to_mine.max() <= 0.5, "every serial isopoint has a distributed one within 0.5 spacing")
+    check(to_theirs.max() <= 0.5, "every distributed isopoint has a serial one within 0.5 spacing")
+check(len(result["band"]) == len(serial["band"]),
+      "the same number of iterations: %d, serial %d" % (len(result["band"]), len(serial["band"])))
+if len(result["band"]) == len(serial["band"]):
+    band_difference = np.abs(result["band"] - serial["band"]).max()
+    mismatch_difference = np.abs(result["mismatch"] - serial["mismatch"]).max()
+    print("convergence table: band sizes differ by at most %d, SignMismatch by %.3g"
+          % (band_difference, mismatch_difference))
+    check(band_difference <= 0.001 * serial["band"].max(), "the same band sizes (within 0.1%)")
+    check(mismatch_difference <= 1e-4, "the same SignMismatch (within 1e-4)")
+check(len(result["volume"]) == len(serial["volume"]),
+      "the same enclosed rows: %d, serial %d" % (len(result["volume"]), len(serial["volume"])))
+if len(result["volume"]) == len(serial["volume"]):
+    relative = np.abs(result["volume"] / serial["volume"] - 1.0).max()
+    print("enclosed volumes: %s, serial %s (largest relative difference %.3g)"
+          % (result["volume"], serial["volume"], relative))
+    check(relative <= 0.005, "the same enclosed volumes (within 0.5%)")
+    check(np.abs(result["particles"] - serial["particles"]).max()
+          <= 0.002 * serial["particles"].max(), "the same enclosed particle counts (within 0.2%)")
+if failures:
+    print("FAILED: %d check(s)" % len(failures))
+    sys.exit(1)
+print("all checks passed")
