@@ -18,6 +18,7 @@
 #include "vtkPolyData.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -131,6 +132,35 @@ vtkSmartPointer<vtkPolyData> Concatenated(const std::vector<vtkSmartPointer<vtkP
   return out;
 }
 
+// Adds the time of a scope (communication, and the waiting for other ranks in it) to a total;
+// nested scopes count once.
+class CommunicationTimer
+{
+public:
+  explicit CommunicationTimer(double& total)
+    : Total(total)
+    , Outer(Depth++ == 0)
+    , Start(std::chrono::steady_clock::now())
+  {
+  }
+  ~CommunicationTimer()
+  {
+    --Depth;
+    if (this->Outer)
+    {
+      this->Total +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count();
+    }
+  }
+
+private:
+  static thread_local int Depth;
+  double& Total;
+  bool Outer;
+  std::chrono::steady_clock::time_point Start;
+};
+thread_local int CommunicationTimer::Depth = 0;
+
 double BoxDistance(const double* x, const double* box)
 {
   double d2 = 0.0;
@@ -156,6 +186,7 @@ Distribution::Distribution(vtkMultiProcessController* controller)
 
 void Distribution::Sum(double* values, int count) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size > 1)
   {
     std::vector<double> in(values, values + count);
@@ -165,6 +196,7 @@ void Distribution::Sum(double* values, int count) const
 
 void Distribution::Max(double* values, int count) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size > 1)
   {
     std::vector<double> in(values, values + count);
@@ -174,6 +206,7 @@ void Distribution::Max(double* values, int count) const
 
 std::vector<double> Distribution::AllNumbers(double local) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   std::vector<double> all(static_cast<std::size_t>(this->Size), local);
   if (this->Size > 1)
   {
@@ -184,6 +217,7 @@ std::vector<double> Distribution::AllNumbers(double local) const
 
 void Distribution::GatherAll(std::vector<double>& values) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size <= 1)
   {
     return;
@@ -245,6 +279,7 @@ void Distribution::WithEachPartner(const std::vector<char>& partners, Exchange&&
 
 vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::string& report)
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   const vtkIdType n = input->GetNumberOfPoints();
   double bounds[6] = { 1, -1, 1, -1, 1, -1 };
   if (n > 0)
@@ -320,6 +355,7 @@ vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::str
 
 vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   vtkSmartPointer<vtkPolyData> mine = PointsOf(input, nullptr);
   if (this->Rank != 0)
   {
@@ -348,6 +384,7 @@ vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
 vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned,
   const std::vector<double>& reach, const std::vector<double>& support, std::vector<double>& values)
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   const vtkIdType n = owned->GetNumberOfPoints();
   this->OwnedCount = n;
   double* box = this->ReachBox;
@@ -497,6 +534,7 @@ void Distribution::Attach(const Neighborhoods& geometry)
 
 void Distribution::RefreshGhosts(std::vector<double>& perSample) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size <= 1)
   {
     return;
@@ -535,6 +573,7 @@ void Distribution::RefreshGhosts(std::vector<double>& perSample) const
 
 void Distribution::MaxToOwners(std::vector<double>& perSample) const
 {
+  const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size <= 1)
   {
     return;

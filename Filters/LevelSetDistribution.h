@@ -72,6 +72,8 @@ public:
 
   vtkIdType OwnedCount = 0; // samples before the ghosts (input order)
   vtkIdType GhostCount = 0;
+  // Seconds in communication (the waiting for slower ranks included), this rank.
+  mutable double CommunicationSeconds = 0.0;
 
 private:
   // Calls exchange(other) for every other rank with which this rank trades, in an order in

@@ -55,9 +55,11 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
   std::vector<char> large(n, 0); // outside samples known to belong to a large pocket
   std::vector<std::uint32_t> pocket;
   std::vector<char> visited(n, 0);
+  // A ghost whose neighbour list is cut short (MPI, Neighborhoods::Truncated) cannot tell how far
+  // its pocket goes: it counts as part of a large pocket.
   for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
   {
-    if (!inside[i])
+    if (!inside[i] || geometry.IsTruncated(i))
     {
       continue;
     }
@@ -65,7 +67,7 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
     for (int a = 1; a < stride; ++a)
     {
       const std::uint32_t start = around[a];
-      if (inside[start] || large[start] || visited[start])
+      if (inside[start] || large[start] || visited[start] || geometry.IsTruncated(start))
       {
         continue;
       }
@@ -76,7 +78,7 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
         {
           return Visit::Skip;
         }
-        if (large[j] || pocket.size() >= bubbleSize)
+        if (large[j] || pocket.size() >= bubbleSize || geometry.IsTruncated(j))
         {
           return Visit::Stop;
         }
@@ -116,6 +118,10 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
   {
+    if (geometry.IsTruncated(i)) // its list may pair it with a stand-in: no true crossing
+    {
+      continue;
+    }
     const Eigen::Vector3d xi(geometry.Position(i));
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < stride; ++m)
@@ -151,7 +157,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
     const Entry top = heap.top();
     heap.pop();
     const std::uint32_t i = top.second;
-    if (top.first > distance[i] || top.first > halfWidth)
+    if (top.first > distance[i] || top.first > halfWidth || geometry.IsTruncated(i))
     {
       continue;
     }

@@ -239,7 +239,7 @@ std::vector<double> WithoutSpuriousPockets(
     // The same-sign region of `start`, as long as it only contains disagreeing samples.
     region.assign(1, static_cast<std::uint32_t>(start));
     state[start] = 1;
-    bool pocket = true;
+    bool pocket = !geometry.IsTruncated(start); // a cut list cannot prove a pocket closed
     BreadthFirst(geometry, region, [&](std::uint32_t j) {
       if (positive(j) != positive(start) || state[j] == 1)
       {
@@ -253,6 +253,7 @@ std::vector<double> WithoutSpuriousPockets(
         return Visit::Skip;
       }
       state[j] = 1;
+      pocket = pocket && !geometry.IsTruncated(j);
       return Visit::Enqueue;
     });
     for (std::uint32_t i : region)

@@ -89,6 +89,7 @@ struct Neighborhoods
   mutable std::vector<char> Truncated;
 
   const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }
+  bool IsTruncated(std::size_t i) const { return !this->Truncated.empty() && this->Truncated[i]; }
   /// Computes the stencils that `samples` (count indices, no repeats) still lack, in parallel.
   /// Call from the main thread between parallel loops.
   void EnsureStencils(const std::size_t* samples, std::size_t count) const;
@@ -125,7 +126,7 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
     {
       return false;
     }
-    if (!geometry.Truncated.empty() && geometry.Truncated[queue[head]])
+    if (geometry.IsTruncated(queue[head]))
     {
       continue;
     }

@@ -190,13 +190,19 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 {
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
+  this->GhostFraction = 0.0;
   lsi::Distribution ranks(this->Controller);
   this->Internal->Ranks = &ranks;
   struct Forget // the steps below must not keep a pointer to this execution's ranks
   {
-    Internals& In;
-    ~Forget() { In.Ranks = nullptr; }
-  } forget{ *this->Internal };
+    vtkLevelSetIsosurface* Filter;
+    lsi::Distribution& Ranks;
+    ~Forget()
+    {
+      Filter->Internal->Ranks = nullptr;
+      Filter->CommunicationSeconds = Ranks.CommunicationSeconds;
+    }
+  } forget{ this, ranks };
   std::vector<double> values; // f, in input order
   if (!this->ValidateInput(input, values))
   {
@@ -241,6 +247,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
       return false;
     }
     ranks.Attach(*geometry);
+    double counts[2] = { static_cast<double>(ranks.GhostCount),
+      static_cast<double>(original->GetNumberOfPoints()) };
+    ranks.Sum(counts, 2);
+    this->GhostFraction = counts[0] / counts[1];
   }
   input = work; // from here on: the distinct particles, their ghost images and MPI ghosts
   std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples

@@ -410,6 +410,10 @@ public:
   vtkGetMacro(Converged, bool);
   vtkGetMacro(UsedSPHField, bool); // whether the last run used the SPH field (see Field)
   vtkGetMacro(MeanSampleSpacing, double);
+  /** Under MPI: this rank's seconds in communication (waiting for slower ranks included), and
+   * the ghost particles over all ranks as a fraction of the particles. */
+  vtkGetMacro(CommunicationSeconds, double);
+  vtkGetMacro(GhostFraction, double);
   vtkGetMacro(EffectiveEpsilon, double);
   vtkGetMacro(EffectiveCurvatureEpsilon, double);
   vtkGetMacro(EffectiveTimeStep, double);
@@ -480,6 +484,7 @@ protected:
   int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0;
   vtkIdType NumberOfIsopoints = 0;
   bool Converged = false, UsedSPHField = false;
+  double CommunicationSeconds = 0.0, GhostFraction = 0.0;
   double MeanSampleSpacing = 0.0, EffectiveEpsilon = 0.0, EffectiveCurvatureEpsilon = 0.0,
          EffectiveTimeStep = 0.0;
   double NeighborSearchSeconds = 0.0, SpatialSortSeconds = 0.0, NearestNeighborSeconds = 0.0,

@@ -5,9 +5,13 @@
   pvbatch TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz --reference
       runs serially and writes the reference (isopoints, convergence table, enclosed table);
   mpiexec -n N pvbatch TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz [PARTITION]
-      runs on N ranks and compares with the reference on rank 0.
+      runs on N ranks and compares with the reference on rank 0;
+  pvpython TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz connect=PORT
+      does the same through a pvserver (mpiexec -n N pvserver --server-port=PORT).
 
-CASE: one-component, multi-component or adaptive-noisy (files of LevelSetGenerateData).
+CASE: one-component, multi-component or adaptive-noisy (files of LevelSetGenerateData), or
+swift-vz: the SWIFT Roberts flow (Data/SWIFT), the SPH interpolant of the velocity's z, 0.7, in
+its periodic box, every component (tubes through the faces).
 SEED: inside (the seeds inside one rank's half) or cut (a seed across the middle, where the
 ranks' parts meet). PARTITION: single-piece (the .vtp as read: rank 0 holds every particle,
 the default) or distribute-points (ParaView's Distribute Points first).
@@ -24,8 +28,15 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 plugin, case, path, seed, reference = sys.argv[1:6]
 options = sys.argv[6:]
-LoadPlugin(plugin, ns=globals())
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+port = [int(o.split("=")[1]) for o in options if o.startswith("connect=")]
+if port:
+    from paraview.simple import Connect
+    Connect("localhost", port[0])
+    LoadPlugin(plugin, remote=True, ns=globals())  # the server's ranks and the proxies
+else:
+    LoadPlugin(plugin, ns=globals())
+ranks = (servermanager.ActiveConnection.GetNumberOfDataPartitions() if port else
+         servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions())
 
 # Isovalue and seeds of each case (Data/Synthetic/SyntheticCases.h); "inside" seeds lie in
 # x < 64, one rank's half whenever the ranks split the box in x.
@@ -34,19 +45,27 @@ CASES = {
     "multi-component": (0.5, {"inside": [44, 64, 64, 14], "cut": [44, 64, 64, 14]},
                         {"inside": [], "cut": [70, 64, 64, 14]}),
     "adaptive-noisy": (0.000839224, {"inside": [56, 64, 64, 4], "cut": [64, 64, 64, 8]}, []),
+    "swift-vz": (0.7, {"inside": [1.5, 3.0, 3.0, 1.0], "cut": [0, 0, 0, 0]}, []),
 }
 iso, seeds, additional = CASES[case]
 main = seeds[seed]
 more = additional[seed] if isinstance(additional, dict) else additional
 
-source = XMLPolyDataReader(FileName=[path])
+if case == "swift-vz":
+    from paraview.simple import Calculator, OpenDataFile
+    reader = OpenDataFile(path)
+    reader.UpdatePipelineInformation()
+    source = Calculator(Input=reader, ResultArrayName="f", Function="Velocities_Z")
+else:
+    source = XMLPolyDataReader(FileName=[path])
 if "distribute-points" in options:
     from paraview.simple import DistributePoints
     source = DistributePoints(Input=source)
 source.UpdatePipeline()
 surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "f"], IsoValue=iso,
                              SeedCenter=main[:3], SeedRadius=main[3], AdditionalSeeds=more,
-                             OutputType="Isopoints")
+                             OutputType="Isopoints",
+                             Initialization=0 if "seed-spheres" in options else 1)
 start = time.time()
 surface.UpdatePipeline()
 surface.UpdatePropertyInformation()
@@ -84,6 +103,8 @@ def check(ok, what):
         failures.append(what)
 
 
+if port:
+    check(ranks > 1, "the pvserver runs on %d ranks" % ranks)
 serial = np.load(reference)
 from scipy.spatial import cKDTree  # noqa: E402
 
