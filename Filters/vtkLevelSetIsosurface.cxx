@@ -180,7 +180,10 @@ int vtkLevelSetIsosurface::RequestData(
     particles->Initialize();
     convergence->Initialize();
     enclosed->Initialize();
-    return this->GetAbortExecute() ? 1 : 0;
+    // Under MPI an error is decided over all ranks and reported by rank 0: the other ranks
+    // return empty outputs without a second message from their executives.
+    const bool satellite = this->Controller && this->Controller->GetLocalProcessId() > 0;
+    return this->GetAbortExecute() || satellite ? 1 : 0;
   }
   return 1;
 }
