@@ -27,7 +27,8 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
     std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
     if (!evaluator)
     {
-      evaluator.reset(new MLSEvaluator(geometry, dataOffsets, fitCount));
+      evaluator.reset(
+        new MLSEvaluator(geometry, dataOffsets, fitCount, settings.DataFitOrder == 2));
     }
     for (std::size_t i = begin; i < end; ++i)
     {

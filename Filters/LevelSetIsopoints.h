@@ -30,9 +30,11 @@ struct IsopointSettings
   int NormalFitScale = 4;
   // Final refinement on the data: slide each isopoint along its normal to the zero of the MLS
   // fit of f - f_iso over DataFitScale * (n + 1) samples (more samples: smoother under noise),
-  // at most DataMaximumMove, and take the normal from that fit's gradient.
+  // at most DataMaximumMove, and take the normal from that fit's gradient. The fit is quadratic
+  // where the data show curvature above their noise (FitLinearOrQuadratic), else linear.
   bool RefineOnData = true;
   int DataFitScale = 2;
+  int DataFitOrder = 2; // 2: a quadratic fit (linear where ill-posed), unbiased by curvature
   double DataMaximumMove = 0.5;
   int DataIterations = 3;
   // On the SPH field (exact, smooth): reach in kernel supports of the nearest particle, and

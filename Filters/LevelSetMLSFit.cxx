@@ -28,29 +28,36 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
   this->GatherPoint = p;
 }
 
-bool MLSStencil::Build(const Eigen::Vector3d& p)
+double MLSStencil::SupportAt(const Eigen::Vector3d& p) const
 {
-  const std::size_t k = this->FoundCount;
   // The support must still reach all gathered samples from p (the weight vanishes at h).
   double h = this->GatherRadius;
   if (p != this->GatherPoint)
   {
     double h2 = 0.0;
-    for (std::size_t j = 0; j < k; ++j)
+    for (std::size_t j = 0; j < this->FoundCount; ++j)
     {
       h2 = std::max(h2, (Eigen::Vector3d(this->Geometry.Position(this->Ids[j])) - p).squaredNorm());
     }
     h = std::max(h, std::sqrt(h2));
   }
+  return h;
+}
+
+bool MLSStencil::Build(const Eigen::Vector3d& p)
+{
+  const std::size_t k = this->FoundCount;
+  const double h = this->SupportAt(p);
   return BuildLinearStencil(
     p.data(), k, [&](std::size_t j) { return this->Geometry.Position(this->Ids[j]); }, h,
     LinearStencilView{ this->GradientWeightData.data(), this->ValueWeights.data() });
 }
 
-MLSEvaluator::MLSEvaluator(
-  const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count)
+MLSEvaluator::MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values,
+  std::size_t count, bool quadratic)
   : Stencil(geometry, count ? count : static_cast<std::size_t>(geometry.Stride))
   , Values(values)
+  , Quadratic(quadratic)
 {
 }
 
@@ -62,6 +69,20 @@ bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Ve
 
 bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
 {
+  if (this->Quadratic)
+  {
+    // The 1% point of F(6, 30): the curvature terms are kept where the data show them.
+    constexpr double CriticalF = 3.5;
+    const MLSStencil& s = this->Stencil;
+    bool quadratic = false;
+    const bool ok = FitLinearOrQuadratic(
+      p.data(), s.Found(), [&](std::size_t j) { return s.Position(j); },
+      [&](std::size_t j) { return this->Values[s.Sample(j)]; }, s.SupportAt(p), CriticalF, value,
+      gradient, quadratic);
+    this->Fits += ok ? 1 : 0;
+    this->QuadraticFits += quadratic ? 1 : 0;
+    return ok;
+  }
   if (!this->Stencil.Build(p))
   {
     return false;

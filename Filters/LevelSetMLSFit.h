@@ -33,7 +33,10 @@ public:
   bool Build(const Eigen::Vector3d& p);
 
   std::size_t Found() const { return this->FoundCount; }
+  /// The support that reaches every gathered sample from p.
+  double SupportAt(const Eigen::Vector3d& p) const;
   std::uint32_t Sample(std::size_t j) const { return this->Ids[j]; } // storage index
+  const double* Position(std::size_t j) const { return this->Geometry.Position(this->Ids[j]); }
   double ValueWeight(std::size_t j) const { return this->ValueWeights[j]; }
   const double* GradientWeights(std::size_t j) const { return &this->GradientWeightData[3 * j]; }
 
@@ -51,18 +54,24 @@ private:
 class MLSEvaluator
 {
 public:
-  /// `count`: how many nearest samples enter the fit (0: the neighbourhood size, n + 1).
-  MLSEvaluator(
-    const Neighborhoods& geometry, const std::vector<double>& values, std::size_t count = 0);
+  /// `count`: how many nearest samples enter the fit (0: the neighbourhood size, n + 1);
+  /// `quadratic`: fit a quadratic where the data support one (FitLinearOrQuadratic).
+  MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values,
+    std::size_t count = 0, bool quadratic = false);
   bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
   /// The same in two parts: gather the samples nearest to p, then fit them at any point near p
   /// (for several evaluations along a short path).
   void Gather(const Eigen::Vector3d& p) { this->Stencil.Gather(p); }
+  const MLSStencil& Gathered() const { return this->Stencil; }
   bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+
+  /// Evaluations so far that used the quadratic fit, and all evaluations.
+  std::size_t QuadraticFits = 0, Fits = 0;
 
 private:
   MLSStencil Stencil;
   const std::vector<double>& Values;
+  bool Quadratic = false;
 };
 
 } // namespace lsi

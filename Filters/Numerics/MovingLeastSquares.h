@@ -9,6 +9,7 @@
 #define MovingLeastSquares_h
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <cstddef>
@@ -92,6 +93,93 @@ bool BuildLinearStencil(
       out.Value[j] = c[3];
     }
   }
+  return true;
+}
+
+/// The weighted least-squares fit of per-sample values around `centre` that the data support:
+/// quadratic (basis 1, x, y, z and the six second-order monomials, in coordinates centred and
+/// scaled by 1/h; the linear fit's weights) where its six second-order terms explain
+/// significantly more than noise would, by an F test against the quadratic fit's residual at
+/// `criticalF`; linear where they do not (noisy data: a quadratic would follow the noise) or
+/// where the quadratic is ill-posed (fewer than 16 effective samples, or a normal matrix whose
+/// smallest eigenvalue is below 1e-7 of its largest). A quadratic fit is exact for quadratic
+/// fields, so the zero it places carries no bias from the field's curvature. Gives the value and
+/// gradient at the centre, and whether the quadratic was used. False if even the linear fit is
+/// singular.
+template <typename PositionFn, typename ValueFn>
+bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn position,
+  ValueFn value, double h, double criticalF, double& fitted, Eigen::Vector3d& gradient,
+  bool& quadratic)
+{
+  using Vector10 = Eigen::Matrix<double, 10, 1>;
+  using Matrix10 = Eigen::Matrix<double, 10, 10>;
+  quadratic = false;
+  if (!(h > 0.0) || !std::isfinite(h) || count < 4)
+  {
+    return false;
+  }
+  const double invH = 1.0 / h;
+  auto basis = [&](std::size_t j, double& weight) {
+    const double* x = position(j);
+    const double u = (x[0] - centre[0]) * invH, v = (x[1] - centre[1]) * invH,
+                 w = (x[2] - centre[2]) * invH;
+    const double m = MLSWeight(u * u + v * v + w * w, 1.0);
+    weight = m * m;
+    Vector10 b;
+    b << 1.0, u, v, w, u * u, v * v, w * w, u * v, u * w, v * w;
+    return b;
+  };
+  Matrix10 normal = Matrix10::Zero();
+  Vector10 right = Vector10::Zero();
+  double sumWeights = 0.0, sumSquaredWeights = 0.0;
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    double weight;
+    const Vector10 b = basis(j, weight);
+    normal.noalias() += weight * b * b.transpose();
+    right += (weight * value(j)) * b;
+    sumWeights += weight;
+    sumSquaredWeights += weight * weight;
+  }
+  // The linear fit: the leading 4 x 4 block (scale-free singularity test as in
+  // BuildLinearStencil).
+  const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>();
+  const double scale = linearNormal.trace() / 4.0;
+  if (!(scale > 0.0) || std::abs(linearNormal.determinant()) < 1e-10 * std::pow(scale, 4))
+  {
+    return false;
+  }
+  Vector10 coefficients = Vector10::Zero();
+  coefficients.head<4>() = linearNormal.ldlt().solve(right.head<4>());
+  const double samples = sumWeights * sumWeights / sumSquaredWeights; // effective count
+  if (samples >= 16.0)
+  {
+    const Eigen::SelfAdjointEigenSolver<Matrix10> eigen(normal);
+    const Vector10 lambda = eigen.eigenvalues(); // ascending
+    if (eigen.info() == Eigen::Success && lambda[9] > 0.0 && lambda[0] >= 1e-7 * lambda[9])
+    {
+      const Vector10 full = eigen.eigenvectors() *
+        (lambda.cwiseInverse().asDiagonal() * (eigen.eigenvectors().transpose() * right));
+      double linearResidual = 0.0, quadraticResidual = 0.0;
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        double weight;
+        const Vector10 b = basis(j, weight);
+        const double f = value(j);
+        linearResidual += weight * std::pow(f - b.head<4>().dot(coefficients.head<4>()), 2);
+        quadraticResidual += weight * std::pow(f - b.dot(full), 2);
+      }
+      // F = (reduction per added term) / (residual per remaining degree of freedom).
+      quadratic =
+        linearResidual - quadraticResidual > criticalF * 6.0 * quadraticResidual / (samples - 10.0);
+      if (quadratic)
+      {
+        coefficients = full;
+      }
+    }
+  }
+  fitted = coefficients[0];
+  gradient = coefficients.segment<3>(1) * invH;
   return true;
 }
 

@@ -131,6 +131,88 @@ void TestMLS()
   }
 }
 
+void TestQuadraticFit()
+{
+  // A quadratic field on 54 scattered samples: value and gradient exact (to rounding) at a
+  // point that is not a sample, and the quadratic chosen; a linear field: exact too.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const std::size_t count = 54;
+  int quadraticOnNoise = 0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    std::vector<double> xyz(3 * count);
+    for (double& v : xyz)
+    {
+      v = 50.0 + 3.0 * u(random);
+    }
+    const double c[3] = { 50.3, 49.8, 50.1 };
+    double h = 0.0;
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      h = std::max(h, (Eigen::Vector3d(&xyz[3 * j]) - Eigen::Vector3d(c)).norm());
+    }
+    const Eigen::Vector3d a(0.3, -1.2, 2.5);
+    Eigen::Matrix3d q;
+    q << 1.0, 0.2, -0.4, 0.2, -2.0, 0.3, -0.4, 0.3, 0.5;
+    auto quadraticField = [&](const Eigen::Vector3d& x) {
+      const Eigen::Vector3d d = x - Eigen::Vector3d(40, 60, 55);
+      return d.dot(q * d) + a.dot(d) + 4.0;
+    };
+    const Eigen::Vector3d centre(c);
+    const double exactValue = quadraticField(centre);
+    const Eigen::Vector3d exactGradient = 2.0 * q * (centre - Eigen::Vector3d(40, 60, 55)) + a;
+    double value = 0.0;
+    Eigen::Vector3d gradient;
+    bool quadratic = false;
+    auto position = [&](std::size_t j) { return &xyz[3 * j]; };
+    bool ok = lsi::FitLinearOrQuadratic(
+      c, count, position,
+      [&](std::size_t j) { return quadraticField(Eigen::Vector3d(&xyz[3 * j])); }, h, 3.5, value,
+      gradient, quadratic);
+    Check(ok && quadratic, "a quadratic field chooses the quadratic fit");
+    Check(std::abs(value - exactValue) < 1e-8 * std::abs(exactValue),
+      "the quadratic fit's value is exact for a quadratic field");
+    Check((gradient - exactGradient).norm() < 1e-8 * exactGradient.norm(),
+      "the quadratic fit's gradient is exact for a quadratic field");
+    auto linearField = [&](std::size_t j) { return a.dot(Eigen::Vector3d(&xyz[3 * j])) + 4.0; };
+    ok = lsi::FitLinearOrQuadratic(
+      c, count, position, linearField, h, 3.5, value, gradient, quadratic);
+    Check(ok && std::abs(value - (a.dot(centre) + 4.0)) < 1e-9 && (gradient - a).norm() < 1e-9,
+      "a linear field is fitted exactly");
+    // A linear field with noise: the quadratic terms explain only noise, and the test should
+    // keep the linear fit (an F test at the 1% point errs about once in a hundred).
+    std::vector<double> noisy(count);
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      noisy[j] = linearField(j) + 0.5 * noise(random);
+    }
+    ok = lsi::FitLinearOrQuadratic(
+      c, count, position, [&](std::size_t j) { return noisy[j]; }, h, 3.5, value, gradient,
+      quadratic);
+    Check(ok, "a noisy linear field is fitted");
+    quadraticOnNoise += quadratic ? 1 : 0;
+  }
+  std::cout << "quadratic fits chosen on noise: " << quadraticOnNoise << " of 20\n";
+  Check(quadraticOnNoise <= 2, "noise alone rarely selects the quadratic fit");
+  // Too few samples, or samples on a plane: the quadratic is ill-posed, the linear fit remains
+  // (or fails where it is singular too).
+  std::vector<double> plane;
+  for (int j = 0; j < 30; ++j)
+  {
+    plane.insert(plane.end(), { u(random), u(random), 0.0 });
+  }
+  double value;
+  Eigen::Vector3d gradient;
+  bool quadratic = true;
+  Check(!lsi::FitLinearOrQuadratic(
+          &plane[0], 30, [&](std::size_t j) { return &plane[3 * j]; },
+          [](std::size_t) { return 1.0; }, 3.0, 3.5, value, gradient, quadratic) &&
+      !quadratic,
+    "a planar neighbourhood is singular for both fits");
+}
+
 // Appendix, Theorem 1, with the theorem's own triangular delta and sign of support alpha.
 void TestTheorem1()
 {
@@ -660,6 +742,7 @@ int main()
   TestSolveOnLine();
   TestSplines();
   TestMLS();
+  TestQuadraticFit();
   TestTheorem1();
   TestReinitialization();
   TestIsopoints();

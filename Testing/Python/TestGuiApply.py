@@ -10,7 +10,8 @@ File > Open does and creates the filter with no array named: it takes the snapsh
 then shows the seed's sphere widget) and applies it the way the Apply button does: each output
 port goes to the view its XML hints prefer. Checks that the sphere widget is visible on the data,
 that the convergence table opened in a line chart view (against Iteration, with the band size on
-the right axis), that the particles output was not shown
+the right axis), that what the surface encloses opened in a spreadsheet view (the mass within
+3% of the glass's 0.25 inside r = 0.5), that the particles output was not shown
 and that the surface is in the 3D view; saves a screenshot of the whole layout; writes
 "passed" to LSI_STATUS only if every check held.
 
@@ -52,7 +53,7 @@ SetActiveSource(surface)
 
 # What Apply does (pqApplyBehavior::showData): every port in its preferred view.
 controller = servermanager.ParaViewPipelineController()
-for port in range(3):
+for port in range(4):
     controller.ShowInPreferredView(surface, port, render_view)
 # Apply also puts a newly created view into the layout, beside the 3D view.
 layout = GetLayout(render_view)
@@ -116,6 +117,24 @@ def check(caller, event):
     print("surface ports shown in the render view: %s" % ports_in_render)
     if ports_in_render != [0]:
         failures.append("expected only the surface (port 0) in the 3D view, got %s" % ports_in_render)
+
+    # What the surface encloses: port 3 in a spreadsheet view, in the layout.
+    sheets = [v for v in GetViews() if v.GetXMLName() == "SpreadSheetView"
+              and any(r.Input.SMProxy == surface.SMProxy and r.Visibility
+                      for r in v.Representations if hasattr(r, "Input"))]
+    table = surface.GetClientSideObject().GetOutputDataObject(3)
+    names = [table.GetValueByName(r, "Name").ToString() for r in range(table.GetNumberOfRows())]
+    print("enclosed table in %d spreadsheet view(s): rows %s" % (len(sheets), names))
+    if not sheets or GetLayout(sheets[0]) is None:
+        failures.append("the enclosed table is not shown in a spreadsheet view in the layout")
+    if not names or names[-1] != "Total" or not names[0].startswith("Component"):
+        failures.append("the enclosed table lacks its component and total rows")
+    elif not snapshot:
+        # The glass's mass within r is r^2 (rho = 1 / (2 pi r), total mass 1).
+        mass = table.GetValueByName(0, "Mass").ToDouble()
+        print("enclosed mass %.4f, within r = 0.5: 0.25" % mass)
+        if abs(mass / 0.25 - 1.0) > 0.03:
+            failures.append("the enclosed mass is not within 3% of 0.25")
 
     splats = surface.GetClientSideObject().GetOutputDataObject(0)
     print("splat polygons: %d" % splats.GetNumberOfPolys())
