@@ -37,6 +37,10 @@ constexpr int Spheres = vtkLevelSetIsosurface::SEED_SPHERES;
 const AccuracyTest Tests[] = {
   { "Sphere", "sphere", 100000, 0, Flood, false, 500, 0.2, true, false, true },
   { "OneComponent", "one-component", 200000, 0, Flood, false, 500, 0.35, true, false, true },
+  // Coarse sampling (issue 17): the quadratic fit of the data refinement is unbiased by the
+  // surface's curvature (0.0054 spacings measured; Delaunay 3D + Contour: 0.036).
+  { "CoarseOneComponent", "one-component", 100000, 0, Flood, false, 500, 0.02, true, false,
+    true },
   { "LocalityMultiComponent", "multi-component", 200000, 0, Flood, false, 500, 0.14, true, true,
     true },
   // The paper's parameters are absolute (tuned for spacing 1), so they run at the paper's size.
