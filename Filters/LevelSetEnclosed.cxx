@@ -19,6 +19,7 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 
 namespace lsi
 {
@@ -262,7 +263,19 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     return std::sqrt(d2) < 2.0 * s ? height : phi[i];
   };
 
-  std::vector<Sums> sums(static_cast<std::size_t>(n));
+  // One Sums per component that touches the surface (few), found through its root.
+  std::vector<Sums> sums;
+  std::vector<vtkIdType> rootOfSums;
+  std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
+  auto sumsOf = [&](vtkIdType root) -> Sums& {
+    const auto found = sumsOfRoot.emplace(root, sums.size());
+    if (found.second)
+    {
+      sums.emplace_back();
+      rootOfSums.push_back(root);
+    }
+    return sums[found.first->second];
+  };
   std::vector<double> values(static_cast<std::size_t>(components));
   for (vtkIdType p = 0; p < n; ++p)
   {
@@ -279,7 +292,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     const double volume = in.Mass && in.Density && rho > 0.0
       ? mass / rho
       : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
-    Sums& c = sums[Root(parent, p)];
+    Sums& c = sumsOf(Root(parent, p));
     c.Inside = c.Inside || phi[i] > 0.0;
     c.Particles += phi[i] > 0.0 ? 1 : 0;
     c.Mass += mass * h;
@@ -345,12 +358,12 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   }
   // Every rank's part of every component, gathered and added up by component.
   std::vector<double> packed;
-  for (vtkIdType p = 0; p < n; ++p)
+  for (std::size_t k = 0; k < sums.size(); ++k)
   {
-    if (sums[p].HasReference)
+    if (sums[k].HasReference)
     {
-      const double key = rankKey + p;
-      Pack(ranks.Distributed() ? Find(joined, key) : key, sums[p], packed);
+      const double key = rankKey + rootOfSums[k];
+      Pack(ranks.Distributed() ? Find(joined, key) : key, sums[k], packed);
     }
   }
   ranks.GatherAll(packed);

@@ -9,7 +9,6 @@
 #define MovingLeastSquares_h
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <cstddef>
@@ -102,7 +101,7 @@ bool BuildLinearStencil(
 /// significantly more than noise would, by an F test against the quadratic fit's residual at
 /// `criticalF`; linear where they do not (noisy data: a quadratic would follow the noise) or
 /// where the quadratic is ill-posed (fewer than 16 effective samples, or a normal matrix whose
-/// smallest eigenvalue is below 1e-7 of its largest). A quadratic fit is exact for quadratic
+/// smallest LDL^T pivot is below 1e-7 of its largest). A quadratic fit is exact for quadratic
 /// fields, so the zero it places carries no bias from the field's curvature. Gives the value and
 /// gradient at the centre, and whether the quadratic was used. False if even the linear fit is
 /// singular.
@@ -154,12 +153,14 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   const double samples = sumWeights * sumWeights / sumSquaredWeights; // effective count
   if (samples >= 16.0)
   {
-    const Eigen::SelfAdjointEigenSolver<Matrix10> eigen(normal);
-    const Vector10 lambda = eigen.eigenvalues(); // ascending
-    if (eigen.info() == Eigen::Success && lambda[9] > 0.0 && lambda[0] >= 1e-7 * lambda[9])
+    // Pivoted LDL^T (a tenth of an eigendecomposition's cost); its pivots' spread measures the
+    // conditioning.
+    const Eigen::LDLT<Matrix10> ldlt(normal);
+    const Vector10 pivots = ldlt.vectorD().cwiseAbs();
+    if (ldlt.info() == Eigen::Success && pivots.maxCoeff() > 0.0 &&
+      pivots.minCoeff() >= 1e-7 * pivots.maxCoeff())
     {
-      const Vector10 full = eigen.eigenvectors() *
-        (lambda.cwiseInverse().asDiagonal() * (eigen.eigenvectors().transpose() * right));
+      const Vector10 full = ldlt.solve(right);
       double linearResidual = 0.0, quadraticResidual = 0.0;
       for (std::size_t j = 0; j < count; ++j)
       {

@@ -39,8 +39,7 @@ const AccuracyTest Tests[] = {
   { "OneComponent", "one-component", 200000, 0, Flood, false, 500, 0.35, true, false, true },
   // Coarse sampling (issue 17): the quadratic fit of the data refinement is unbiased by the
   // surface's curvature (0.0054 spacings measured; Delaunay 3D + Contour: 0.036).
-  { "CoarseOneComponent", "one-component", 100000, 0, Flood, false, 500, 0.02, true, false,
-    true },
+  { "CoarseOneComponent", "one-component", 100000, 0, Flood, false, 500, 0.02, true, false, true },
   { "LocalityMultiComponent", "multi-component", 200000, 0, Flood, false, 500, 0.14, true, true,
     true },
   // The paper's parameters are absolute (tuned for spacing 1), so they run at the paper's size.
