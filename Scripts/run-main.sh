@@ -9,6 +9,6 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/Scripts/setup-debian12.sh"
 mkdir -p "$here/Results"
 "$here/build/bin/LevelSetGenerateData" one-component 200000 "$here/Results/one_component_samples.vtp"
-xvfb-run -a pvbatch "$here/Scripts/main_job.py" \
+bash "$here/Testing/RunWithXvfb.sh" pvbatch "$here/Scripts/main_job.py" \
   "$here/build/lib/paraview-5.11/plugins/LevelSetIsosurface/LevelSetIsosurface.so" \
   "$here/Results/one_component_samples.vtp" "$here/Results/one_component_surface"

@@ -15,7 +15,7 @@ mkdir -p "$config/ParaView"
 printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' > "$config/ParaView/ParaView5.11.ini"
 export XDG_CONFIG_HOME=$config
 LSI_PLUGIN=$plugin LSI_GLASS=$glass LSI_SCREENSHOT=$shot LSI_STATUS=$status \
-  timeout 150 xvfb-run -a -n $((150 + RANDOM % 100)) paraview --dr --script="$script" || true
+  timeout 300 bash "$(dirname "$0")/../RunWithXvfb.sh" paraview --dr --script="$script" || true
 test "$(cat "$status" 2>/dev/null)" = passed || { echo "FAILED: the GUI script's checks (status: $(cat "$status" 2>/dev/null || echo none))"; exit 1; }
 test -s "$shot" || { echo "FAILED: no screenshot"; exit 1; }
 size=$(stat -c %s "$shot")
