@@ -532,7 +532,10 @@ void Distribution::Attach(const Neighborhoods& geometry)
   this->ReceivedSamples = inStorageOrder(this->ReceivedIds);
 }
 
-void Distribution::RefreshGhosts(std::vector<double>& perSample) const
+template <typename Combine>
+void Distribution::Trade(std::vector<double>& perSample,
+  const std::vector<std::vector<std::uint32_t>>& from,
+  const std::vector<std::vector<std::uint32_t>>& to, int tag, Combine&& combine) const
 {
   const CommunicationTimer timer(this->CommunicationSeconds);
   if (this->Size <= 1)
@@ -542,7 +545,7 @@ void Distribution::RefreshGhosts(std::vector<double>& perSample) const
   std::vector<double> buffer;
   this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
     auto send = [&]() {
-      const std::vector<std::uint32_t>& samples = this->SentSamples[other];
+      const std::vector<std::uint32_t>& samples = from[other];
       if (!samples.empty())
       {
         buffer.resize(samples.size());
@@ -550,20 +553,18 @@ void Distribution::RefreshGhosts(std::vector<double>& perSample) const
         {
           buffer[k] = perSample[samples[k]];
         }
-        this->Controller->Send(
-          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, RefreshTag);
+        this->Controller->Send(buffer.data(), static_cast<vtkIdType>(buffer.size()), other, tag);
       }
     };
     auto receive = [&]() {
-      const std::vector<std::uint32_t>& samples = this->ReceivedSamples[other];
+      const std::vector<std::uint32_t>& samples = to[other];
       if (!samples.empty())
       {
         buffer.resize(samples.size());
-        this->Controller->Receive(
-          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, RefreshTag);
+        this->Controller->Receive(buffer.data(), static_cast<vtkIdType>(buffer.size()), other, tag);
         for (std::size_t k = 0; k < samples.size(); ++k)
         {
-          perSample[samples[k]] = buffer[k];
+          perSample[samples[k]] = combine(perSample[samples[k]], buffer[k]);
         }
       }
     };
@@ -571,43 +572,18 @@ void Distribution::RefreshGhosts(std::vector<double>& perSample) const
   });
 }
 
+void Distribution::RefreshGhosts(std::vector<double>& perSample) const
+{
+  // From the owned samples that were sent, onto their ghost copies.
+  this->Trade(perSample, this->SentSamples, this->ReceivedSamples, RefreshTag,
+    [](double, double owners) { return owners; });
+}
+
 void Distribution::MaxToOwners(std::vector<double>& perSample) const
 {
-  const CommunicationTimer timer(this->CommunicationSeconds);
-  if (this->Size <= 1)
-  {
-    return;
-  }
-  std::vector<double> buffer;
-  this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
-    auto send = [&]() { // from the ghosts here to their owner
-      const std::vector<std::uint32_t>& samples = this->ReceivedSamples[other];
-      if (!samples.empty())
-      {
-        buffer.resize(samples.size());
-        for (std::size_t k = 0; k < samples.size(); ++k)
-        {
-          buffer[k] = perSample[samples[k]];
-        }
-        this->Controller->Send(
-          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, ToOwnersTag);
-      }
-    };
-    auto receive = [&]() { // onto the owned samples whose copies are there
-      const std::vector<std::uint32_t>& samples = this->SentSamples[other];
-      if (!samples.empty())
-      {
-        buffer.resize(samples.size());
-        this->Controller->Receive(
-          buffer.data(), static_cast<vtkIdType>(buffer.size()), other, ToOwnersTag);
-        for (std::size_t k = 0; k < samples.size(); ++k)
-        {
-          perSample[samples[k]] = std::max(perSample[samples[k]], buffer[k]);
-        }
-      }
-    };
-    sendFirst ? (send(), receive()) : (receive(), send());
-  });
+  // From the ghosts here, onto the owned samples whose copies they are.
+  this->Trade(perSample, this->ReceivedSamples, this->SentSamples, ToOwnersTag,
+    [](double mine, double ghosts) { return std::max(mine, ghosts); });
 }
 
 } // namespace lsi

@@ -81,6 +81,12 @@ private:
   template <typename Exchange>
   void WithEachPartner(const std::vector<char>& partners, Exchange&& exchange) const;
 
+  // Sends perSample at `from[r]` to each partner r, which combines what it receives into its
+  // samples `to[this rank]` (the same count, in the same order).
+  template <typename Combine>
+  void Trade(std::vector<double>& perSample, const std::vector<std::vector<std::uint32_t>>& from,
+    const std::vector<std::vector<std::uint32_t>>& to, int tag, Combine&& combine) const;
+
   vtkMultiProcessController* Controller = nullptr;
   double ReachBox[6] = { 0, 0, 0, 0, 0, 0 };
   // Per rank: the input ids of the owned samples sent to it; the input ids of its ghosts here.

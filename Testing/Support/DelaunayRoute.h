@@ -9,18 +9,14 @@
 #ifndef DelaunayRoute_h
 #define DelaunayRoute_h
 
+#include "GridRoute.h"
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCellArray.h"
 #include "vtkContourFilter.h"
-#include "vtkDataArray.h"
 #include "vtkDelaunay3D.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataConnectivityFilter.h"
 #include "vtkPolyDataNormals.h"
 
 #include <Eigen/Dense>
@@ -68,55 +64,29 @@ inline SurfaceMetrics RunAndMeasureDelaunayRoute(vtkPolyData* particles, const C
   result.ContourSeconds = seconds(start);
 
   start = Clock::now();
-  vtkNew<vtkAppendPolyData> pieces;
+  std::vector<Eigen::Vector3d> seeds;
   for (const Sphere3& seed : c.Seeds)
   {
-    vtkNew<vtkPolyDataConnectivityFilter> connectivity;
-    connectivity->SetInputConnection(contour->GetOutputPort());
-    connectivity->SetExtractionModeToClosestPointRegion();
-    connectivity->SetClosestPoint(seed.Center.x(), seed.Center.y(), seed.Center.z());
-    connectivity->Update();
-    vtkNew<vtkPolyData> piece;
-    piece->ShallowCopy(connectivity->GetOutput());
-    pieces->AddInputData(piece);
+    seeds.push_back(seed.Center);
   }
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(pieces->GetOutputPort());
+  normals->SetInputData(PiecesNearSeeds(contour->GetOutputPort(), seeds));
   normals->SplittingOff();
   normals->ConsistencyOff();
   normals->Update();
   result.ConnectivitySeconds = seconds(start);
-
-  vtkPolyData* mesh = normals->GetOutput();
-  vtkDataArray* n = mesh->GetPointData()->GetNormals();
-  std::vector<char> used(mesh->GetNumberOfPoints(), 0);
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkIdType count;
-  const vtkIdType* ids;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  TriangleVertices(normals->GetOutput(), result.Points, result.Normals);
+  // Unsigned: each normal with the sign that agrees with the exact outward normal (-grad f).
+  for (std::size_t i = 0; i < result.Points.size() / 3; ++i)
   {
-    for (vtkIdType k = 0; k < count; ++k)
+    const Eigen::Vector3d outward = -c.Gradient(Eigen::Vector3d(&result.Points[3 * i]));
+    if (Eigen::Vector3d(&result.Normals[3 * i]).dot(outward) < 0.0)
     {
-      used[ids[k]] = 1;
+      for (int d = 0; d < 3; ++d)
+      {
+        result.Normals[3 * i + d] = -result.Normals[3 * i + d];
+      }
     }
-  }
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    if (!used[i])
-    {
-      continue;
-    }
-    double x[3], v[3] = { 0, 0, 0 };
-    mesh->GetPoint(i, x);
-    if (n)
-    {
-      n->GetTuple(i, v);
-    }
-    // Unsigned: the sign that agrees with the exact outward normal (-grad f).
-    const Eigen::Vector3d outward = -c.Gradient(Eigen::Vector3d(x));
-    const double sign = Eigen::Vector3d(v).dot(outward) < 0.0 ? -1.0 : 1.0;
-    result.Points.insert(result.Points.end(), x, x + 3);
-    result.Normals.insert(result.Normals.end(), { sign * v[0], sign * v[1], sign * v[2] });
   }
   return MeasureSurface(c, result.Points, result.Normals, samples, surfaceSpacing);
 }

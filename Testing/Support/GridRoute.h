@@ -19,6 +19,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSPHInterpolator.h"
 #include "vtkSPHQuinticKernel.h"
+#include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
 
 #include <Eigen/Dense>
@@ -41,6 +42,60 @@ struct GridRouteResult
     return this->InterpolationSeconds + this->ContourSeconds + this->ConnectivitySeconds;
   }
 };
+
+/// The connected pieces of a contour nearest each seed (vtkPolyDataConnectivityFilter), appended.
+inline vtkSmartPointer<vtkPolyData> PiecesNearSeeds(
+  vtkAlgorithmOutput* contour, const std::vector<Eigen::Vector3d>& seeds)
+{
+  vtkNew<vtkAppendPolyData> pieces;
+  for (const Eigen::Vector3d& seed : seeds)
+  {
+    vtkNew<vtkPolyDataConnectivityFilter> connectivity;
+    connectivity->SetInputConnection(contour);
+    connectivity->SetExtractionModeToClosestPointRegion();
+    connectivity->SetClosestPoint(seed.x(), seed.y(), seed.z());
+    connectivity->Update();
+    vtkNew<vtkPolyData> piece;
+    piece->ShallowCopy(connectivity->GetOutput());
+    pieces->AddInputData(piece);
+  }
+  pieces->Update();
+  return pieces->GetOutput();
+}
+
+/// The vertices of a mesh's polygons and their normals (zero without normals): the connectivity
+/// filter may keep unused points.
+inline void TriangleVertices(
+  vtkPolyData* mesh, std::vector<double>& points, std::vector<double>& normals)
+{
+  vtkDataArray* meshNormals = mesh->GetPointData()->GetNormals();
+  std::vector<char> used(mesh->GetNumberOfPoints(), 0);
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType count;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      used[ids[k]] = 1;
+    }
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    if (!used[i])
+    {
+      continue;
+    }
+    double x[3], n[3] = { 0, 0, 0 };
+    mesh->GetPoint(i, x);
+    if (meshNormals)
+    {
+      meshNormals->GetTuple(i, n);
+    }
+    points.insert(points.end(), x, x + 3);
+    normals.insert(normals.end(), n, n + 3);
+  }
+}
 
 /// Grid over the particles' bounds with spacing `spacing`, which is also the kernel's spatial
 /// step. Shepard normalisation is on: without mass and density arrays it is what makes the
@@ -93,50 +148,9 @@ inline GridRouteResult RunGridRoute(vtkPolyData* particles, const std::string& a
     result.ContourSeconds = seconds(start);
 
     start = Clock::now();
-    vtkNew<vtkAppendPolyData> pieces;
-    for (const Eigen::Vector3d& seed : seeds)
-    {
-      vtkNew<vtkPolyDataConnectivityFilter> connectivity;
-      connectivity->SetInputConnection(contour->GetOutputPort());
-      connectivity->SetExtractionModeToClosestPointRegion();
-      connectivity->SetClosestPoint(seed.x(), seed.y(), seed.z());
-      connectivity->Update();
-      vtkNew<vtkPolyData> piece;
-      piece->ShallowCopy(connectivity->GetOutput());
-      pieces->AddInputData(piece);
-    }
-    pieces->Update();
+    vtkSmartPointer<vtkPolyData> mesh = PiecesNearSeeds(contour->GetOutputPort(), seeds);
     result.ConnectivitySeconds = seconds(start);
-
-    // The connectivity filter may keep unused points: take only the triangles' vertices.
-    vtkPolyData* mesh = pieces->GetOutput();
-    vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-    std::vector<char> used(mesh->GetNumberOfPoints(), 0);
-    vtkCellArray* polys = mesh->GetPolys();
-    vtkIdType count;
-    const vtkIdType* ids;
-    for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-    {
-      for (vtkIdType k = 0; k < count; ++k)
-      {
-        used[ids[k]] = 1;
-      }
-    }
-    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-    {
-      if (!used[i])
-      {
-        continue;
-      }
-      double x[3], n[3] = { 0, 0, 0 };
-      mesh->GetPoint(i, x);
-      if (normals)
-      {
-        normals->GetTuple(i, n);
-      }
-      result.Points.insert(result.Points.end(), x, x + 3);
-      result.Normals.insert(result.Normals.end(), n, n + 3);
-    }
+    TriangleVertices(mesh, result.Points, result.Normals);
   });
   return result;
 }
