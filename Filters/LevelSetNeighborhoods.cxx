@@ -174,6 +174,32 @@ bool IsFlat(const std::vector<double>& positions)
 }
 } // namespace
 
+namespace
+{
+// Whether the neighbourhood's points spread less than ThinRatio as far in one direction as in
+// the widest one (the square root of the covariance's eigenvalues).
+bool IsThin(const std::uint32_t* ids, std::size_t count, const Neighborhoods& geometry)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    mean += Eigen::Vector3d(geometry.Position(ids[m]));
+  }
+  mean /= static_cast<double>(count);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d(geometry.Position(ids[m])) - mean;
+    covariance.noalias() += d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d eigenvalues = solver.eigenvalues(); // increasing
+  const double ratio = Neighborhoods::ThinRatio;
+  return eigenvalues[0] < ratio * ratio * eigenvalues[2];
+}
+} // namespace
+
 void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count) const
 {
   const auto start = Clock::now();
@@ -187,7 +213,7 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
   }
   const std::size_t stride = static_cast<std::size_t>(this->Stride);
   vtkSMPThreadLocal<std::vector<double>> scratch;
-  vtkSMPThreadLocal<std::size_t> singular(0);
+  vtkSMPThreadLocal<std::size_t> singular(0), thin(0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), [&](vtkIdType begin, vtkIdType end) {
     std::vector<double>& stencil = scratch.Local();
     stencil.resize(3 * stride);
@@ -201,11 +227,16 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
       std::copy(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride]);
       this->StencilState[i] = ok ? 1 : 2;
       singular.Local() += !ok;
+      thin.Local() += ok && IsThin(ids, stride, *this);
     }
   });
   for (std::size_t s : singular)
   {
     this->SingularSamples += s;
+  }
+  for (std::size_t s : thin)
+  {
+    this->ThinSamples += s;
   }
   this->ComputedStencils += missing.size();
   this->StencilSeconds += SecondsSince(start);

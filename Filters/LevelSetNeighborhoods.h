@@ -82,6 +82,10 @@ struct Neighborhoods
   long long FirstDuplicate = -1;
   bool Flat = false;                       // all samples on one plane or line: no 3D fit anywhere
   mutable std::size_t SingularSamples = 0; // among the stencils computed so far
+  // Among them, neighbourhoods so thin in one direction (spread below ThinRatio of the widest)
+  // that the fit's gradient across them is ill-conditioned (a thin layer of particles).
+  mutable std::size_t ThinSamples = 0;
+  static constexpr double ThinRatio = 0.01;
 
   // Under MPI (LevelSetDistribution.h): ghost samples whose neighbour list the edge of the
   // rank's halo cuts short. Their lists name nearer stand-ins for the missing neighbours, so

@@ -302,7 +302,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   this->KeepOwnedIsopoints(*geometry, isopoints);
   this->KeepPeriodicCell(isopoints);
-  this->WarnIfEmpty(*geometry, dataOffsets, phi, isopoints);
+  this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
   ok = this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(), surfaceOutput);
   if (!ranks.All(ok))
   {
@@ -1021,12 +1021,26 @@ void vtkLevelSetIsosurface::KeepOwnedIsopoints(
   isopoints.Normals.swap(owned.Normals);
 }
 
-void vtkLevelSetIsosurface::WarnIfEmpty(const lsi::Neighborhoods& geometry,
+void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<double>& phi,
   const lsi::IsopointSet& isopoints)
 {
-  // Valid inputs, no surface: say why, rather than return an empty output silently.
+  // Valid inputs, no surface: say why, rather than return an empty output silently. And a thin
+  // layer of particles: say that the fits across it are ill-conditioned.
   const lsi::Distribution& ranks = *this->Internal->Ranks;
+  double stencils[2] = { static_cast<double>(geometry.ThinSamples),
+    static_cast<double>(geometry.ComputedStencils) };
+  ranks.Sum(stencils, 2);
+  if (stencils[0] > 0.01 * stencils[1] && this->ReportsForAll())
+  {
+    vtkWarningMacro(<< stencils[0] << " of the " << stencils[1]
+                    << " neighbourhoods the evolution used are thin: their particles spread less "
+                       "than "
+                    << lsi::Neighborhoods::ThinRatio
+                    << " times as far in one direction as in another (a thin layer or sheet of "
+                       "particles). Gradients and normals across them are ill-conditioned, and "
+                       "the surface may lie off the data. More NumberOfNeighbors may help.");
+  }
   double counts[4] = { static_cast<double>(isopoints.Points.size() / 3), 0.0, 0.0, 0.0 };
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {

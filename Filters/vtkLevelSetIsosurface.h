@@ -509,7 +509,7 @@ private:
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi,
     double& seedSamples);
   void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
-  void WarnIfEmpty(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& phi, const lsi::IsopointSet& isopoints);
   lsi::SPHFieldRequest SPHRequest() const;
   void Bounds(vtkPointSet* input, double bounds[6]);

@@ -200,6 +200,46 @@ void TestExtremeParameters()
   }
 }
 
+// Issue 14: a thin layer (two sheets of particles 1e-3 apart, 60 wide) passes the exact
+// flatness test but its neighbourhoods are ill-conditioned across it: a warning says so. A ball
+// of random particles gives no such warning.
+void TestThinLayers()
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  for (int i = 0; i < 20000; ++i)
+  {
+    const double x = random->GetNextRangeValue(0.0, 60.0);
+    const double y = random->GetNextRangeValue(0.0, 60.0);
+    points->InsertNextPoint(x, y, (i % 2) * 1e-3);
+    f->InsertNextValue(20.0 - std::sqrt((x - 30) * (x - 30) + (y - 30) * (y - 30)));
+  }
+  vtkNew<vtkPolyData> layers;
+  layers->SetPoints(points);
+  layers->GetPointData()->AddArray(f);
+  vtkNew<vtkPolyData> ball = Ball(20000);
+  for (vtkPolyData* data : { layers.GetPointer(), ball.GetPointer() })
+  {
+    const bool thin = data == layers.GetPointer();
+    vtkNew<vtkLevelSetIsosurface> filter;
+    Configure(filter, data);
+    filter->SetSeedCenter(30, 30, thin ? 0 : 30);
+    vtkNew<MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    filter->Update();
+    const bool warned = warnings->All.find("thin") != std::string::npos;
+    std::cout << (thin ? "two layers 1e-3 apart" : "a ball") << ": "
+              << filter->GetNumberOfIsopoints() << " isopoints, warnings: " << warnings->All
+              << "\n";
+    Check(warned == thin,
+      thin ? "two layers 1e-3 apart: no warning about thin neighbourhoods"
+           : "a ball: a warning about thin neighbourhoods");
+  }
+}
+
 void TestReuseOfNeighbours()
 {
   vtkNew<vtkPolyData> data = Ball(20000);
@@ -640,6 +680,7 @@ void TestBadInput()
 int main()
 {
   TestExtremeParameters();
+  TestThinLayers();
   TestEnclosedComponents();
   TestReuseOfNeighbours();
   TestProgressThroughStages();
