@@ -335,21 +335,28 @@ vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::str
   }
   this->Controller->Broadcast(markers, std::max(0, lowestWithPoints));
 
-  vtkSmartPointer<vtkPointSet> piece = PointsOf(input, nullptr);
+  // The piece is the input itself (a shallow copy, so that its field data can be replaced), or
+  // the redistributed particles.
+  vtkPointSet* source = input;
+  vtkNew<vtkDistributedPointCloudFilter> distribute;
   vtkMPIController* mpi = vtkMPIController::SafeDownCast(this->Controller);
-  if ((imbalance > 1.5 || overlap > 1.5) && mpi)
+  const bool redistribute = (imbalance > 1.5 || overlap > 1.5) && mpi;
+  if (redistribute)
   {
-    vtkNew<vtkDistributedPointCloudFilter> distribute;
     distribute->SetController(mpi);
-    distribute->SetInputData(piece);
+    distribute->SetInputData(input);
     distribute->Update();
-    piece = PointsOf(distribute->GetOutput(), nullptr);
+    source = vtkPointSet::SafeDownCast(distribute->GetOutputDataObject(0));
     std::ostringstream why;
     why << "redistributed by space: the largest piece held " << imbalance
         << " times the mean, the pieces' boxes " << overlap << " times the whole volume";
     report = why.str();
   }
-  piece->GetFieldData()->ShallowCopy(markers->GetFieldData());
+  vtkSmartPointer<vtkPointSet> piece = vtk::TakeSmartPointer(source->NewInstance());
+  piece->ShallowCopy(source);
+  vtkNew<vtkFieldData> fieldData;
+  fieldData->ShallowCopy(markers->GetFieldData());
+  piece->SetFieldData(fieldData);
   return piece;
 }
 
@@ -369,12 +376,13 @@ vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
     this->Controller->Receive(piece, r, GatherTag);
     pieces.push_back(piece);
   }
-  // Field data (the markers) from the first piece with points.
-  for (const auto& piece : pieces)
+  // Concatenated takes the arrays and the field data (the markers) of its first piece: put the
+  // first piece with points first (an empty piece may carry neither).
+  for (std::size_t r = 0; r < pieces.size(); ++r)
   {
-    if (piece->GetNumberOfPoints() > 0)
+    if (pieces[r]->GetNumberOfPoints() > 0)
     {
-      std::swap(pieces.front(), pieces[&piece - &pieces.front()]);
+      std::swap(pieces.front(), pieces[r]);
       break;
     }
   }

@@ -498,6 +498,7 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
   if (!lsi::PlaceBox(internal.Box, bounds, 0.5 * this->PeriodicMargin))
   {
     if (this->ReportsForAll())
+    {
       vtkWarningMacro("The particles (from "
         << bounds[0] << ", " << bounds[2] << ", " << bounds[4] << " to " << bounds[1] << ", "
         << bounds[3] << ", " << bounds[5]
@@ -505,6 +506,7 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
         << internal.Box.Size[0] << ", " << internal.Box.Size[1] << ", " << internal.Box.Size[2]
         << "): the box is not taken as periodic. Set BoxSize, or turn Periodic off to silence "
            "this.");
+    }
     internal.Box = lsi::PeriodicBox();
     return input;
   }
