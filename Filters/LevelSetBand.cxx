@@ -33,6 +33,7 @@ void BandCollector::WithNeighbors(
   ++this->CurrentStamp;
   out.clear();
   const int stride = this->Geometry.Stride;
+  this->Geometry.EnsureNeighbors(core);
   for (std::size_t i : core)
   {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);

@@ -516,7 +516,7 @@ void Distribution::Attach(const Neighborhoods& geometry)
     // A ghost's neighbourhood is whole only if its ball lies in the reach box, inside which
     // this rank holds every sample.
     const double* x = geometry.Position(s);
-    const double r = geometry.Radius[s];
+    const double r = geometry.RadiusOf(s);
     for (int d = 0; d < 3; ++d)
     {
       if (x[d] - r < this->ReachBox[2 * d] || x[d] + r > this->ReachBox[2 * d + 1])

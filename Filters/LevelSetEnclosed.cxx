@@ -162,8 +162,15 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   }
   // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
   // enough particles fall in it for a smooth surface integral.
-  auto width = [&](std::size_t i) { return geometry.Radius[i]; };
-  auto touches = [&](std::size_t i) { return phi[i] > -width(i); };
+  auto width = [&](std::size_t i) { return geometry.RadiusOf(i); };
+  std::vector<char> touching(geometry.NumberOfSamples, 0);
+  double widest = 0.0;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    touching[i] = phi[i] > 0.0 || (phi[i] > in.FarOutside && phi[i] > -width(i));
+    widest = touching[i] ? std::max(widest, 2.0 * width(i)) : widest;
+  }
+  auto touches = [&](std::size_t i) { return touching[i] != 0; };
 
   // Components: the particles within a shell of the inside, joined through the neighbour graph
   // (through the images too, so a component cut by a periodic face is one).
@@ -218,7 +225,6 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   std::vector<double> surface, surfaceNormals;
   if (in.SurfacePoints && in.SurfaceNormals)
   {
-    const double widest = 2.0 * *std::max_element(geometry.Radius.begin(), geometry.Radius.end());
     const double reach[3] = { widest, widest, widest };
     for (std::size_t k = 0; k < in.SurfacePoints->size() / 3; ++k)
     {
@@ -288,7 +294,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
     const double mass = in.Mass ? in.Mass->GetTuple1(p) : 0.0;
     const double rho = in.Density ? in.Density->GetTuple1(p) : 0.0;
-    const double radius = geometry.Radius[i];
+    const double radius = geometry.RadiusOf(i);
     const double volume = in.Mass && in.Density && rho > 0.0
       ? mass / rho
       : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;

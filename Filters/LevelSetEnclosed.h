@@ -18,6 +18,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <vector>
 
 class vtkDataArray;
@@ -31,12 +32,15 @@ struct EnclosedInputs
 {
   const Neighborhoods* Geometry = nullptr;
   const std::vector<double>* Phi = nullptr; // storage order, over particles and images
-  vtkPointSet* Particles = nullptr;         // the particles the method ran on (and images)
-  vtkIdType ParticleCount = 0;              // the real ones: ids below this
-  std::vector<vtkIdType> OriginalIds;       // per sample: the real particle it is (images too)
-  PeriodicBox Box;                          // for centres of mass across faces
-  vtkDataArray* Mass = nullptr;             // none: volumes from the spacing, no Mass column
-  vtkDataArray* Density = nullptr;          // with Mass: volumes m / rho
+  // Samples with phi at or below this are far outside the surface (beyond the evolution's
+  // band): left out without computing their neighbour lists.
+  double FarOutside = -HUGE_VAL;
+  vtkPointSet* Particles = nullptr;   // the particles the method ran on (and images)
+  vtkIdType ParticleCount = 0;        // the real ones: ids below this
+  std::vector<vtkIdType> OriginalIds; // per sample: the real particle it is (images too)
+  PeriodicBox Box;                    // for centres of mass across faces
+  vtkDataArray* Mass = nullptr;       // none: volumes from the spacing, no Mass column
+  vtkDataArray* Density = nullptr;    // with Mass: volumes m / rho
   // The surface's points and unit normals (3 doubles each, normals out of the inside): the
   // signed distance of a particle near the surface is its height over the tangent plane of the
   // nearest surface point (phi's own distances are offset by a fraction of a spacing there).

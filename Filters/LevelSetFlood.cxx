@@ -97,6 +97,42 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
     }
   }
 }
+
+// Computes, a wave at a time in parallel, the neighbour lists that the distance propagation
+// below will read (most of them): of the samples within halfWidth of a sample that holds a
+// crossing, reached through the neighbour graph. Results do not depend on it, only speed (the
+// propagation is serial, and computes any list still missing as it goes).
+void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t>& holders,
+  double halfWidth, SerialAbortCheck& stop)
+{
+  constexpr std::uint32_t None = ~std::uint32_t(0);
+  std::vector<std::uint32_t> origin(geometry.NumberOfSamples, None), wave(holders), next;
+  for (const std::uint32_t i : holders)
+  {
+    origin[i] = i;
+  }
+  while (!wave.empty() && !stop.Stop())
+  {
+    geometry.EnsureNeighbors(wave);
+    next.clear();
+    for (const std::uint32_t i : wave)
+    {
+      const Eigen::Vector3d from(geometry.Position(origin[i]));
+      const double reach = halfWidth;
+      const std::uint32_t* ids = geometry.NeighborsOf(i);
+      for (int m = 1; m < geometry.Stride; ++m)
+      {
+        const std::uint32_t j = ids[m];
+        if (origin[j] == None && (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= reach)
+        {
+          origin[j] = origin[i];
+          next.push_back(j);
+        }
+      }
+    }
+    wave.swap(next);
+  }
+}
 } // namespace
 
 FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
@@ -116,8 +152,39 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
+  // The crossings are looked for in the lists of the inside samples and of their neighbours
+  // (not of every sample: most lists are never computed).
+  std::vector<std::uint32_t> nearFront;
   {
+    std::vector<char> listed(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (!inside[i] || geometry.IsTruncated(i))
+      {
+        continue;
+      }
+      const std::uint32_t* ids = geometry.NeighborsOf(i);
+      for (int m = 0; m < stride; ++m)
+      {
+        listed[ids[m]] = 1;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (listed[i])
+      {
+        nearFront.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  geometry.EnsureNeighbors(nearFront);
+  std::vector<std::uint32_t> holders; // the samples that hold a crossing
+  for (const std::size_t i : nearFront)
+  {
+    if (stop.Stop())
+    {
+      break;
+    }
     if (geometry.IsTruncated(i)) // its list may pair it with a stand-in: no true crossing
     {
       continue;
@@ -150,8 +217,10 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
     if (distance[i] < HUGE_VAL)
     {
       heap.push({ distance[i], static_cast<std::uint32_t>(i) });
+      holders.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  PrefetchBand(geometry, holders, halfWidth, stop);
   while (!heap.empty() && !stop.Stop())
   {
     const Entry top = heap.top();

@@ -26,7 +26,7 @@ bool OutwardOfCloud(const Neighborhoods& geometry, std::size_t i, Eigen::Vector3
   centroid /= geometry.Stride - 1;
   outward = Eigen::Vector3d(geometry.Position(i)) - centroid;
   const double offset = outward.norm();
-  if (!(offset > 0.3 * geometry.Radius[i]))
+  if (!(offset > 0.3 * geometry.RadiusOf(i)))
   {
     return false;
   }

@@ -145,7 +145,7 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
   std::vector<std::size_t> front;
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (phi[i] > 0.0 && phi[i] < 3.0 * geometry.Radius[i])
+    if (phi[i] > 0.0 && phi[i] < 3.0 * geometry.RadiusOf(i))
     {
       front.push_back(i);
     }

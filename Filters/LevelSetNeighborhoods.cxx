@@ -16,9 +16,11 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <tuple>
 
 namespace lsi
 {
@@ -64,6 +66,49 @@ void WithTypedCoordinates(vtkDataArray* coordinates, F&& f)
   if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(coordinates, f))
   {
     f(coordinates);
+  }
+}
+
+// Counts the samples at exactly the position of another one (out.DuplicateSamples, and the
+// smallest input id among them). Coincident samples share a Morton cell, so only the runs of
+// sorted words with the same cell are compared, after sorting each by position.
+void FindDuplicates(const std::vector<std::uint64_t>& words, Neighborhoods& out)
+{
+  const std::size_t n = words.size();
+  std::vector<std::size_t> run;
+  for (std::size_t begin = 0, end = 0; begin < n; begin = end)
+  {
+    end = begin + 1;
+    while (end < n && (words[end] >> 32) == (words[begin] >> 32))
+    {
+      ++end;
+    }
+    if (end - begin < 2)
+    {
+      continue;
+    }
+    run.resize(end - begin);
+    for (std::size_t k = 0; k < run.size(); ++k)
+    {
+      run[k] = begin + k;
+    }
+    auto position = [&](std::size_t i) {
+      return std::make_tuple(
+        out.Positions[3 * i], out.Positions[3 * i + 1], out.Positions[3 * i + 2]);
+    };
+    std::sort(run.begin(), run.end(),
+      [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
+    for (std::size_t k = 0; k < run.size(); ++k)
+    {
+      const bool same = (k > 0 && position(run[k]) == position(run[k - 1])) ||
+        (k + 1 < run.size() && position(run[k]) == position(run[k + 1]));
+      if (same)
+      {
+        ++out.DuplicateSamples;
+        const long long id = out.Order[run[k]];
+        out.FirstDuplicate = out.FirstDuplicate < 0 ? id : std::min(out.FirstDuplicate, id);
+      }
+    }
   }
 }
 
@@ -114,6 +159,7 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
     });
   };
   WithTypedCoordinates(coordinates, gather);
+  FindDuplicates(words, out);
 }
 // Whether all positions lie on one plane or line (up to rounding): the smallest eigenvalue of
 // their covariance is negligible against the largest.
@@ -223,7 +269,7 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
       const std::uint32_t* ids = this->NeighborsOf(i);
       const bool ok = BuildLinearStencil(
         this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); },
-        this->Radius[i], LinearStencilView{ stencil.data(), nullptr }); // zero when singular
+        this->RadiusOf(i), LinearStencilView{ stencil.data(), nullptr }); // zero when singular
       std::copy(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride]);
       this->StencilState[i] = ok ? 1 : 2;
       singular.Local() += !ok;
@@ -332,7 +378,7 @@ bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
   });
   while (!build->Done)
   {
-    if (Aborted(aborted, 0.0))
+    if (Aborted(aborted, 0.25)) // after the sort
     {
       AbandonedBuilds::Add(std::move(worker), build);
       return false;
@@ -367,6 +413,10 @@ bool BuildNeighborhoods(
   auto start = Clock::now();
   SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
+  if (Aborted(aborted, 0.25))
+  {
+    return false;
+  }
 
   // Nearest neighbours, queried in storage (leaf) order: consecutive queries walk the same nodes.
   start = Clock::now();
@@ -375,63 +425,92 @@ bool BuildNeighborhoods(
     return false;
   }
   out.TreeSeconds = SecondsSince(start);
-  out.Ids.resize(n * stride);
-  out.Radius.resize(n);
-  std::atomic<std::size_t> duplicates(0);
-  std::atomic<long long> firstDuplicate(-1);
-  auto remember = [](std::atomic<long long>& first, long long i) { // the smallest id wins
-    long long expected = -1;
-    while ((expected < 0 || i < expected) && !first.compare_exchange_weak(expected, i))
-    {
-    }
-  };
-  vtkSMPThreadLocal<std::vector<double>> distances;
-  bool completed = ParallelForInBlocks(
-    n,
-    [&](std::size_t begin, std::size_t end) {
-      std::vector<double>& d2 = distances.Local();
-      d2.resize(stride);
-      double previousRadius = 0.0;
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        std::uint32_t* ids = &out.Ids[i * stride];
-        // The previous sample (its spatial neighbour) has about the same radius: search within
-        // a slightly larger one first, and without a bound only if that misses some.
-        const double bound = 1.44 * previousRadius * previousRadius;
-        if (!(bound > 0.0) ||
-          out.Index->NearestWithin(out.Position(i), stride, bound, ids, d2.data()) <
-            static_cast<std::size_t>(stride))
-        {
-          out.Index->Nearest(out.Position(i), stride, ids, d2.data());
-        }
-        if (ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride))
-        {
-          ++duplicates;
-          remember(firstDuplicate, out.Order[i]);
-        }
-        out.Radius[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
-        previousRadius = out.Radius[i];
-      }
-    },
-    aborted);
-  out.SearchSeconds = SecondsSince(start);
-  if (!completed)
+  if (Aborted(aborted, 0.75))
   {
     return false;
   }
+  out.Ids.resize(n * stride); // not initialised: pages cost memory only once a list is written
+  out.Radii.resize(n);
+  out.Rows.reset(new Neighborhoods::RowStates(n));
+
+  // The mean radius (for the checks of the data's scale), over a fixed sample of the samples.
+  const std::uint64_t every = RadiusSampleEvery(static_cast<double>(n));
+  std::vector<std::uint32_t> sample;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (out.InRadiusSample(i, every))
+    {
+      sample.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  out.EnsureNeighbors(sample);
+  double sumRadius = 0.0;
+  for (std::uint32_t i : sample)
+  {
+    sumRadius += out.RadiusOf(i);
+  }
+  out.MeanRadius = sample.empty() ? 0.0 : sumRadius / static_cast<double>(sample.size());
+  out.SearchSeconds = SecondsSince(start);
 
   out.GradientStencil.reset(new float[3 * n * stride]);
   out.StencilState.assign(n, 0);
   out.Flat = IsFlat(out.Positions);
-  out.DuplicateSamples = duplicates;
-  out.FirstDuplicate = firstDuplicate;
-  double sumRadius = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    sumRadius += out.Radius[i];
-  }
-  out.MeanRadius = n ? sumRadius / n : 0.0;
   return true;
+}
+
+void Neighborhoods::ComputeRow(std::size_t i) const
+{
+  std::atomic<unsigned char>& state = this->Rows->State[i];
+  unsigned char expected = 0;
+  if (!state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
+  {
+    while (state.load(std::memory_order_acquire) != 2) // another thread is computing it
+    {
+      std::this_thread::yield();
+    }
+    return;
+  }
+  const int stride = this->Stride;
+  std::uint32_t* ids = &this->Ids[i * stride];
+  std::vector<double> d2(static_cast<std::size_t>(stride));
+  this->Index->Nearest(this->Position(i), static_cast<std::size_t>(stride), ids, d2.data());
+  ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride);
+  this->Radii[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
+  ++this->Rows->Computed;
+  state.store(2, std::memory_order_release);
+}
+
+void Neighborhoods::EnsureAllNeighbors() const
+{
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(this->NumberOfSamples), 1024, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->EnsureRow(static_cast<std::size_t>(i));
+      }
+    });
+}
+
+bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const
+{
+  if (every <= 1)
+  {
+    return true;
+  }
+  std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
+  for (int k = 0; k < 3; ++k)
+  {
+    // Single precision: the choice must survive a trip through float coordinates (ParaView's
+    // Distribute Points writes float points).
+    const float coordinate = static_cast<float>(this->Positions[3 * i + k]);
+    std::uint32_t bits;
+    std::memcpy(&bits, &coordinate, sizeof bits);
+    hash ^= bits + 0x9e3779b97f4a7c15ULL + (hash << 6) + (hash >> 2);
+    hash ^= hash >> 31; // splitmix64's finaliser
+    hash *= 0xbf58476d1ce4e5b9ULL;
+    hash ^= hash >> 27;
+  }
+  return hash % every == 0;
 }
 
 } // namespace lsi

@@ -9,6 +9,8 @@
 #include "LevelSetParallel.h"
 #include "NearestNeighbors.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -48,6 +50,12 @@ struct UninitializedAllocator : std::allocator<T>
   }
 };
 
+/// The geometry of the sample cloud. Neighbour lists are computed when first asked for
+/// (NeighborsOf, RadiusOf), from any thread: the method only ever visits the seeded
+/// components and a band around their front, a few percent of a large snapshot's particles,
+/// so most lists are never needed. A list does not depend on when it is computed, so neither
+/// does any result. Call EnsureNeighbors on a large set before a serial loop over it: it
+/// computes the missing lists in parallel.
 struct Neighborhoods
 {
   std::size_t NumberOfSamples = 0;
@@ -57,9 +65,7 @@ struct Neighborhoods
   // that neighbours are near in memory.
   // Every index below is an index in that order; Order maps it back to the input point id.
   std::vector<std::uint32_t> Order;
-  std::vector<double> Positions;                                         // 3 per sample
-  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride per sample
-  std::vector<double> Radius; // h_i: distance to the farthest neighbour
+  std::vector<double> Positions; // 3 per sample
   std::unique_ptr<PointCloudIndex> Index;
 
   // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
@@ -69,7 +75,7 @@ struct Neighborhoods
   mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
   mutable std::size_t ComputedStencils = 0;
 
-  double MeanRadius = 0.0; // mean h_i
+  double MeanRadius = 0.0; // mean h_i over a sample of the samples (RadiusSample)
 
   // Seconds spent on each part of the build.
   double SortSeconds = 0.0, SearchSeconds = 0.0; // SearchSeconds includes TreeSeconds
@@ -78,7 +84,7 @@ struct Neighborhoods
 
   // Problems found while building (sample ids are input point ids); the filter turns them into
   // error messages.
-  std::size_t DuplicateSamples = 0;
+  std::size_t DuplicateSamples = 0; // samples at exactly the position of another one
   long long FirstDuplicate = -1;
   bool Flat = false;                       // all samples on one plane or line: no 3D fit anywhere
   mutable std::size_t SingularSamples = 0; // among the stencils computed so far
@@ -92,7 +98,31 @@ struct Neighborhoods
   // searches over the neighbour graph do not go on from them. Empty in a serial run.
   mutable std::vector<char> Truncated;
 
-  const std::uint32_t* NeighborsOf(std::size_t i) const { return &this->Ids[i * this->Stride]; }
+  /// The sample itself (slot 0) and its Stride - 1 nearest neighbours.
+  const std::uint32_t* NeighborsOf(std::size_t i) const
+  {
+    this->EnsureRow(i);
+    return &this->Ids[i * this->Stride];
+  }
+  /// h_i: the distance to the farthest of the neighbours.
+  double RadiusOf(std::size_t i) const
+  {
+    this->EnsureRow(i);
+    return this->Radii[i];
+  }
+  /// Computes the lists that `samples` (count indices) still lack, in parallel. Call from the
+  /// main thread between parallel loops.
+  template <typename Id>
+  void EnsureNeighbors(const Id* samples, std::size_t count) const;
+  template <typename Id>
+  void EnsureNeighbors(const std::vector<Id>& samples) const
+  {
+    this->EnsureNeighbors(samples.data(), samples.size());
+  }
+  void EnsureAllNeighbors() const;
+  /// How many lists have been computed so far.
+  std::size_t ComputedNeighborLists() const { return this->Rows ? this->Rows->Computed.load() : 0; }
+
   bool IsTruncated(std::size_t i) const { return !this->Truncated.empty() && this->Truncated[i]; }
   /// Computes the stencils that `samples` (count indices, no repeats) still lack, in parallel.
   /// Call from the main thread between parallel loops.
@@ -107,7 +137,64 @@ struct Neighborhoods
     return &this->GradientStencil[3 * i * this->Stride];
   }
   const double* Position(std::size_t i) const { return &this->Positions[3 * i]; }
+
+  /// Whether sample i belongs to the deterministic sample of about 1 in `every` samples used for
+  /// global scales: chosen by a hash of its coordinates, so the same particles are chosen
+  /// whatever their order, storage, precision (float or double) or MPI rank.
+  bool InRadiusSample(std::size_t i, std::uint64_t every) const;
+
+  // The lists' storage, allocated for every sample but not initialised: untouched pages cost
+  // no memory. RowState: 0 not computed, 1 being computed, 2 ready.
+  struct RowStates
+  {
+    explicit RowStates(std::size_t n)
+      : State(new std::atomic<unsigned char>[n]())
+    {
+    }
+    std::unique_ptr<std::atomic<unsigned char>[]> State;
+    std::atomic<std::size_t> Computed{ 0 };
+  };
+  mutable std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride each
+  mutable std::vector<double, UninitializedAllocator<double>> Radii;
+  std::unique_ptr<RowStates> Rows;
+
+private:
+  void EnsureRow(std::size_t i) const
+  {
+    if (this->Rows->State[i].load(std::memory_order_acquire) != 2)
+    {
+      this->ComputeRow(i);
+    }
+  }
+  void ComputeRow(std::size_t i) const;
 };
+
+/// About how many samples the global scales are taken over (Neighborhoods::InRadiusSample):
+/// every sample up to twice as many, about this many beyond.
+constexpr std::size_t RadiusSampleSize = 65536;
+inline std::uint64_t RadiusSampleEvery(double samples)
+{
+  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(samples / RadiusSampleSize));
+}
+
+/// Samples per list computed in one parallel batch below which a serial loop computes them
+/// as it goes (a parallel loop's start costs more than a few searches).
+constexpr std::size_t SerialNeighborSearches = 256;
+
+template <typename Id>
+void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
+{
+  if (count < SerialNeighborSearches)
+  {
+    return; // computed when asked for
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), 64, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      this->EnsureRow(static_cast<std::size_t>(samples[k]));
+    }
+  });
+}
 
 /// What a breadth-first search over the neighbour graph does with a neighbour it meets.
 enum class Visit
@@ -124,11 +211,17 @@ template <typename Decide>
 bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& queue, Decide&& decide,
   SerialAbortCheck* stop = nullptr)
 {
+  std::size_t searched = 0; // the queue's lists computed up to here, a wave at a time
   for (std::size_t head = 0; head < queue.size(); ++head)
   {
     if (stop && stop->Stop())
     {
       return false;
+    }
+    if (head == searched)
+    {
+      geometry.EnsureNeighbors(&queue[head], queue.size() - head);
+      searched = queue.size();
     }
     if (geometry.IsTruncated(queue[head]))
     {

@@ -9,27 +9,46 @@
 namespace lsi
 {
 
+std::vector<std::uint32_t> OwnedRadiusSample(
+  const Neighborhoods& geometry, const Communicator& ranks)
+{
+  double owned = 0.0;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    owned += ranks.Owns(i) ? 1.0 : 0.0;
+  }
+  const std::uint64_t every = RadiusSampleEvery(ranks.Sum(owned));
+  std::vector<std::uint32_t> sample;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (ranks.Owns(i) && geometry.InRadiusSample(i, every))
+    {
+      sample.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  geometry.EnsureNeighbors(sample);
+  return sample;
+}
+
 SurfaceScale ScaleAtSurface(
   const Neighborhoods& geometry, const std::vector<double>& dataSign, const Communicator& ranks)
 {
-  // Sums: of the radii at the surface, their count, and of all radii and theirs.
+  // Sums: of the radii at the surface, their count, and of all radii and theirs; over the
+  // fixed sample of the particles (InRadiusSample), the same whatever the ranks.
+  const std::vector<std::uint32_t> sample = OwnedRadiusSample(geometry, ranks);
   double sums[4] = { 0.0, 0.0, 0.0, 0.0 };
   double& sum = sums[0];
   double& count = sums[1];
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  for (const std::size_t i : sample)
   {
-    if (!ranks.Owns(i))
-    {
-      continue;
-    }
-    sums[2] += geometry.Radius[i];
+    sums[2] += geometry.RadiusOf(i);
     sums[3] += 1.0;
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
     {
       if (dataSign[ids[m]] != dataSign[i])
       {
-        sum += geometry.Radius[i];
+        sum += geometry.RadiusOf(i);
         ++count;
         break;
       }

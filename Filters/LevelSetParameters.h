@@ -33,6 +33,11 @@ struct RequestedParameters
   bool DataRefinement = true;
 };
 
+/// The owned samples of the fixed sample of about RadiusSampleSize particles over all ranks
+/// (Neighborhoods::InRadiusSample) that global scales are measured on, their lists computed.
+std::vector<std::uint32_t> OwnedRadiusSample(
+  const Neighborhoods& geometry, const Communicator& ranks = SingleProcess());
+
 /// The sampling scale where the surface is.
 struct SurfaceScale
 {
@@ -42,7 +47,8 @@ struct SurfaceScale
 
 /// Adaptive data (SPH) is sampled far more densely in some places than at the isosurface, so
 /// the scale is measured on the samples with a neighbour on the other side of the isovalue
-/// (`dataSign`, the sign of f - f_iso per sample), or on all samples if there is none.
+/// (`dataSign`, the sign of f - f_iso per sample), or on all samples if there is none; both
+/// among the fixed sample of OwnedRadiusSample (every particle up to 131,072 particles).
 SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign,
   const Communicator& ranks = SingleProcess());
 

@@ -175,7 +175,7 @@ std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox
     {
       continue;
     }
-    const double reach = std::max(geometry.Radius[i], supports.empty() ? 0.0 : supports[i]);
+    const double reach = std::max(geometry.RadiusOf(i), supports.empty() ? 0.0 : supports[i]);
     bool cut = false;
     for (int d = 0; d < 3; ++d)
     {

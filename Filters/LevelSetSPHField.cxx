@@ -3,6 +3,7 @@
 #include "LevelSetSPHField.h"
 
 #include "IsopointRefinement.h"
+#include "LevelSetParameters.h"
 #include "LevelSetSplines.h"
 
 #include "vtkAbstractArray.h"
@@ -378,12 +379,9 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
   // The samples next to the surface: a neighbour on the other side of the isovalue (all
   // samples if there is none). Under MPI, the owned samples of every rank.
   std::vector<double> supports, radii;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  const std::vector<std::uint32_t> sample = OwnedRadiusSample(geometry, ranks);
+  for (const std::size_t i : sample)
   {
-    if (!ranks.Owns(i))
-    {
-      continue;
-    }
     const bool above = values[geometry.Order[i]] > isoValue;
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
@@ -391,20 +389,17 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
       if ((values[geometry.Order[ids[m]]] > isoValue) != above)
       {
         supports.push_back(field.Support(i));
-        radii.push_back(geometry.Radius[i]);
+        radii.push_back(geometry.RadiusOf(i));
         break;
       }
     }
   }
   if (ranks.Sum(static_cast<double>(supports.size())) == 0.0)
   {
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    for (const std::size_t i : sample)
     {
-      if (ranks.Owns(i))
-      {
-        supports.push_back(field.Support(i));
-        radii.push_back(geometry.Radius[i]);
-      }
+      supports.push_back(field.Support(i));
+      radii.push_back(geometry.RadiusOf(i));
     }
   }
   ranks.GatherAll(supports);

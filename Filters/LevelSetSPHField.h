@@ -191,7 +191,7 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
 /// neighbour), among the samples next to the surface (a neighbour on the other side of
 /// `isoValue` in `values`, input order): about 1 or more for real SPH data, far less for
 /// placeholder smoothing lengths or ones that vanish at the surface, where the field cannot
-/// resolve it.
+/// resolve it. Measured on the fixed sample of OwnedRadiusSample.
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
   const std::vector<double>& values, double isoValue, const Communicator& ranks = SingleProcess());
 

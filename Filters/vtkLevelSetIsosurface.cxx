@@ -251,6 +251,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     {
       return false;
     }
+    // Every list, before the ghosts' are checked for cuts (Attach): the distributed path
+    // computes them all (see the README's Distributed section).
+    geometry->EnsureAllNeighbors();
     ranks.Attach(*geometry);
     double counts[2] = { static_cast<double>(ranks.GhostCount),
       static_cast<double>(original->GetNumberOfPoints()) };
@@ -323,6 +326,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   lsi::EnclosedInputs inside;
   inside.Geometry = geometry;
   inside.Phi = &phi;
+  inside.FarOutside = -lsi::ReinitializationHalfWidth(settings);
   inside.Particles = input;
   inside.ParticleCount = this->Internal->OriginalCount;
   inside.OriginalIds =
@@ -452,9 +456,10 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   const double band =
     this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
   std::vector<double> reach(n), support;
+  owned.EnsureAllNeighbors(); // every owned particle's halo counts
   for (std::size_t s = 0; s < n; ++s)
   {
-    reach[owned.Order[s]] = HaloRadii * owned.Radius[s] + band;
+    reach[owned.Order[s]] = HaloRadii * owned.RadiusOf(s) + band;
   }
   // The SPH field at a point sums every particle whose kernel reaches it.
   int association = -1;
@@ -629,6 +634,7 @@ void vtkLevelSetIsosurface::CheckPeriodicMargin(
     supports.push_back(field->Support(i));
   }
   double needed = 0.0;
+  geometry.EnsureAllNeighbors(); // every particle near a face counts (periodic boxes: all lists)
   const std::size_t cut = lsi::SamplesBeyondImages(
     geometry, internal.Box, this->PeriodicMargin, internal.OriginalCount, supports, needed);
   if (cut > 0)
@@ -659,14 +665,12 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
   {
     return nullptr;
   }
-  if (searched)
-  {
-    ++this->NeighborSearchCount;
-    this->NeighborSearchSeconds = SecondsSince(start);
-    this->SpatialSortSeconds = geometry->SortSeconds;
-    this->NearestNeighborSeconds = geometry->SearchSeconds;
-    this->TreeBuildSeconds = geometry->TreeSeconds;
-  }
+  // This run's time: the search's, or only the cache lookup's when the cache had them.
+  this->NeighborSearchCount += searched ? 1 : 0;
+  this->NeighborSearchSeconds = SecondsSince(start);
+  this->SpatialSortSeconds = searched ? geometry->SortSeconds : 0.0;
+  this->NearestNeighborSeconds = searched ? geometry->SearchSeconds : 0.0;
+  this->TreeBuildSeconds = searched ? geometry->TreeSeconds : 0.0;
   // The MLS gradient stencils are stored as floats (half the memory), in the data's unit of
   // length: their coefficients go as 1 / spacing, so spacings beyond 1e30 or below 1e-30
   // would overflow or vanish in float. Refuse them with a clear error instead.

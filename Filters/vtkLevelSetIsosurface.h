@@ -417,7 +417,9 @@ public:
   vtkGetMacro(EffectiveEpsilon, double);
   vtkGetMacro(EffectiveCurvatureEpsilon, double);
   vtkGetMacro(EffectiveTimeStep, double);
-  vtkGetMacro(NeighborSearchSeconds, double); // spatial sort + nearest neighbours
+  // spatial sort + nearest neighbours (only the cache lookup when it held them: the sort, nearest
+  // and tree times are then 0)
+  vtkGetMacro(NeighborSearchSeconds, double);
   vtkGetMacro(SpatialSortSeconds, double);
   vtkGetMacro(NearestNeighborSeconds, double); // kd-tree build + queries
   vtkGetMacro(TreeBuildSeconds, double);

@@ -104,28 +104,36 @@ inline SurfaceMetrics RunAndMeasure(vtkLevelSetIsosurface* filter, const Case& c
   return MeasureSurface(c, points, normals, samples, spacing);
 }
 
-/// The grid route on the case's particles ("f"), with the spatial step and grid spacing equal
-/// to the mean sample spacing over the data bounds, (volume / N)^(1/3), scored like the filter
-/// (its normals oriented out of f > f_iso like ours).
-inline SurfaceMetrics RunAndMeasureGridRoute(vtkPolyData* particles, const Case& c,
-  const std::vector<Eigen::Vector3d>& samples, double surfaceSpacing, int threads,
-  GridRouteResult& grid)
+/// The grid route's spatial step and grid spacing: the mean sample spacing over the data
+/// bounds, (volume / N)^(1/3).
+inline double MeanSpacingOverBounds(vtkPolyData* particles)
 {
   double bounds[6];
   particles->GetBounds(bounds);
-  const double meanSpacing = std::cbrt((bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
-    (bounds[5] - bounds[4]) / static_cast<double>(particles->GetNumberOfPoints()));
+  return std::cbrt((bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]) /
+    static_cast<double>(particles->GetNumberOfPoints()));
+}
+
+/// The centres of the case's seed spheres.
+inline std::vector<Eigen::Vector3d> SeedCentres(const Case& c)
+{
   std::vector<Eigen::Vector3d> seeds;
   for (const Sphere3& s : c.Seeds)
   {
     seeds.push_back(s.Center);
   }
-  grid = RunGridRoute(particles, "f", c.IsoValue, seeds, meanSpacing, threads);
-  std::vector<double> normals = grid.Normals;
+  return seeds;
+}
+
+/// Scores a grid-route mesh like the filter's isopoints (its normals oriented out of
+/// f > f_iso like ours).
+inline SurfaceMetrics MeasureGridSurface(const Case& c, const std::vector<double>& points,
+  std::vector<double> normals, const std::vector<Eigen::Vector3d>& samples, double surfaceSpacing)
+{
   double alignment = 0.0;
   for (std::size_t i = 0; i < normals.size() / 3; ++i)
   {
-    const Eigen::Vector3d g = c.Gradient(Eigen::Vector3d(&grid.Points[3 * i]));
+    const Eigen::Vector3d g = c.Gradient(Eigen::Vector3d(&points[3 * i]));
     alignment += Eigen::Vector3d(&normals[3 * i]).dot(-g);
   }
   if (alignment < 0.0)
@@ -135,7 +143,17 @@ inline SurfaceMetrics RunAndMeasureGridRoute(vtkPolyData* particles, const Case&
       v = -v;
     }
   }
-  return MeasureSurface(c, grid.Points, normals, samples, surfaceSpacing);
+  return MeasureSurface(c, points, normals, samples, surfaceSpacing);
+}
+
+/// The grid route on the case's particles ("f"), scored like the filter.
+inline SurfaceMetrics RunAndMeasureGridRoute(vtkPolyData* particles, const Case& c,
+  const std::vector<Eigen::Vector3d>& samples, double surfaceSpacing, int threads,
+  GridRouteResult& grid)
+{
+  grid = RunGridRoute(
+    particles, "f", c.IsoValue, SeedCentres(c), MeanSpacingOverBounds(particles), threads);
+  return MeasureGridSurface(c, grid.Points, grid.Normals, samples, surfaceSpacing);
 }
 
 /// Seconds of a whole filter run with 1 and with 2 threads (fresh filters, same particles);

@@ -97,61 +97,109 @@ inline void TriangleVertices(
   }
 }
 
-/// Grid over the particles' bounds with spacing `spacing`, which is also the kernel's spatial
-/// step. Shepard normalisation is on: without mass and density arrays it is what makes the
-/// interpolant a weighted average (off, values scale with the local particle count).
+/// The grid route in its three steps, each re-runnable on its own as ParaView re-runs a
+/// pipeline: an isovalue change re-contours the kept grid (and re-connects), a seed move only
+/// re-connects. Each step returns its seconds.
+class GridRouteSession
+{
+public:
+  /// Grid over the particles' bounds with spacing `spacing`, which is also the kernel's spatial
+  /// step. Shepard normalisation is on: without mass and density arrays it is what makes the
+  /// interpolant a weighted average (off, values scale with the local particle count).
+  GridRouteSession(
+    vtkPolyData* particles, const std::string& arrayName, double spacing, int threads)
+    : Particles(particles)
+    , ArrayName(arrayName)
+    , Spacing(spacing)
+    , Threads(threads)
+  {
+  }
+
+  double Interpolate()
+  {
+    return this->Timed([&]() {
+      double bounds[6];
+      this->Particles->GetBounds(bounds);
+      vtkNew<vtkImageData> grid;
+      int dims[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        dims[k] =
+          static_cast<int>(std::ceil((bounds[2 * k + 1] - bounds[2 * k]) / this->Spacing)) + 1;
+      }
+      grid->SetDimensions(dims);
+      grid->SetOrigin(bounds[0], bounds[2], bounds[4]);
+      grid->SetSpacing(this->Spacing, this->Spacing, this->Spacing);
+      this->GridPoints = static_cast<long long>(dims[0]) * dims[1] * dims[2];
+
+      vtkNew<vtkSPHQuinticKernel> kernel;
+      kernel->SetSpatialStep(this->Spacing);
+      vtkNew<vtkStaticPointLocator> locator;
+      vtkNew<vtkSPHInterpolator> interpolator;
+      interpolator->SetInputData(grid);
+      interpolator->SetSourceData(this->Particles);
+      interpolator->SetKernel(kernel);
+      interpolator->SetLocator(locator);
+      interpolator->SetShepardNormalization(true);
+      interpolator->SetNullPointsStrategyToNullValue();
+      interpolator->Update();
+      this->Grid = vtkSmartPointer<vtkImageData>::New();
+      this->Grid->ShallowCopy(interpolator->GetOutput());
+    });
+  }
+
+  double Contour(double isoValue)
+  {
+    return this->Timed([&]() {
+      this->Contourer->SetInputData(this->Grid);
+      this->Contourer->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, this->ArrayName.c_str());
+      this->Contourer->SetValue(0, isoValue);
+      this->Contourer->ComputeNormalsOn();
+      this->Contourer->ComputeScalarsOff();
+      this->Contourer->Update();
+    });
+  }
+
+  double Connect(const std::vector<Eigen::Vector3d>& seeds)
+  {
+    return this->Timed(
+      [&]() { this->Mesh = PiecesNearSeeds(this->Contourer->GetOutputPort(), seeds); });
+  }
+
+  vtkPolyData* GetMesh() const { return this->Mesh; }
+  long long GetGridPoints() const { return this->GridPoints; }
+
+private:
+  template <typename Step>
+  double Timed(Step&& step)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->Threads, "STDThread", false }, step);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  vtkPolyData* Particles;
+  std::string ArrayName;
+  double Spacing;
+  int Threads;
+  long long GridPoints = 0;
+  vtkSmartPointer<vtkImageData> Grid;
+  vtkNew<vtkFlyingEdges3D> Contourer;
+  vtkSmartPointer<vtkPolyData> Mesh;
+};
+
+/// The whole grid route once: interpolation, contour, the pieces nearest the seeds.
 inline GridRouteResult RunGridRoute(vtkPolyData* particles, const std::string& arrayName,
   double isoValue, const std::vector<Eigen::Vector3d>& seeds, double spacing, int threads)
 {
   GridRouteResult result;
-  using Clock = std::chrono::steady_clock;
-  auto seconds = [](Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-  };
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-    auto start = Clock::now();
-    double bounds[6];
-    particles->GetBounds(bounds);
-    vtkNew<vtkImageData> grid;
-    int dims[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      dims[k] = static_cast<int>(std::ceil((bounds[2 * k + 1] - bounds[2 * k]) / spacing)) + 1;
-    }
-    grid->SetDimensions(dims);
-    grid->SetOrigin(bounds[0], bounds[2], bounds[4]);
-    grid->SetSpacing(spacing, spacing, spacing);
-    result.GridPoints = static_cast<long long>(dims[0]) * dims[1] * dims[2];
-
-    vtkNew<vtkSPHQuinticKernel> kernel;
-    kernel->SetSpatialStep(spacing);
-    vtkNew<vtkStaticPointLocator> locator;
-    vtkNew<vtkSPHInterpolator> interpolator;
-    interpolator->SetInputData(grid);
-    interpolator->SetSourceData(particles);
-    interpolator->SetKernel(kernel);
-    interpolator->SetLocator(locator);
-    interpolator->SetShepardNormalization(true);
-    interpolator->SetNullPointsStrategyToNullValue();
-    interpolator->Update();
-    result.InterpolationSeconds = seconds(start);
-
-    start = Clock::now();
-    vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputConnection(interpolator->GetOutputPort());
-    contour->SetInputArrayToProcess(
-      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, arrayName.c_str());
-    contour->SetValue(0, isoValue);
-    contour->ComputeNormalsOn();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    result.ContourSeconds = seconds(start);
-
-    start = Clock::now();
-    vtkSmartPointer<vtkPolyData> mesh = PiecesNearSeeds(contour->GetOutputPort(), seeds);
-    result.ConnectivitySeconds = seconds(start);
-    TriangleVertices(mesh, result.Points, result.Normals);
-  });
+  GridRouteSession session(particles, arrayName, spacing, threads);
+  result.InterpolationSeconds = session.Interpolate();
+  result.ContourSeconds = session.Contour(isoValue);
+  result.ConnectivitySeconds = session.Connect(seeds);
+  result.GridPoints = session.GetGridPoints();
+  TriangleVertices(session.GetMesh(), result.Points, result.Normals);
   return result;
 }
 

@@ -1,0 +1,317 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The interactive benchmark (issue 16): what a user waits for, on the paper's one-component
+// case, this filter against the grid route (SPH interpolation onto a grid, Flying Edges,
+// connectivity), side by side in one process on the same particles:
+//   - the first run of each, per stage, and its mean distance to the exact surface;
+//   - re-runs after an isovalue change (moving 1% and 5% of the samples across it), a seed move (by
+//   half its
+//     radius, inside the same component) and a CurvatureWeight change; the grid route re-contours
+//     its kept grid (isovalue) or only re-connects (seed);
+//   - the whole filter with 1 and with 2 threads;
+//   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
+//     its peak resident memory per particle (the particles themselves included).
+// Prints a table and writes everything as JSON (--json FILE). Asserts nothing: the targets are
+// printed beside the measurements.
+//
+//   LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] [--json FILE]
+//   LevelSetInteractive --first-run-only N   (the child: prints "seconds bytes")
+#include "CaseRuns.h"
+#include "GridRoute.h"
+#include "PeakMemory.h"
+#include "SurfaceMetrics.h"
+#include "SyntheticCases.h"
+#include "SyntheticParticles.h"
+#include "vtkLevelSetIsosurface.h"
+
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using namespace lsi::cases;
+
+struct Options
+{
+  std::size_t Samples = 2000000;
+  std::size_t ScalingSamples = 20000000; // 0: no scaling runs
+  int Threads = 2;
+  std::string Json;
+  std::size_t FirstRunOnly = 0; // child mode
+};
+
+bool Parse(int argc, char* argv[], Options& o)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : "0"; };
+    if (a == "--samples")
+      o.Samples = std::strtoull(next(), nullptr, 10);
+    else if (a == "--scaling-samples")
+      o.ScalingSamples = std::strtoull(next(), nullptr, 10);
+    else if (a == "--threads")
+      o.Threads = std::atoi(next());
+    else if (a == "--json")
+      o.Json = next();
+    else if (a == "--first-run-only")
+      o.FirstRunOnly = std::strtoull(next(), nullptr, 10);
+    else
+      return false;
+  }
+  return o.Samples > 0 && o.Threads > 0;
+}
+
+// Named numbers, printed in insertion order and written as one flat JSON object.
+class Report
+{
+public:
+  void Add(const std::string& key, double value) { this->Values.emplace_back(key, value); }
+  void Print(std::ostream& out) const
+  {
+    for (const auto& kv : this->Values)
+    {
+      out << std::left << std::setw(52) << kv.first << " " << kv.second << "\n";
+    }
+  }
+  void WriteJson(const std::string& file) const
+  {
+    std::ofstream out(file);
+    out << std::setprecision(6) << "{\n";
+    for (std::size_t k = 0; k < this->Values.size(); ++k)
+    {
+      out << "  \"" << this->Values[k].first << "\": " << this->Values[k].second
+          << (k + 1 < this->Values.size() ? ",\n" : "\n");
+    }
+    out << "}\n";
+  }
+
+private:
+  std::vector<std::pair<std::string, double>> Values;
+};
+
+void Configure(vtkLevelSetIsosurface* filter, const Case& c, int threads)
+{
+  SetCaseInputs(filter, c);
+  filter->SetNumberOfThreads(threads);
+  filter->SetOutputTypeToIsopoints(); // accuracy is measured on the isopoints
+}
+
+// The filter's own stage times of its last run.
+void AddStages(Report& report, const std::string& prefix, vtkLevelSetIsosurface* filter)
+{
+  report.Add(prefix + "neighbours_s", filter->GetNeighborSearchSeconds());
+  report.Add(prefix + "initialisation_s", filter->GetInitializationSeconds());
+  report.Add(prefix + "evolution_s", filter->GetEvolutionSeconds());
+  report.Add(prefix + "isopoints_s", filter->GetIsopointSeconds());
+  report.Add(prefix + "outputs_s", filter->GetOutputSeconds());
+}
+
+double TimedUpdate(vtkLevelSetIsosurface* filter)
+{
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  return SecondsSince(start);
+}
+
+// The isovalues above `isoValue` with `fractions` of all samples between them and it.
+std::vector<double> IsoValuesAbove(
+  vtkPolyData* particles, double isoValue, const std::vector<double>& fractions)
+{
+  vtkDataArray* f = particles->GetPointData()->GetScalars();
+  std::vector<double> above;
+  for (vtkIdType i = 0; i < f->GetNumberOfTuples(); ++i)
+  {
+    if (f->GetTuple1(i) > isoValue)
+    {
+      above.push_back(f->GetTuple1(i));
+    }
+  }
+  std::sort(above.begin(), above.end());
+  std::vector<double> values;
+  for (double fraction : fractions)
+  {
+    const std::size_t k = static_cast<std::size_t>(fraction * f->GetNumberOfTuples());
+    values.push_back(above.empty() ? isoValue : above[std::min(k, above.size() - 1)]);
+  }
+  return values;
+}
+
+// Child mode: one first run at `samples`, the particle arrays freed of everything else.
+int FirstRunOnly(std::size_t samples, int threads)
+{
+  OneComponentCase c;
+  vtkSmartPointer<vtkPolyData> particles;
+  {
+    const std::vector<Eigen::Vector3d> positions = c.Samples(samples, 1);
+    particles = MakeParticles(c, positions);
+  }
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(particles);
+  Configure(filter, c, threads);
+  const double seconds = TimedUpdate(filter);
+  std::cout << seconds << " " << lsi::PeakMemoryBytes() << " "
+            << filter->GetOutput(0)->GetNumberOfPoints() << "\n";
+  return filter->GetOutput(0)->GetNumberOfPoints() > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+// Runs this program in child mode; false if it failed.
+bool RunChild(const char* self, std::size_t samples, int threads, double& seconds, double& bytes)
+{
+  std::ostringstream command;
+  command << "'" << self << "' --first-run-only " << samples << " --threads " << threads;
+  FILE* pipe = popen(command.str().c_str(), "r");
+  if (!pipe)
+  {
+    return false;
+  }
+  double points = 0.0;
+  const bool read = std::fscanf(pipe, "%lf %lf %lf", &seconds, &bytes, &points) == 3;
+  return pclose(pipe) == 0 && read;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  if (!Parse(argc, argv, o))
+  {
+    std::cerr << "usage: LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] "
+                 "[--json FILE]\n";
+    return EXIT_FAILURE;
+  }
+  if (o.FirstRunOnly)
+  {
+    return FirstRunOnly(o.FirstRunOnly, o.Threads);
+  }
+  Report report;
+  OneComponentCase c;
+  const std::vector<Eigen::Vector3d> samples = c.Samples(o.Samples, 1);
+  vtkSmartPointer<vtkPolyData> particles = MakeParticles(c, samples);
+  const double surfaceSpacing = c.SurfaceSpacing(o.Samples);
+  // Isovalue changes that move 1% and 5% of the samples across the isovalue: unit-free, and
+  // meaningful whatever the tails of the value distribution.
+  const std::vector<double> isoValues = IsoValuesAbove(particles, c.IsoValue, { 0.01, 0.05 });
+  report.Add("samples", static_cast<double>(o.Samples));
+  report.Add("threads", o.Threads);
+
+  // The grid route: first run, then an isovalue change and a seed move.
+  const std::vector<Eigen::Vector3d> seeds = SeedCentres(c);
+  std::vector<Eigen::Vector3d> movedSeeds = seeds;
+  movedSeeds[0].x() += 0.5 * c.Seeds[0].Radius;
+  lsi::GridRouteSession grid(particles, "f", MeanSpacingOverBounds(particles), o.Threads);
+  const double gridInterpolation = grid.Interpolate();
+  const double gridContour = grid.Contour(c.IsoValue);
+  const double gridConnect = grid.Connect(seeds);
+  std::vector<double> gridPoints, gridNormals;
+  lsi::TriangleVertices(grid.GetMesh(), gridPoints, gridNormals);
+  const SurfaceMetrics gridMetrics =
+    MeasureGridSurface(c, gridPoints, gridNormals, samples, surfaceSpacing);
+  const double gridFirst = gridInterpolation + gridContour + gridConnect;
+  double gridIso1 = grid.Contour(isoValues[0]);
+  gridIso1 += grid.Connect(seeds);
+  double gridIso5 = grid.Contour(isoValues[1]);
+  gridIso5 += grid.Connect(seeds);
+  grid.Contour(c.IsoValue);
+  const double gridSeed = grid.Connect(movedSeeds);
+  report.Add("grid_route.first_run_s", gridFirst);
+  report.Add("grid_route.interpolation_s", gridInterpolation);
+  report.Add("grid_route.contour_s", gridContour);
+  report.Add("grid_route.connectivity_s", gridConnect);
+  report.Add("grid_route.grid_points", static_cast<double>(grid.GetGridPoints()));
+  report.Add("grid_route.mean_distance_spacings", gridMetrics.MeanDistance);
+  report.Add("grid_route.isovalue_change_1pc_s", gridIso1);
+  report.Add("grid_route.isovalue_change_5pc_s", gridIso5);
+  report.Add("grid_route.seed_move_s", gridSeed);
+
+  // This filter: first run, then the same changes, each from the first run's settings.
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(particles);
+  Configure(filter, c, o.Threads);
+  double first = 0.0;
+  const SurfaceMetrics metrics = RunAndMeasure(filter, c, samples, surfaceSpacing, first);
+  report.Add("level_set.first_run_s", first);
+  AddStages(report, "level_set.first_run.", filter);
+  report.Add("level_set.first_run.unattributed_s",
+    first - filter->GetNeighborSearchSeconds() - filter->GetInitializationSeconds() -
+      filter->GetEvolutionSeconds() - filter->GetIsopointSeconds() - filter->GetOutputSeconds());
+  report.Add("level_set.mean_distance_spacings", metrics.MeanDistance);
+  report.Add("level_set.isopoints", static_cast<double>(metrics.Isopoints));
+
+  filter->SetIsoValue(isoValues[0]);
+  const double iso1 = TimedUpdate(filter);
+  AddStages(report, "level_set.isovalue_change_1pc.", filter);
+  filter->SetIsoValue(isoValues[1]);
+  const double iso5 = TimedUpdate(filter);
+  filter->SetIsoValue(c.IsoValue);
+  TimedUpdate(filter);
+  filter->SetSeedCenter(movedSeeds[0].data());
+  const double seed = TimedUpdate(filter);
+  AddStages(report, "level_set.seed_move.", filter);
+  filter->SetSeedCenter(seeds[0].data());
+  TimedUpdate(filter);
+  filter->SetCurvatureWeight(2.0 * filter->GetCurvatureWeight() + 0.05);
+  const double curvature = TimedUpdate(filter);
+  report.Add("level_set.isovalue_change_1pc_s", iso1);
+  report.Add("level_set.isovalue_change_5pc_s", iso5);
+  report.Add("level_set.seed_move_s", seed);
+  report.Add("level_set.curvature_weight_change_s", curvature);
+
+  // Threads: fresh filters on the same particles.
+  const std::array<double, 2> threads = SecondsWithOneAndTwoThreads(
+    particles, [&](vtkLevelSetIsosurface* timed) { SetCaseInputs(timed, c); });
+  report.Add("level_set.one_thread_s", threads[0]);
+  report.Add("level_set.two_threads_s", threads[1]);
+
+  // Scaling, each size in a process of its own (peak memory is per process).
+  double smallSeconds = 0, smallBytes = 0, largeSeconds = 0, largeBytes = 0;
+  const bool scaled = o.ScalingSamples > 0 &&
+    RunChild(argv[0], o.Samples, o.Threads, smallSeconds, smallBytes) &&
+    RunChild(argv[0], o.ScalingSamples, o.Threads, largeSeconds, largeBytes);
+  if (scaled)
+  {
+    report.Add("scaling.small_samples", static_cast<double>(o.Samples));
+    report.Add("scaling.small_first_run_s", smallSeconds);
+    report.Add("scaling.small_bytes_per_particle", smallBytes / o.Samples);
+    report.Add("scaling.large_samples", static_cast<double>(o.ScalingSamples));
+    report.Add("scaling.large_first_run_s", largeSeconds);
+    report.Add("scaling.large_bytes_per_particle", largeBytes / o.ScalingSamples);
+  }
+
+  // The issue's targets, as ratios.
+  report.Add("target.first_run_speedup (>= 10)", gridFirst / first);
+  report.Add("target.accuracy_ratio_grid_over_level_set (>= 1)",
+    gridMetrics.MeanDistance / metrics.MeanDistance);
+  report.Add("target.isovalue_change_1pc_over_grid (<= 5)", iso1 / gridIso1);
+  report.Add("target.isovalue_change_5pc_over_grid (<= 5)", iso5 / gridIso5);
+  report.Add("target.seed_move_over_grid (<= 5)", seed / gridSeed);
+  report.Add("target.two_thread_speedup (>= 1.85)", threads[0] / threads[1]);
+  if (scaled)
+  {
+    report.Add("target.large_over_small_time (<= 10.5)", largeSeconds / smallSeconds);
+    report.Add("target.large_bytes_per_particle (<= 250)", largeBytes / o.ScalingSamples);
+  }
+  std::cout << std::setprecision(4);
+  report.Print(std::cout);
+  if (!o.Json.empty())
+  {
+    report.WriteJson(o.Json);
+  }
+  return metrics.Isopoints > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
