@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -269,6 +270,25 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     return std::sqrt(d2) < 2.0 * s ? height : phi[i];
   };
 
+  // The distances of the touching samples, in parallel (a nearest-point query each near the
+  // surface); the sums below are serial, in particle order, so they do not depend on threads.
+  std::vector<std::uint32_t> touchingSamples;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (touching[i])
+    {
+      touchingSamples.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  std::vector<double> distances(geometry.NumberOfSamples, 0.0);
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(touchingSamples.size()), 256, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        distances[touchingSamples[k]] = distance(touchingSamples[k]);
+      }
+    });
+
   // One Sums per component that touches the surface (few), found through its root.
   std::vector<Sums> sums;
   std::vector<vtkIdType> rootOfSums;
@@ -290,7 +310,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     {
       continue;
     }
-    const double s = width(i), signedDistance = distance(i);
+    const double s = width(i), signedDistance = distances[i];
     const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
     const double mass = in.Mass ? in.Mass->GetTuple1(p) : 0.0;
     const double rho = in.Density ? in.Density->GetTuple1(p) : 0.0;

@@ -454,7 +454,13 @@ bool BuildNeighborhoods(
 
   out.GradientStencil.reset(new float[3 * n * stride]);
   out.StencilState.assign(n, 0);
-  out.Flat = IsFlat(out.Positions);
+  std::vector<double> sampled; // flatness too is judged on the fixed sample
+  sampled.reserve(3 * sample.size());
+  for (const std::uint32_t i : sample)
+  {
+    sampled.insert(sampled.end(), out.Position(i), out.Position(i) + 3);
+  }
+  out.Flat = IsFlat(sampled);
   return true;
 }
 
