@@ -98,6 +98,36 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
   }
 }
 
+// The inside samples and their neighbours, in storage order (the lists of the inside samples
+// are computed by the flood).
+std::vector<std::uint32_t> InsideAndNeighbors(
+  const Neighborhoods& geometry, const std::vector<char>& inside)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  std::vector<char> listed(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!inside[i] || geometry.IsTruncated(i))
+    {
+      continue;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 0; m < geometry.Stride; ++m)
+    {
+      listed[ids[m]] = 1;
+    }
+  }
+  std::vector<std::uint32_t> list;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (listed[i])
+    {
+      list.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  return list;
+}
+
 // Computes, a wave at a time in parallel, the neighbour lists that the distance propagation
 // below will read (most of them): of the samples within halfWidth of a sample that holds a
 // crossing, reached through the neighbour graph. Results do not depend on it, only speed (the
@@ -142,6 +172,8 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   FloodResult result;
   SerialAbortCheck stop(aborted);
   std::vector<char> inside = Flood(geometry, dataOffsets, inSeed, result, stop);
+  // The bubble searches start next to the inside: their lists first, in parallel.
+  geometry.EnsureNeighbors(InsideAndNeighbors(geometry, inside));
   FillBubbles(geometry, bubbleSize, inside, result, stop);
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
@@ -154,29 +186,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   // The crossings are looked for in the lists of the inside samples and of their neighbours
   // (not of every sample: most lists are never computed).
-  std::vector<std::uint32_t> nearFront;
-  {
-    std::vector<char> listed(n, 0);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      if (!inside[i] || geometry.IsTruncated(i))
-      {
-        continue;
-      }
-      const std::uint32_t* ids = geometry.NeighborsOf(i);
-      for (int m = 0; m < stride; ++m)
-      {
-        listed[ids[m]] = 1;
-      }
-    }
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      if (listed[i])
-      {
-        nearFront.push_back(static_cast<std::uint32_t>(i));
-      }
-    }
-  }
+  const std::vector<std::uint32_t> nearFront = InsideAndNeighbors(geometry, inside);
   geometry.EnsureNeighbors(nearFront);
   std::vector<std::uint32_t> holders; // the samples that hold a crossing
   for (const std::size_t i : nearFront)

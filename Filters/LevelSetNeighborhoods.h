@@ -188,12 +188,24 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
   {
     return; // computed when asked for
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), 64, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
+  // In storage (spatial) order: consecutive searches then walk the same part of the tree.
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::size_t i = static_cast<std::size_t>(samples[k]);
+    if (this->Rows->State[i].load(std::memory_order_relaxed) != 2)
     {
-      this->EnsureRow(static_cast<std::size_t>(samples[k]));
+      missing.push_back(i);
     }
-  });
+  }
+  std::sort(missing.begin(), missing.end());
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(missing.size()), 64, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        this->EnsureRow(missing[static_cast<std::size_t>(k)]);
+      }
+    });
 }
 
 /// What a breadth-first search over the neighbour graph does with a neighbour it meets.
