@@ -486,15 +486,17 @@ void Neighborhoods::ComputeRow(std::size_t i) const
   state.store(2, std::memory_order_release);
 }
 
-void Neighborhoods::EnsureAllNeighbors() const
+bool Neighborhoods::EnsureAllNeighbors(const AbortCheck& aborted) const
 {
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(this->NumberOfSamples), 1024, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
+  return ParallelForInBlocks(
+    this->NumberOfSamples,
+    [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
       {
-        this->EnsureRow(static_cast<std::size_t>(i));
+        this->EnsureRow(i);
       }
-    });
+    },
+    aborted);
 }
 
 bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const

@@ -119,7 +119,8 @@ struct Neighborhoods
   {
     this->EnsureNeighbors(samples.data(), samples.size());
   }
-  void EnsureAllNeighbors() const;
+  /// Computes every missing list, in parallel; false if `aborted` said to stop.
+  bool EnsureAllNeighbors(const AbortCheck& aborted = AbortCheck()) const;
   /// How many lists have been computed so far.
   std::size_t ComputedNeighborLists() const { return this->Rows ? this->Rows->Computed.load() : 0; }
 

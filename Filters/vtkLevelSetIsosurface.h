@@ -113,10 +113,16 @@ public:
   /** Centre and radius of the main seed sphere. A radius of 0 (the default) seeds the whole
    * data set (its bounding box), so every component is extracted. A negative radius means a
    * tenth of the data's largest extent (ParaView's default: a script that creates the filter
-   * before its input has bounds gets -0.2 from the bounds domain). Default centre (0, 0, 0). */
-  vtkSetVector3Macro(SeedCenter, double);
+   * before its input has bounds gets -0.2 from the bounds domain). Default centre (0, 0, 0).
+   * With the flood start, a re-run that only moved the seeds and floods the same samples
+   * hands on the last outputs (ReusedLastOutputs). */
+  void SetSeedCenter(double x, double y, double z);
+  void SetSeedCenter(const double center[3])
+  {
+    this->SetSeedCenter(center[0], center[1], center[2]);
+  }
   vtkGetVector3Macro(SeedCenter, double);
-  vtkSetMacro(SeedRadius, double);
+  void SetSeedRadius(double radius);
   vtkGetMacro(SeedRadius, double);
   ///@}
 
@@ -405,6 +411,9 @@ public:
   ///@{
   /** Read-only results of the last execution. */
   vtkGetMacro(NeighborSearchCount, int); // how many times the neighbourhoods were built
+  // Whether the last run only moved the seeds within the same flooded samples and handed on
+  // the run before's outputs (the evolution, isopoint and output stages then take 0 s).
+  vtkGetMacro(ReusedLastOutputs, bool);
   vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);
@@ -495,6 +504,12 @@ protected:
          DataRefinementSeconds = 0.0, OutputSeconds = 0.0;
 
 private:
+  // Seed changes mark the filter modified through this: when nothing else changed since the
+  // last run, SeedsOnlyTime is the filter's modification time after them.
+  void SeedsModified();
+  vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0;
+  bool ReusedLastOutputs = false;
+
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
   void operator=(const vtkLevelSetIsosurface&) = delete;
 

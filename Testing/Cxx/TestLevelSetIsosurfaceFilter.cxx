@@ -240,6 +240,99 @@ void TestThinLayers()
   }
 }
 
+// Two balls of radius 15 centred at x = 30 and x = 75.
+vtkSmartPointer<vtkPolyData> TwoSeparateBalls(vtkIdType count)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const double x[3] = { random->GetNextRangeValue(0.0, 105.0),
+      random->GetNextRangeValue(0.0, 60.0), random->GetNextRangeValue(0.0, 60.0) };
+    points->InsertNextPoint(x);
+    auto distance = [&](double cx) {
+      return std::sqrt(
+        (x[0] - cx) * (x[0] - cx) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
+    };
+    f->InsertNextValue(std::max(15.0 - distance(30.0), 15.0 - distance(75.0)));
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->GetPointData()->AddArray(f);
+  return data;
+}
+
+double MeanX(vtkPolyData* points)
+{
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    sum += points->GetPoint(i)[0];
+  }
+  return points->GetNumberOfPoints() ? sum / points->GetNumberOfPoints() : 0.0;
+}
+
+// A re-run that only moved the seed inside the same component hands on the last outputs; any
+// other change (another component, the isovalue, the input, the seed-sphere start) runs again.
+void TestReuseAfterSeedMove()
+{
+  vtkSmartPointer<vtkPolyData> data = TwoSeparateBalls(60000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  filter->SetSeedRadius(5);
+  filter->Update();
+  const vtkIdType count = filter->GetOutput(0)->GetNumberOfPoints();
+  double first[3];
+  filter->GetOutput(0)->GetPoint(count / 2, first);
+  const int iterations = filter->GetNumberOfIterationsPerformed();
+  Check(!filter->GetReusedLastOutputs() && count > 500, "first run computes");
+
+  filter->SetSeedCenter(33, 29, 31); // inside the same ball
+  filter->Update();
+  double again[3];
+  filter->GetOutput(0)->GetPoint(count / 2, again);
+  Check(filter->GetReusedLastOutputs(), "a seed moved inside the component reuses the outputs");
+  Check(filter->GetOutput(0)->GetNumberOfPoints() == count && again[0] == first[0] &&
+      again[1] == first[1] && again[2] == first[2] &&
+      filter->GetNumberOfIterationsPerformed() == iterations &&
+      filter->GetOutput(1)->GetPointData()->GetArray("LevelSet") &&
+      vtkTable::SafeDownCast(filter->GetOutputDataObject(3))->GetNumberOfRows() > 0,
+    "the reused outputs are the last ones, all four");
+
+  filter->SetSeedCenter(75, 30, 30); // the other ball
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs() && std::abs(MeanX(filter->GetOutput(0)) - 75.0) < 1.0,
+    "a seed moved to the other component runs again (mean x " +
+      std::to_string(MeanX(filter->GetOutput(0))) + ")");
+
+  filter->SetSeedCenter(30, 30, 30);
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs() && std::abs(MeanX(filter->GetOutput(0)) - 30.0) < 1.0,
+    "and back to the first one runs again");
+
+  filter->SetSeedCenter(31, 30, 30);
+  filter->SetIsoValue(1.0);
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs(), "a seed move with an isovalue change runs again");
+
+  filter->SetSeedCenter(30, 31, 30);
+  data->GetPointData()->GetArray("f")->SetTuple1(
+    0, data->GetPointData()->GetArray("f")->GetTuple1(0));
+  data->GetPointData()->GetArray("f")->Modified();
+  data->Modified();
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs(), "a seed move after the input changed runs again");
+
+  filter->SetInitializationToSeedSpheres();
+  filter->Update();
+  filter->SetSeedCenter(30, 30, 31);
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs(), "the seed-sphere start always runs again");
+}
+
 void TestReuseOfNeighbours()
 {
   vtkNew<vtkPolyData> data = Ball(20000);
@@ -683,6 +776,7 @@ int main()
   TestThinLayers();
   TestEnclosedComponents();
   TestReuseOfNeighbours();
+  TestReuseAfterSeedMove();
   TestProgressThroughStages();
   TestSeedRadiusMeanings();
   TestBadInput();
