@@ -464,7 +464,7 @@ bool BuildNeighborhoods(
   return true;
 }
 
-void Neighborhoods::ComputeRow(std::size_t i) const
+void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
 {
   std::atomic<unsigned char>& state = this->Rows->State[i];
   unsigned char expected = 0;
@@ -479,7 +479,14 @@ void Neighborhoods::ComputeRow(std::size_t i) const
   const int stride = this->Stride;
   std::uint32_t* ids = &this->Ids[i * stride];
   std::vector<double> d2(static_cast<std::size_t>(stride));
-  this->Index->Nearest(this->Position(i), static_cast<std::size_t>(stride), ids, d2.data());
+  // A search within a little more than a nearby sample's radius finds the same neighbours (ties
+  // included: both walks visit the same leaves in the same order) when it finds enough.
+  const std::size_t k = static_cast<std::size_t>(stride);
+  const double bound = 1.44 * nearbyRadius * nearbyRadius;
+  if (!(bound > 0.0) || this->Index->NearestWithin(this->Position(i), k, bound, ids, d2.data()) < k)
+  {
+    this->Index->Nearest(this->Position(i), k, ids, d2.data());
+  }
   ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride);
   this->Radii[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
   ++this->Rows->Computed;

@@ -160,14 +160,15 @@ struct Neighborhoods
   std::unique_ptr<RowStates> Rows;
 
 private:
-  void EnsureRow(std::size_t i) const
+  void EnsureRow(std::size_t i, double nearbyRadius = 0.0) const
   {
     if (this->Rows->State[i].load(std::memory_order_acquire) != 2)
     {
-      this->ComputeRow(i);
+      this->ComputeRow(i, nearbyRadius);
     }
   }
-  void ComputeRow(std::size_t i) const;
+  /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
+  void ComputeRow(std::size_t i, double nearbyRadius) const;
 };
 
 /// About how many samples the global scales are taken over (Neighborhoods::InRadiusSample):
@@ -200,13 +201,21 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
     }
   }
   std::sort(missing.begin(), missing.end());
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(missing.size()), 64, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType k = begin; k < end; ++k)
+  // In runs of 64, each search bounded first by the radius of the one before it (its spatial
+  // neighbour): the lists are exact either way, the bound only prunes the tree walk.
+  constexpr std::size_t Run = 64;
+  const std::size_t runs = (missing.size() + Run - 1) / Run;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(runs), [&](vtkIdType first, vtkIdType last) {
+    for (std::size_t r = static_cast<std::size_t>(first); r < static_cast<std::size_t>(last); ++r)
+    {
+      double nearby = 0.0;
+      for (std::size_t k = r * Run; k < std::min(missing.size(), (r + 1) * Run); ++k)
       {
-        this->EnsureRow(missing[static_cast<std::size_t>(k)]);
+        this->EnsureRow(missing[k], nearby);
+        nearby = this->Radii[missing[k]];
       }
-    });
+    }
+  });
 }
 
 /// What a breadth-first search over the neighbour graph does with a neighbour it meets.
