@@ -506,6 +506,49 @@ void TestJoinedTree()
   }
 }
 
+// The neighbour lists are computed when first needed, some with a search bounded by a nearby
+// sample's radius (LevelSetNeighborhoods): the bound must not change the list, not even which of
+// several samples at the same distance comes last. On a lattice, 10 neighbours cut through the
+// shell of 12 at distance sqrt(2).
+void TestBoundedSearchKeepsTies()
+{
+  auto runInTurn = [](std::vector<std::function<void()>>& tasks) {
+    for (auto& task : tasks)
+    {
+      task();
+    }
+  };
+  const int side = 14;
+  std::vector<double> xyz;
+  for (int x = 0; x < side; ++x)
+    for (int y = 0; y < side; ++y)
+      for (int z = 0; z < side; ++z)
+        xyz.insert(xyz.end(), { double(x), double(y), double(z) });
+  std::vector<std::uint32_t> oldIndex;
+  const lsi::PointCloudIndex index(xyz, oldIndex, 3, runInTurn);
+  const std::size_t n = xyz.size() / 3, k = 11;
+  std::vector<std::uint32_t> ids(k), bounded(k);
+  std::vector<double> d2(k), boundedD2(k);
+  std::size_t compared = 0, same = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    index.Nearest(&xyz[3 * i], k, ids.data(), d2.data());
+    for (const double factor : { 1.0, 1.2, 2.0, 9.0 })
+    {
+      if (index.NearestWithin(
+            &xyz[3 * i], k, factor * d2[k - 1] * 1.0000001, bounded.data(), boundedD2.data()) == k)
+      {
+        ++compared;
+        same += ids == bounded && d2 == boundedD2 ? 1 : 0;
+      }
+    }
+  }
+  const std::string what =
+    "a bounded search keeps the unbounded one's neighbours, ties included (" +
+    std::to_string(same) + " of " + std::to_string(compared) + ")";
+  Check(compared == 4 * n && same == compared, what.c_str());
+}
+
 void TestRosenthalLinsen()
 {
   // phi relaxes towards g by the rate, and never by more than the step bound.
@@ -737,6 +780,7 @@ int main()
   TestSPHKernelGradients();
   TestSpatialOrder();
   TestJoinedTree();
+  TestBoundedSearchKeepsTies();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
   TestSolveOnLine();
