@@ -75,7 +75,7 @@ struct Neighborhoods
   mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
   mutable std::size_t ComputedStencils = 0;
 
-  double MeanRadius = 0.0; // mean h_i over a sample of the samples (RadiusSample)
+  double MeanRadius = 0.0; // mean h_i over the fixed sample of the samples (InRadiusSample)
 
   // Seconds spent on each part of the build.
   double SortSeconds = 0.0, SearchSeconds = 0.0; // SearchSeconds includes TreeSeconds
