@@ -165,16 +165,31 @@ void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t
 }
 } // namespace
 
-FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
+std::vector<char> FloodedInside(const Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted)
+  FloodResult& result, const AbortCheck& aborted)
 {
-  FloodResult result;
   SerialAbortCheck stop(aborted);
   std::vector<char> inside = Flood(geometry, dataOffsets, inSeed, result, stop);
   // The bubble searches start next to the inside: their lists first, in parallel.
   geometry.EnsureNeighbors(InsideAndNeighbors(geometry, inside));
   FillBubbles(geometry, bubbleSize, inside, result, stop);
+  result.Aborted = stop.WasStopped();
+  return inside;
+}
+
+FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted)
+{
+  FloodResult result;
+  std::vector<char> inside =
+    FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, result, aborted);
+  SerialAbortCheck stop(aborted);
+  if (result.Aborted)
+  {
+    return result;
+  }
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
   // carries the crossing nearest to it found so far and offers it to its neighbours.
@@ -253,7 +268,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       }
     }
   }
-  result.Aborted = stop.WasStopped();
+  result.Aborted = result.Aborted || stop.WasStopped();
   phi.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

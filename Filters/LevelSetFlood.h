@@ -26,6 +26,12 @@ struct FloodResult
   bool Aborted = false;          // stopped on request; phi is then incomplete
 };
 
+/// The flood alone: the samples of the seeds' components, with their small bubbles filled
+/// (where FloodedSignedDistance's phi is positive). Arguments as below.
+std::vector<char> FloodedInside(const Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
+  FloodResult& result, const AbortCheck& aborted);
+
 /// `dataOffsets`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
 /// `inSeed`: whether each sample lies in a seed. Outside pockets of fewer than `bubbleSize`
 /// samples enclosed by the inside are noise below the neighbourhood scale: they are filled.

@@ -46,6 +46,12 @@ struct LastOutputs
   vtkSmartPointer<vtkTable> Convergence, Enclosed;
   int Iterations = 0;
   bool Converged = false;
+  // For the quick check of a seed move (serial runs with the flood start, no periodic box and
+  // no merged duplicates): the flooded samples, f - f_iso and the spacing, in storage order.
+  bool QuickCheck = false;
+  std::vector<char> Inside;
+  std::vector<double> DataOffsets;
+  double Spacing = 0.0;
 
   /// Keeps shallow copies of a successful run's outputs.
   void Remember(
@@ -80,6 +86,17 @@ struct LastOutputs
   }
 
   void Forget() { *this = LastOutputs(); }
+
+  /// Whether `phi` (the flood's initial level set) marks exactly the samples flooded last time.
+  static std::vector<char> InsideOf(const std::vector<double>& phi)
+  {
+    std::vector<char> inside(phi.size());
+    for (std::size_t i = 0; i < phi.size(); ++i)
+    {
+      inside[i] = phi[i] > 0.0;
+    }
+    return inside;
+  }
 };
 
 } // namespace lsi

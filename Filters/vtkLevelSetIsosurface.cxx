@@ -106,6 +106,67 @@ void vtkLevelSetIsosurface::SeedsModified()
   this->SeedsOnlyTime = onlySeeds ? this->GetMTime() : 0;
 }
 
+bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
+  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  if (!last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
+    input->GetMTime() != last.InputTime || !input->GetPoints())
+  {
+    return false;
+  }
+  // Seeds the method would refuse go the long way, which reports them.
+  std::vector<std::pair<const char*, double>> seedNumbers = {
+    { "SeedCenter[0]", this->SeedCenter[0] }, { "SeedCenter[1]", this->SeedCenter[1] },
+    { "SeedCenter[2]", this->SeedCenter[2] }, { "SeedRadius", this->SeedRadius }
+  };
+  for (double value : this->AdditionalSeeds)
+  {
+    seedNumbers.emplace_back("AdditionalSeeds", value);
+  }
+  const double anyRange[2] = { this->IsoValue - 1.0, this->IsoValue + 1.0 }; // checked last run
+  if (this->AdditionalSeeds.size() % 4 != 0 || !lsi::NonFiniteParameter(seedNumbers).empty() ||
+    !lsi::CheckRangeAndSeeds(anyRange, this->IsoValue, this->AdditionalSeeds).empty())
+  {
+    return false;
+  }
+  bool searched = false;
+  const lsi::Neighborhoods* geometry =
+    this->Internal->Cache.Get(input->GetPoints(), this->NumberOfNeighbors,
+      static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
+  if (!geometry || searched || geometry->NumberOfSamples != last.Inside.size())
+  {
+    return false;
+  }
+  double bounds[6];
+  this->Bounds(input, bounds);
+  const std::vector<double> spheres =
+    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
+  std::vector<double> seedDistance;
+  const lsi::SeedSphereStart seeds =
+    lsi::SeedSphereDistance(*geometry, spheres, bounds, 0.5 * last.Spacing, seedDistance);
+  if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
+  {
+    return false;
+  }
+  lsi::FloodResult flood;
+  const std::vector<char> inside = lsi::FloodedInside(*geometry, last.DataOffsets, seeds.InSeed,
+    static_cast<std::size_t>(geometry->Stride), flood, this->Stage(InitializationStage));
+  if (flood.Aborted || flood.SeedSamples == 0 || inside != last.Inside)
+  {
+    return false;
+  }
+  last.Restore(surfaceOutput, particleOutput, convergence, enclosed);
+  this->NumberOfIterationsPerformed = last.Iterations;
+  this->Converged = last.Converged;
+  this->ReusedLastOutputs = true;
+  this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
+    this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
+      this->OutputSeconds = 0.0;
+  this->LastRunTime = this->GetMTime();
+  return true;
+}
+
 void vtkLevelSetIsosurface::SetSeedCenter(double x, double y, double z)
 {
   if (!(this->SeedCenter[0] == x && this->SeedCenter[1] == y && this->SeedCenter[2] == z))
@@ -234,7 +295,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   vtkPointSet* requested = input;
   lsi::LastOutputs& last = this->Internal->Last;
   const bool couldReuse = onlySeedsChanged && last.Valid;
-  last.Valid = false; // until this run succeeds
   lsi::Distribution ranks(this->Controller);
   this->Internal->Ranks = &ranks;
   struct Forget // the steps below must not keep a pointer to this execution's ranks
@@ -247,6 +307,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
       Filter->CommunicationSeconds = Ranks.CommunicationSeconds;
     }
   } forget{ this, ranks };
+  if (couldReuse && !ranks.Distributed() &&
+    this->ReuseAfterSeedMove(input, surfaceOutput, particleOutput, convergence, enclosed))
+  {
+    return true;
+  }
+  last.Valid = false;         // until this run succeeds
   std::vector<double> values; // f, in input order
   if (!this->ValidateInput(input, values))
   {
@@ -331,6 +397,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // The same flooded samples give the same initial level set and so the same outputs (serial
   // runs with the flood start only: a periodic cell around the seed moves with it).
   const std::uint64_t start = lsi::Fingerprint(phi);
+  last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() &&
+    !this->Internal->Box.Enabled && mergedId.empty();
+  last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
+  last.DataOffsets = last.QuickCheck ? dataOffsets : std::vector<double>();
+  last.Spacing = settings.Spacing;
   if (couldReuse && this->Initialization == FLOOD && !ranks.Distributed() &&
     !this->Internal->Box.Enabled && last.Match(requested, start))
   {

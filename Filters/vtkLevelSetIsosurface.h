@@ -507,6 +507,10 @@ private:
   // Seed changes mark the filter modified through this: when nothing else changed since the
   // last run, SeedsOnlyTime is the filter's modification time after them.
   void SeedsModified();
+  // With only the seeds moved since the last run: floods from the new seeds and, if the same
+  // samples are flooded, hands on the last outputs. False: run the method.
+  bool ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
+    vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
   vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0;
   bool ReusedLastOutputs = false;
 

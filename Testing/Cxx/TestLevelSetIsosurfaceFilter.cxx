@@ -302,6 +302,19 @@ void TestReuseAfterSeedMove()
       vtkTable::SafeDownCast(filter->GetOutputDataObject(3))->GetNumberOfRows() > 0,
     "the reused outputs are the last ones, all four");
 
+  filter->SetSeedCenter(32, 31, 29); // again inside: the flood confirms it
+  filter->Update();
+  Check(filter->GetReusedLastOutputs() && filter->GetOutput(0)->GetNumberOfPoints() == count,
+    "a second move inside the component reuses them too");
+
+  filter->SetSeedCenter(5, 5, 5); // outside both balls: the usual error, empty outputs
+  ExpectError(filter, "No sample inside the seed sphere", "a seed moved out of every component");
+  Check(!filter->GetReusedLastOutputs(), "a seed moved out of the object is not a reuse");
+  filter->SetSeedCenter(30, 30, 30);
+  filter->Update();
+  Check(!filter->GetReusedLastOutputs() && filter->GetOutput(0)->GetNumberOfPoints() == count,
+    "after an error, the run is whole again");
+
   filter->SetSeedCenter(75, 30, 30); // the other ball
   filter->Update();
   Check(!filter->GetReusedLastOutputs() && std::abs(MeanX(filter->GetOutput(0)) - 75.0) < 1.0,
