@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkPointSet.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -187,11 +188,13 @@ void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>
   const std::size_t n = geometry.NumberOfSamples;
   dataOffsets.resize(n);
   dataSign.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    dataOffsets[i] = values[geometry.Order[i]] - isoValue;
-    dataSign[i] = Sign(dataOffsets[i]);
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      dataOffsets[i] = values[geometry.Order[i]] - isoValue;
+      dataSign[i] = Sign(dataOffsets[i]);
+    }
+  });
 }
 
 } // namespace lsi

@@ -435,14 +435,8 @@ bool BuildNeighborhoods(
 
   // The mean radius (for the checks of the data's scale), over a fixed sample of the samples.
   const std::uint64_t every = RadiusSampleEvery(static_cast<double>(n));
-  std::vector<std::uint32_t> sample;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (out.InRadiusSample(i, every))
-    {
-      sample.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
+  const std::vector<std::uint32_t> sample =
+    out.RadiusSampleWhere(every, [](std::size_t) { return true; });
   out.EnsureNeighbors(sample);
   double sumRadius = 0.0;
   for (std::uint32_t i : sample)

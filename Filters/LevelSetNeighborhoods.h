@@ -143,6 +143,29 @@ struct Neighborhoods
   /// global scales: chosen by a hash of its coordinates, so the same particles are chosen
   /// whatever their order, storage, precision (float or double) or MPI rank.
   bool InRadiusSample(std::size_t i, std::uint64_t every) const;
+  /// The samples of that sample for which keep(i) holds, in storage order (chosen in parallel).
+  template <typename Keep>
+  std::vector<std::uint32_t> RadiusSampleWhere(std::uint64_t every, Keep&& keep) const
+  {
+    std::vector<char> chosen(this->NumberOfSamples);
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(this->NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          chosen[i] = keep(static_cast<std::size_t>(i)) &&
+            this->InRadiusSample(static_cast<std::size_t>(i), every);
+        }
+      });
+    std::vector<std::uint32_t> sample;
+    for (std::size_t i = 0; i < this->NumberOfSamples; ++i)
+    {
+      if (chosen[i])
+      {
+        sample.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+    return sample;
+  }
 
   // The lists' storage, allocated for every sample but not initialised: untouched pages cost
   // no memory. RowState: 0 not computed, 1 being computed, 2 ready.

@@ -18,14 +18,8 @@ std::vector<std::uint32_t> OwnedRadiusSample(
     owned += ranks.Owns(i) ? 1.0 : 0.0;
   }
   const std::uint64_t every = RadiusSampleEvery(ranks.Sum(owned));
-  std::vector<std::uint32_t> sample;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (ranks.Owns(i) && geometry.InRadiusSample(i, every))
-    {
-      sample.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
+  std::vector<std::uint32_t> sample =
+    geometry.RadiusSampleWhere(every, [&](std::size_t i) { return ranks.Owns(i); });
   geometry.EnsureNeighbors(sample);
   return sample;
 }
