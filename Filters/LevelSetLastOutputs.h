@@ -4,7 +4,7 @@
 // seeds only choose which components of {f > f_iso} are flooded: a seed dragged inside the same
 // component floods the same samples and gives the same initial level set, so the evolution, the
 // isopoints and every output would come out the same. The filter then hands these on instead
-// of recomputing them (checked by the initial level set's fingerprint, not assumed).
+// of recomputing them (checked by flooding from the new seeds, not assumed).
 #ifndef LevelSetLastOutputs_h
 #define LevelSetLastOutputs_h
 
@@ -14,34 +14,16 @@
 #include "vtkTable.h"
 #include "vtkType.h"
 
-#include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace lsi
 {
-
-/// An order-dependent 64-bit hash of the values' bits (splitmix64 steps).
-inline std::uint64_t Fingerprint(const std::vector<double>& values)
-{
-  std::uint64_t h = values.size();
-  for (const double v : values)
-  {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h ^= bits + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h ^= h >> 31;
-    h *= 0xbf58476d1ce4e5b9ULL;
-  }
-  return h ^ (h >> 29);
-}
 
 struct LastOutputs
 {
   bool Valid = false;
   const vtkPointSet* Input = nullptr; // identity only, never dereferenced
   vtkMTimeType InputTime = 0;
-  std::uint64_t StartFingerprint = 0; // of the initial level set
   vtkSmartPointer<vtkPolyData> Surface, Particles;
   vtkSmartPointer<vtkTable> Convergence, Enclosed;
   int Iterations = 0;
@@ -68,14 +50,6 @@ struct LastOutputs
     this->Valid = true;
   }
 
-  /// Whether they (if kept) are this run's outputs too: the same input, unmodified, and the
-  /// same initial level set.
-  bool Match(vtkPointSet* input, std::uint64_t startFingerprint) const
-  {
-    return this->Surface && input == this->Input && input->GetMTime() == this->InputTime &&
-      startFingerprint == this->StartFingerprint;
-  }
-
   void Restore(
     vtkPolyData* surface, vtkPolyData* particles, vtkTable* convergence, vtkTable* enclosed) const
   {
@@ -85,9 +59,7 @@ struct LastOutputs
     enclosed->ShallowCopy(this->Enclosed);
   }
 
-  void Forget() { *this = LastOutputs(); }
-
-  /// Whether `phi` (the flood's initial level set) marks exactly the samples flooded last time.
+  /// The samples the flood's initial level set `phi` marks inside (positive).
   static std::vector<char> InsideOf(const std::vector<double>& phi)
   {
     std::vector<char> inside(phi.size());

@@ -394,27 +394,13 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  // The same flooded samples give the same initial level set and so the same outputs (serial
-  // runs with the flood start only: a periodic cell around the seed moves with it).
-  const std::uint64_t start = lsi::Fingerprint(phi);
+  // What a later seed move needs to recognise the same flood (ReuseAfterSeedMove): serial runs
+  // with the flood start only (a periodic cell around the seed moves with it).
   last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() &&
     !this->Internal->Box.Enabled && mergedId.empty();
   last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
   last.DataOffsets = last.QuickCheck ? dataOffsets : std::vector<double>();
   last.Spacing = settings.Spacing;
-  if (couldReuse && this->Initialization == FLOOD && !ranks.Distributed() &&
-    !this->Internal->Box.Enabled && last.Match(requested, start))
-  {
-    last.Restore(surfaceOutput, particleOutput, convergence, enclosed);
-    last.Valid = true;
-    this->NumberOfIterationsPerformed = last.Iterations;
-    this->Converged = last.Converged;
-    this->ReusedLastOutputs = true;
-    this->EvolutionSeconds = this->IsopointSeconds = this->CompletionSeconds =
-      this->DataRefinementSeconds = this->OutputSeconds = 0.0;
-    this->LastRunTime = this->GetMTime();
-    return true;
-  }
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
   if (!this->Evolve(*geometry, dataSign, dataOffsets, settings, phi, iterations))
   {
@@ -474,7 +460,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Input = requested;
   last.InputTime = requested->GetMTime();
-  last.StartFingerprint = start;
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   this->LastRunTime = this->GetMTime();
