@@ -148,12 +148,11 @@ void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t
     for (const std::uint32_t i : wave)
     {
       const Eigen::Vector3d from(geometry.Position(origin[i]));
-      const double reach = halfWidth;
       const std::uint32_t* ids = geometry.NeighborsOf(i);
       for (int m = 1; m < geometry.Stride; ++m)
       {
         const std::uint32_t j = ids[m];
-        if (origin[j] == None && (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= reach)
+        if (origin[j] == None && (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= halfWidth)
         {
           origin[j] = origin[i];
           next.push_back(j);
@@ -171,8 +170,6 @@ std::vector<char> FloodedInside(const Neighborhoods& geometry,
 {
   SerialAbortCheck stop(aborted);
   std::vector<char> inside = Flood(geometry, dataOffsets, inSeed, result, stop);
-  // The bubble searches start next to the inside: their lists first, in parallel.
-  geometry.EnsureNeighbors(InsideAndNeighbors(geometry, inside));
   FillBubbles(geometry, bubbleSize, inside, result, stop);
   result.Aborted = stop.WasStopped();
   return inside;

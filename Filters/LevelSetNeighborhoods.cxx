@@ -27,21 +27,15 @@ namespace lsi
 
 namespace
 {
-// Puts the sample itself in slot 0 of its row and reports whether another sample sits at
-// exactly the same position.
-bool ArrangeRow(std::uint32_t self, std::uint32_t* ids, double* d2, int stride)
+// Puts the sample itself in slot 0 of its row (duplicates are found by FindDuplicates).
+void ArrangeRow(std::uint32_t self, std::uint32_t* ids, double* d2, int stride)
 {
   int selfSlot = -1;
-  bool duplicate = false;
   for (int k = 0; k < stride; ++k)
   {
     if (ids[k] == self)
     {
       selfSlot = k;
-    }
-    else if (d2[k] == 0.0)
-    {
-      duplicate = true;
     }
   }
   if (selfSlot < 0) // more exact duplicates than neighbours: make room for the sample itself
@@ -52,7 +46,6 @@ bool ArrangeRow(std::uint32_t self, std::uint32_t* ids, double* d2, int stride)
   }
   std::swap(ids[0], ids[selfSlot]);
   std::swap(d2[0], d2[selfSlot]);
-  return duplicate;
 }
 } // namespace
 
