@@ -42,8 +42,8 @@ void LevelSetEvolution::ComputeGradients(
   this->Geometry.EnsureStencils(where);
   ForEachIn(where, [&](std::size_t, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-    const Eigen::Vector3d g = ApplyGradientStencil(
-      this->Geometry.StencilOf(i), stride, [&](std::size_t k) { return values[ids[k]]; });
+    const Eigen::Vector3d g =
+      this->Geometry.GradientAt(i, [&](std::size_t k) { return values[ids[k]]; });
     double* out = &this->Gradient[3 * i];
     out[0] = g[0];
     out[1] = g[1];
@@ -88,9 +88,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
       const std::vector<double>& f = this->DataOffsets;
       const double slope =
-        ApplyGradientStencil(this->Geometry.StencilOf(i), stride, [&](std::size_t m) {
-          return f[ids[m]];
-        }).norm();
+        this->Geometry.GradientAt(i, [&](std::size_t m) { return f[ids[m]]; }).norm();
       // g = (f - f_iso) / |grad f|, bounded like phi where f is flat.
       const double target = slope > std::abs(f[i]) / limit ? f[i] / slope : Sign(f[i]) * limit;
       this->NewValues[k] =
@@ -102,13 +100,11 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
   {
     ForEachIn(this->Band, [&](std::size_t k, std::size_t i) {
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const float* stencil = this->Geometry.StencilOf(i);
       const double curvature = c.CurvatureWeight != 0.0
-        ? ApplyDivergenceStencil(stencil, stride, [&](std::size_t m) { return unitNormal(ids[m]); })
+        ? this->Geometry.DivergenceAt(i, [&](std::size_t m) { return unitNormal(ids[m]); })
         : 0.0;
       const double regularization = regularize
-        ? ApplyDivergenceStencil(
-            stencil, stride, [&](std::size_t m) { return distanceFlux(ids[m]); })
+        ? this->Geometry.DivergenceAt(i, [&](std::size_t m) { return distanceFlux(ids[m]); })
         : 0.0;
       this->NewValues[k] =
         EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);

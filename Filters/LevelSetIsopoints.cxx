@@ -170,8 +170,7 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
   }
   auto gradientAt = [&](std::size_t i) {
     const std::uint32_t* ids = geometry.NeighborsOf(i);
-    return ApplyGradientStencil(
-      geometry.StencilOf(i), stride, [&](std::size_t m) { return phi[ids[m]]; });
+    return geometry.GradientAt(i, [&](std::size_t m) { return phi[ids[m]]; });
   };
   // Two passes (count, then fill) keep the output order independent of the threads.
   auto forEachAcceptedPair = [&](std::size_t i, auto&& emit) {
@@ -261,7 +260,8 @@ std::vector<double> WithoutSpuriousPockets(
       state[i] = 2;
       if (pocket)
       {
-        phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12);
+        // A sample at phi = 0 gets a tiny positive value, relative to the spacing (no unit).
+        phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12 * geometry.MeanRadius);
       }
     }
   }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -162,6 +163,10 @@ bool IsFlat(const std::vector<double>& positions)
   // left out, so that a few far outliers cannot make 3D data look flat (their own variance
   // would dwarf the others).
   const std::size_t n = positions.size() / 3;
+  if (n == 0)
+  {
+    return false;
+  }
   double low[3], high[3];
   std::vector<double> axis(n);
   for (int k = 0; k < 3; ++k)
@@ -263,7 +268,10 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
       const bool ok = BuildLinearStencil(
         this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); },
         this->RadiusOf(i), LinearStencilView{ stencil.data(), nullptr }); // zero when singular
-      std::copy(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride]);
+      // Stored times h_i (see GradientStencil), of order one in any unit of length.
+      const double radius = this->RadiusOf(i);
+      std::transform(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride],
+        [radius](double c) { return static_cast<float>(c * radius); });
       this->StencilState[i] = ok ? 1 : 2;
       singular.Local() += !ok;
       thin.Local() += ok && IsThin(ids, stride, *this);
@@ -493,6 +501,32 @@ bool Neighborhoods::EnsureAllNeighbors(const AbortCheck& aborted) const
     aborted);
 }
 
+namespace
+{
+/// A coordinate rounded to single precision, as bits: the sample's choice must survive a trip
+/// through float coordinates (ParaView's Distribute Points writes float points). Beyond float's
+/// range (lengths in extreme units, which only double points hold) the mantissa is rounded to
+/// float's 24 bits and the exponent mixed in, so those samples still spread.
+std::uint32_t SinglePrecisionBits(double x)
+{
+  const float rounded = static_cast<float>(x);
+  std::uint32_t bits = 0;
+  if (x == 0.0)
+  {
+    return bits;
+  }
+  if (std::isfinite(rounded) && std::abs(rounded) >= FLT_MIN)
+  {
+    std::memcpy(&bits, &rounded, sizeof bits);
+    return bits;
+  }
+  int exponent = 0;
+  const float mantissa = static_cast<float>(std::frexp(x, &exponent));
+  std::memcpy(&bits, &mantissa, sizeof bits);
+  return bits ^ (static_cast<std::uint32_t>(exponent) * 0x9e3779b9U);
+}
+} // namespace
+
 bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const
 {
   if (every <= 1)
@@ -502,11 +536,7 @@ bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const
   std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
   for (int k = 0; k < 3; ++k)
   {
-    // Single precision: the choice must survive a trip through float coordinates (ParaView's
-    // Distribute Points writes float points).
-    const float coordinate = static_cast<float>(this->Positions[3 * i + k]);
-    std::uint32_t bits;
-    std::memcpy(&bits, &coordinate, sizeof bits);
+    const std::uint32_t bits = SinglePrecisionBits(this->Positions[3 * i + k]);
     hash ^= bits + 0x9e3779b97f4a7c15ULL + (hash << 6) + (hash >> 2);
     hash ^= hash >> 31; // splitmix64's finaliser
     hash *= 0xbf58476d1ce4e5b9ULL;

@@ -7,6 +7,7 @@
 #define LevelSetNeighborhoods_h
 
 #include "LevelSetParallel.h"
+#include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
 
 #include <algorithm>
@@ -71,6 +72,9 @@ struct Neighborhoods
   // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
   // the evolution only ever visits a band around the front, so most samples never need one.
   // The storage is allocated but not initialised, so untouched pages cost no memory.
+  // Each is stored times the sample's radius h_i, so its coefficients are of order one in any
+  // unit of length (a stencil goes as 1 / h_i, which float would overflow or flush to zero for
+  // lengths beyond about 1e+-30); GradientAt and DivergenceAt divide h_i back out in double.
   mutable std::unique_ptr<float[]> GradientStencil;
   mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
   mutable std::size_t ComputedStencils = 0;
@@ -133,9 +137,22 @@ struct Neighborhoods
     this->EnsureStencils(samples.data(), samples.size());
   }
 
-  const float* StencilOf(std::size_t i) const
+  /// The MLS gradient at sample i of value(m), the values at its neighbours m = 0 .. Stride - 1
+  /// (slot 0 is i itself). Its stencil must be computed (EnsureStencils).
+  template <typename ValueFn>
+  Eigen::Vector3d GradientAt(std::size_t i, ValueFn&& value) const
   {
-    return &this->GradientStencil[3 * i * this->Stride];
+    return ApplyGradientStencil(
+             this->ScaledStencilOf(i), static_cast<std::size_t>(this->Stride), value) /
+      this->Radii[i];
+  }
+  /// The divergence at sample i of vector(m), given at its neighbours like GradientAt's values.
+  template <typename VectorFn>
+  double DivergenceAt(std::size_t i, VectorFn&& vector) const
+  {
+    return ApplyDivergenceStencil(
+             this->ScaledStencilOf(i), static_cast<std::size_t>(this->Stride), vector) /
+      this->Radii[i];
   }
   const double* Position(std::size_t i) const { return &this->Positions[3 * i]; }
 
@@ -183,6 +200,10 @@ struct Neighborhoods
   std::unique_ptr<RowStates> Rows;
 
 private:
+  const float* ScaledStencilOf(std::size_t i) const
+  {
+    return &this->GradientStencil[3 * i * this->Stride];
+  }
   void EnsureRow(std::size_t i, double nearbyRadius = 0.0) const
   {
     if (this->Rows->State[i].load(std::memory_order_acquire) != 2)

@@ -63,9 +63,7 @@ void Reinitialization::Run(
     {
       atInterface[k] = 1;
       const double norm =
-        ApplyGradientStencil(this->Geometry.StencilOf(i), stride, [&](std::size_t m) {
-          return phi[ids[m]];
-        }).norm();
+        this->Geometry.GradientAt(i, [&](std::size_t m) { return phi[ids[m]]; }).norm();
       this->NewValues[k] = InterfaceDistance(phi[i], norm, opposite);
     }
   });

@@ -788,17 +788,15 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
   this->SpatialSortSeconds = searched ? geometry->SortSeconds : 0.0;
   this->NearestNeighborSeconds = searched ? geometry->SearchSeconds : 0.0;
   this->TreeBuildSeconds = searched ? geometry->TreeSeconds : 0.0;
-  // The MLS gradient stencils are stored as floats (half the memory), in the data's unit of
-  // length: their coefficients go as 1 / spacing, so spacings beyond 1e30 or below 1e-30
-  // would overflow or vanish in float. Refuse them with a clear error instead.
-  if (!(geometry->MeanRadius > 1e-30 && geometry->MeanRadius < 1e30))
+  // Every length is relative, but volumes (cubes of lengths, summed over the particles) must
+  // still fit a double: refuse neighbourhood radii beyond 1e+-90 in the data's unit.
+  if (!(geometry->MeanRadius > 1e-90 && geometry->MeanRadius < 1e90))
   {
-    vtkErrorMacro("The particles' neighbourhood radius is " << geometry->MeanRadius
-                                                            << " in the data's unit of length, "
-                                                               "outside the range 1e-30 to 1e30 "
-                                                               "that the method's float stencils "
-                                                               "hold: rescale the coordinates "
-                                                               "(for example with Transform).");
+    vtkErrorMacro("The particles' neighbourhood radius is "
+      << geometry->MeanRadius
+      << " in the data's unit of length, outside the range 1e-90 to 1e90 in which volumes (its "
+         "cube, summed over the particles) fit a double: rescale the coordinates (for example "
+         "with Transform).");
     return nullptr;
   }
   // Duplicates are merged by the caller (MergeDuplicates), then searched again.

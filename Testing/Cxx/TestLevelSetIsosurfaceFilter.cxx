@@ -693,12 +693,12 @@ void TestBadInput()
     filter->AddAdditionalSeed(-100, -100, -100, 2);
     ExpectError(filter, "contains no sample", "empty additional seed");
   }
-  for (double scale : { 1e45, 1e-45 })
+  for (double scale : { 1e120, 1e-120 })
   {
-    // Coordinates far beyond the float stencils' range (issue 14, 4): an error, not an empty
-    // surface without a word.
+    // Coordinates whose volumes would not fit a double (issue 14, 4): an error, not an empty
+    // surface without a word. (Lengths x1e+-90 work: TestUnitsOfLength.)
     vtkNew<vtkPolyData> huge = Ball(5000);
-    vtkNew<vtkPoints> scaled; // double: 1e45 does not fit a float
+    vtkNew<vtkPoints> scaled; // double: 1e120 does not fit a float
     scaled->SetDataTypeToDouble();
     for (vtkIdType i = 0; i < huge->GetNumberOfPoints(); ++i)
     {
@@ -711,7 +711,7 @@ void TestBadInput()
     Configure(filter, huge);
     filter->SetSeedCenter(30 * scale, 30 * scale, 30 * scale);
     filter->SetSeedRadius(8 * scale);
-    ExpectError(filter, "rescale the coordinates", "coordinates beyond 1e30");
+    ExpectError(filter, "rescale the coordinates", "coordinates beyond 1e90");
   }
   {
     // Duplicates (issue 14): merged with a warning, values averaged; the same surface as
