@@ -115,29 +115,45 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
     const std::string fieldName = c.Prefix + name;
     if (H5Tget_class(type) == H5T_STRING)
     {
-      std::string value;
+      // One string or an array of them (every value kept, in order).
+      Handle space(H5Aget_space(attribute), H5Sclose);
+      const hssize_t points = H5Sget_simple_extent_npoints(space);
+      const std::size_t count = points > 0 ? static_cast<std::size_t>(points) : 0;
+      std::vector<std::string> values(count);
       if (H5Tis_variable_str(type) > 0)
       {
-        char* text = nullptr;
+        std::vector<char*> texts(count, nullptr);
         Handle memoryType(H5Tcopy(H5T_C_S1), H5Tclose);
         H5Tset_size(memoryType, H5T_VARIABLE);
-        if (H5Aread(attribute, memoryType, &text) >= 0 && text)
+        H5Tset_cset(memoryType, H5Tget_cset(type)); // HDF5 does not convert ASCII and UTF-8
+        if (count > 0 && H5Aread(attribute, memoryType, texts.data()) >= 0)
         {
-          value = text;
-          H5free_memory(text);
+          for (std::size_t k = 0; k < count; ++k)
+          {
+            values[k] = texts[k] ? texts[k] : "";
+          }
+          H5Dvlen_reclaim(memoryType, space, H5P_DEFAULT, texts.data());
         }
       }
       else
       {
-        std::vector<char> text(H5Tget_size(type) + 1, '\0');
-        if (H5Aread(attribute, type, text.data()) >= 0)
+        const std::size_t size = H5Tget_size(type);
+        std::vector<char> text(count * size + 1, '\0');
+        if (count > 0 && size > 0 && H5Aread(attribute, type, text.data()) >= 0)
         {
-          value = text.data();
+          for (std::size_t k = 0; k < count; ++k)
+          {
+            const char* begin = text.data() + k * size;
+            values[k].assign(begin, std::find(begin, begin + size, '\0'));
+          }
         }
       }
       vtkNew<vtkStringArray> array;
       array->SetName(fieldName.c_str());
-      array->InsertNextValue(value);
+      for (const std::string& value : values)
+      {
+        array->InsertNextValue(value);
+      }
       c.Fields->AddArray(array);
       return 0;
     }
@@ -202,14 +218,26 @@ void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLeng
 
 // The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
 // of them. Empty if `file` is not named that way.
-std::vector<std::string> PartFileNames(const std::string& file, int parts)
+// A count read from a numeric attribute: a whole number from 0 to 2^53 (a double holds each such
+// integer exactly). False for NaN, infinities, fractions and negatives, which no writer writes.
+bool AsCount(double value, long long& count)
+{
+  if (!(value >= 0.0 && value <= 9007199254740992.0) || value != std::floor(value))
+  {
+    return false;
+  }
+  count = static_cast<long long>(value);
+  return true;
+}
+
+std::vector<std::string> PartFileNames(const std::string& file, long long parts)
 {
   static const std::regex numbered(R"((.*)\.([0-9]+)\.(hdf5|h5|HDF5)$)");
   std::smatch match;
   std::vector<std::string> names;
   if (std::regex_match(file, match, numbered))
   {
-    for (int p = 0; p < parts; ++p)
+    for (long long p = 0; p < parts; ++p)
     {
       names.push_back(match[1].str() + "." + std::to_string(p) + "." + match[3].str());
     }
@@ -397,7 +425,15 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
 
   // The files of the snapshot.
   const std::vector<double> files = NumericAttribute(header, "NumFilesPerSnapshot");
-  const int parts = files.empty() ? 1 : std::max(1, static_cast<int>(files[0]));
+  long long parts = 1;
+  // More files than any run writes (GADGET-4's largest use thousands) is a damaged header.
+  if (!files.empty() && (!AsCount(files[0], parts) || parts > 1000000))
+  {
+    problem = "Header attribute NumFilesPerSnapshot is " + std::to_string(files[0]) +
+      ", not a number of files";
+    return false;
+  }
+  parts = std::max(parts, 1LL);
   if (parts > 1)
   {
     this->Parts = PartFileNames(this->FileName, parts);
@@ -434,21 +470,26 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
     std::vector<long long> partCounts;
     for (int t = 0; t < 64; ++t)
     {
-      long long count =
-        t < static_cast<int>(thisFile.size()) ? static_cast<long long>(thisFile[t]) : 0;
+      long long count = 0;
+      if (t < static_cast<int>(thisFile.size()) && !AsCount(thisFile[t], count))
+      {
+        problem = "NumPart_ThisFile in " + name + " holds " + std::to_string(thisFile[t]) +
+          ", not a particle count";
+        return false;
+      }
       const std::string group = "PartType" + std::to_string(t);
       if (thisFile.empty() && Exists(part, group + "/Coordinates"))
       {
         Handle coordinates(H5Dopen2(part, (group + "/Coordinates").c_str(), H5P_DEFAULT), H5Dclose);
         Handle space(H5Dget_space(coordinates), H5Sclose);
-        hsize_t dims[2] = { 0, 0 };
-        H5Sget_simple_extent_dims(space, dims, nullptr);
-        count = static_cast<long long>(dims[0]);
-      }
-      if (count < 0)
-      {
-        problem = "negative particle count in NumPart_ThisFile";
-        return false;
+        hsize_t dims[H5S_MAX_RANK] = {};
+        if (H5Sget_simple_extent_ndims(space) < 1 ||
+          H5Sget_simple_extent_dims(space, dims, nullptr) < 0 ||
+          !AsCount(static_cast<double>(dims[0]), count))
+        {
+          problem = group + "/Coordinates in " + name + " is not one row per particle";
+          return false;
+        }
       }
       if (count > 0 && !Exists(part, group))
       {
@@ -552,6 +593,17 @@ bool vtkHDF5SnapshotReader::ReadParticles(
       if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0)
       {
         continue; // scalars or higher ranks are not per-particle arrays
+      }
+      if (dims[1] == 0)
+      {
+        continue; // no columns: nothing to read
+      }
+      if (arrays[d] && static_cast<hsize_t>(arrays[d]->GetNumberOfComponents()) != dims[1])
+      {
+        problem = "dataset " + group + "/" + names[d] + " in " + this->Parts[p] + " has " +
+          std::to_string(dims[1]) + " columns, but " +
+          std::to_string(arrays[d]->GetNumberOfComponents()) + " in the first part";
+        return false;
       }
       if (static_cast<long long>(dims[0]) != inPart)
       {

@@ -204,6 +204,12 @@ void TestBadFiles(const std::string& dir)
     { "bad_truncated.hdf5", "", false },
     { "bad_inconsistent.hdf5", "has 19 entries, but the file counts 20", true },
     { "bad_missing_part.0.hdf5", "bad_missing_part.1.hdf5 of the snapshot is missing", true },
+    // Found by FuzzHDF5SnapshotReader: a float-to-integer overflow, a write past a 2-element
+    // array, and a read of 5 columns into an array of 3.
+    { "bad_count.hdf5", "holds -inf, not a particle count", true },
+    { "bad_files.hdf5", "NumFilesPerSnapshot is nan, not a number of files", true },
+    { "bad_rank.hdf5", "has no Coordinates (N x 3) dataset", true },
+    { "bad_columns.0.hdf5", "has 5 columns, but 3 in the first part", true },
   };
   for (const Case& c : cases)
   {
@@ -224,6 +230,32 @@ void TestBadFiles(const std::string& dir)
     std::cout << c.File << " -> "
               << (quote == std::string::npos ? errors->Last : errors->Last.substr(quote)) << "\n";
   }
+}
+
+// Header attributes that are arrays of strings keep every value (the reader used to read them
+// into a buffer for one string, which overflowed).
+void TestStringArrays(const std::string& dir)
+{
+  const std::string path = dir + "/string_arrays.hdf5";
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  auto values = [&](const char* name) {
+    std::string joined;
+    auto* array =
+      gas ? vtkStringArray::SafeDownCast(gas->GetFieldData()->GetAbstractArray(name)) : nullptr;
+    for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
+    {
+      joined += (k ? "," : "") + array->GetValue(k);
+    }
+    return joined;
+  };
+  Check(gas && gas->GetNumberOfPoints() == 10, path + ": 10 gas particles");
+  Check(
+    values("Fixed") == "one,three", path + ": fixed-length strings (got " + values("Fixed") + ")");
+  Check(values("Variable") == "alpha,beta,gamma",
+    path + ": variable-length strings (got " + values("Variable") + ")");
 }
 
 void TestSwift(const std::string& path)
@@ -269,6 +301,7 @@ int main(int argc, char* argv[])
   TestMultiFileGadget(argv[1]);
   TestArepoLike(argv[1]);
   TestBadFiles(argv[1]);
+  TestStringArrays(argv[1]);
   TestSwift(argv[2]);
   std::cout << (lsi::test::Failures() ? "HDF5 reader tests FAILED\n"
                                       : "HDF5 reader tests passed\n");

@@ -14,7 +14,10 @@ tests can check each one.
   (PartType4) with GFM_StellarFormationTime, BoxSize as a 3-vector, Time 0.5.
 - bad_not_snapshot.hdf5 (HDF5 without a Header), bad_truncated.hdf5 (half of arepo_like.hdf5),
   bad_inconsistent.hdf5 (Density shorter than Coordinates), bad_missing_part.0.hdf5 (says 2 files,
-  the second is absent), bad_text.hdf5 (a text file).
+  the second is absent), bad_text.hdf5 (a text file), bad_count.hdf5 (NumPart_ThisFile -inf),
+  bad_files.hdf5 (NumFilesPerSnapshot NaN), bad_rank.hdf5 (Coordinates of rank 3, no
+  NumPart_ThisFile), bad_columns.0/1.hdf5 (Velocities with 3 columns, then 5).
+- string_arrays.hdf5: Header attributes that are arrays of strings, fixed and variable length.
 """
 import os
 import sys
@@ -101,6 +104,35 @@ def main(out):
         gas(f.create_group("PartType0"), 0, 10)
     with open(path("bad_text.hdf5"), "w") as f:
         f.write("not an HDF5 file\n" * 10)
+    # What FuzzHDF5SnapshotReader found (issue 14): a count that is no count, Coordinates of
+    # rank 3, and columns that change between the files of one snapshot.
+    with h5py.File(path("bad_count.hdf5"), "w") as f:
+        header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+        f["Header"].attrs["NumPart_ThisFile"] = np.array([-np.inf, 0, 0, 0, 0, 0])
+        gas(f.create_group("PartType0"), 0, 10)
+    with h5py.File(path("bad_files.hdf5"), "w") as f:
+        header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+        f["Header"].attrs["NumFilesPerSnapshot"] = np.float64(np.nan)
+        gas(f.create_group("PartType0"), 0, 10)
+    with h5py.File(path("bad_rank.hdf5"), "w") as f:
+        header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+        del f["Header"].attrs["NumPart_ThisFile"]  # counts from the Coordinates' rows
+        f.create_group("PartType0")["Coordinates"] = np.zeros((10, 3, 2))
+    for part in range(2):
+        with h5py.File(path("bad_columns.%d.hdf5" % part), "w") as f:
+            header(f, [10, 0, 0, 0, 0, 0], [20, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0),
+                   files=2)
+            gas(f.create_group("PartType0"), 10 * part, 10)
+            del f["PartType0/Velocities"]
+            f["PartType0/Velocities"] = np.zeros((10, 3 + 2 * part), dtype=np.float32)
+    # Arrays of strings as attributes (a fixed-length and a variable-length one): every value
+    # is kept.
+    with h5py.File(path("string_arrays.hdf5"), "w") as f:
+        header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+        f["Header"].attrs["Fixed"] = np.array([b"one", b"three"], dtype="S5")
+        f["Header"].attrs.create("Variable", ["alpha", "beta", "gamma"],
+                                 dtype=h5py.string_dtype())
+        gas(f.create_group("PartType0"), 0, 10)
     print("wrote the test snapshots to", out)
 
 
