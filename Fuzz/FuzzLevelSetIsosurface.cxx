@@ -1,24 +1,32 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // Any bytes as a point set and the filter's parameters: the filter must give an error, a warning
-// or a surface, never read out of bounds, crash or hang. Layout (all optional, short inputs are
+// or a surface, never read out of bounds, crash or hang; and never NaN in the surface, nor an
+// empty or non-converged surface, nor a zero normal, without a warning or an error (checked here:
+// abort otherwise). Layout (all optional, short inputs are
 // padded with zeros): a flags byte, a neighbour-count byte, eight float64 parameters (raw bits,
 // so NaN, infinities and extremes occur), then up to 1,000 points of four float32 each
 // (x, y, z, value).
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkLevelSetIsosurface.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace
@@ -41,11 +49,52 @@ struct Bytes
   }
   std::size_t Left() const { return this->Size - std::min(this->At, this->Size); }
 };
+// Counts the filter's warnings and errors.
+struct MessageCount : public vtkCommand
+{
+  static MessageCount* New() { return new MessageCount; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+
+// Whether some tuple of `normals` has length zero (a normal that could not be computed).
+bool HasZeroNormal(vtkDataArray* normals)
+{
+  for (vtkIdType i = 0; normals && i < normals->GetNumberOfTuples(); ++i)
+  {
+    double n[3];
+    normals->GetTuple(i, n);
+    if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool HasNaN(vtkDataArray* array)
+{
+  if (!array)
+  {
+    return false;
+  }
+  const vtkIdType n = array->GetNumberOfValues();
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (std::isnan(array->GetVariantValue(k).ToDouble()))
+    {
+      return true;
+    }
+  }
+  return false;
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  vtkObject::GlobalWarningDisplayOff(); // bad inputs are expected: no message flood
+  // Bad inputs are expected: no message flood. (Messages stay on, so that the filter's warning
+  // and error events fire for the check below; only their display is off.)
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   Bytes in{ data, size };
   const std::uint8_t flags = in.Next<std::uint8_t>();
   const int neighbors = 4 + in.Next<std::uint8_t>() % 40;
@@ -113,6 +162,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     flags & 4 ? vtkLevelSetIsosurface::SPH_FIELD : vtkLevelSetIsosurface::AUTOMATIC_FIELD);
   filter->SetEvolutionScheme(flags & 64 ? 1 : 0);
   filter->SetCompletion(!(flags & 128));
+  vtkNew<MessageCount> messages;
+  filter->AddObserver(vtkCommand::ErrorEvent, messages);
+  filter->AddObserver(vtkCommand::WarningEvent, messages);
   filter->Update();
+
+  // The promise of issue 14, checked on every input: no NaN in the surface's points or normals,
+  // and no empty or non-converged surface without a warning or an error.
+  vtkPolyData* surface = filter->GetOutput(0);
+  if (HasNaN(surface->GetPoints() ? surface->GetPoints()->GetData() : nullptr) ||
+    HasNaN(surface->GetPointData()->GetNormals()))
+  {
+    std::fprintf(stderr, "NaN in the surface's points or normals\n");
+    std::abort();
+  }
+  // (An empty input gives an empty output without a word, as in VTK's filters: under MPI a rank
+  // may hold no particles.)
+  if (messages->Count == 0 && count > 0 &&
+    (surface->GetNumberOfPoints() == 0 || HasZeroNormal(surface->GetPointData()->GetNormals()) ||
+      (filter->GetNumberOfIterationsPerformed() > 0 && !filter->GetConverged())))
+  {
+    std::fprintf(stderr,
+      "an empty or non-converged surface without a message: %lld input points, %lld output "
+      "points, %lld isopoints, %d iterations, converged %d\n",
+      static_cast<long long>(count), static_cast<long long>(surface->GetNumberOfPoints()),
+      static_cast<long long>(filter->GetNumberOfIsopoints()),
+      filter->GetNumberOfIterationsPerformed(), filter->GetConverged() ? 1 : 0);
+    std::abort();
+  }
   return 0;
 }
