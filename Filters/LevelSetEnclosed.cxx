@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
@@ -154,22 +155,33 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
 
   // Each real particle's own sample (not an image's), and its shell width: one local spacing.
   std::vector<std::size_t> sampleOf(static_cast<std::size_t>(n), 0);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+  const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
+  vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      sampleOf[geometry.Order[i]] = i;
+      if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+      {
+        sampleOf[geometry.Order[i]] = static_cast<std::size_t>(i);
+      }
     }
-  }
+  });
   // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
   // enough particles fall in it for a smooth surface integral.
   auto width = [&](std::size_t i) { return geometry.RadiusOf(i); };
   std::vector<char> touching(geometry.NumberOfSamples, 0);
+  vtkSMPThreadLocal<double> widestHere(0.0); // a maximum: the same on any number of threads
+  vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
+    double& w = widestHere.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      touching[i] = phi[i] > 0.0 || (phi[i] > in.FarOutside && phi[i] > -width(i));
+      w = touching[i] ? std::max(w, 2.0 * width(i)) : w;
+    }
+  });
   double widest = 0.0;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  for (double w : widestHere)
   {
-    touching[i] = phi[i] > 0.0 || (phi[i] > in.FarOutside && phi[i] > -width(i));
-    widest = touching[i] ? std::max(widest, 2.0 * width(i)) : widest;
+    widest = std::max(widest, w);
   }
   auto touches = [&](std::size_t i) { return touching[i] != 0; };
 

@@ -21,8 +21,25 @@ MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count)
 
 void MLSStencil::Gather(const Eigen::Vector3d& p)
 {
-  this->FoundCount =
-    this->Geometry.Index->Nearest(p.data(), this->Ids.size(), this->Ids.data(), this->D2.data());
+  // Consecutive gathers are usually near each other (isopoints come in the samples' spatial
+  // order): the last gather's samples all lie within its radius plus the step from p, so the
+  // search can be bounded by that (slightly widened against rounding) and still finds the same
+  // samples, ties included (TestNumerics). A long step searches without a bound.
+  const std::size_t k = this->Ids.size();
+  const double step = (p - this->GatherPoint).norm();
+  const double bound = this->GatherRadius + step;
+  this->FoundCount = 0;
+  if (this->GatherRadius > 0.0 && step < 2.0 * this->GatherRadius && this->PreviousFound == k)
+  {
+    this->FoundCount = this->Geometry.Index->NearestWithin(
+      p.data(), k, bound * bound * (1.0 + 1e-9), this->Ids.data(), this->D2.data());
+  }
+  if (this->FoundCount < k)
+  {
+    this->FoundCount =
+      this->Geometry.Index->Nearest(p.data(), k, this->Ids.data(), this->D2.data());
+  }
+  this->PreviousFound = this->FoundCount;
   this->GatherRadius =
     std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + this->FoundCount));
   this->GatherPoint = p;

@@ -42,9 +42,9 @@ public:
 
 private:
   const Neighborhoods& Geometry;
-  std::size_t FoundCount = 0;
-  double GatherRadius = 0.0;
-  Eigen::Vector3d GatherPoint;
+  std::size_t FoundCount = 0, PreviousFound = 0;
+  double GatherRadius = 0.0; // of the last gather (0 before the first)
+  Eigen::Vector3d GatherPoint = Eigen::Vector3d::Zero();
   std::vector<std::uint32_t> Ids;
   std::vector<double> D2, GradientWeightData, ValueWeights;
 };

@@ -9,6 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 
@@ -26,20 +27,25 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const vtkIdType distinct =
     mergedId.empty() ? n : 1 + *std::max_element(mergedId.begin(), mergedId.end());
   std::vector<double> value(static_cast<std::size_t>(distinct), 0.0);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
-    {
-      value[geometry.Order[i]] = phi[i];
-    }
-  }
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
+        {
+          value[geometry.Order[i]] = phi[i];
+        }
+      }
+    });
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    levelSet->SetValue(i, value[mergedId.empty() ? i : mergedId[i]]);
-  }
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      levelSet->SetValue(i, value[mergedId.empty() ? i : mergedId[i]]);
+    }
+  });
   particles->GetPointData()->AddArray(levelSet);
 }
 

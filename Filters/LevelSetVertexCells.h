@@ -7,6 +7,7 @@
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
+#include "vtkSMPTools.h"
 
 namespace lsi
 {
@@ -16,11 +17,13 @@ inline vtkNew<vtkCellArray> VertexCells(vtkIdType count)
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
+  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      offsets->SetValue(i, i);
+      connectivity->SetValue(i, i);
+    }
+  });
   offsets->SetValue(count, count);
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
