@@ -160,30 +160,42 @@ struct Neighborhoods
   /// global scales: chosen by a hash of its coordinates, so the same particles are chosen
   /// whatever their order, storage, precision (float or double) or MPI rank.
   bool InRadiusSample(std::size_t i, std::uint64_t every) const;
-  /// The samples of that sample for which keep(i) holds, in storage order (chosen in parallel).
+  /// The samples of that sample for which keep(i) holds, in storage order. The sample itself
+  /// is chosen once per `every` (a parallel pass over all samples) and kept: a run asks for it
+  /// several times (the build, the surface's scale, the SPH support ratio). Main thread only.
   template <typename Keep>
   std::vector<std::uint32_t> RadiusSampleWhere(std::uint64_t every, Keep&& keep) const
   {
-    std::vector<char> chosen(this->NumberOfSamples);
-    vtkSMPTools::For(
-      0, static_cast<vtkIdType>(this->NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          chosen[i] = keep(static_cast<std::size_t>(i)) &&
-            this->InRadiusSample(static_cast<std::size_t>(i), every);
-        }
-      });
-    std::vector<std::uint32_t> sample;
-    for (std::size_t i = 0; i < this->NumberOfSamples; ++i)
+    if (this->SampleEvery != every)
     {
-      if (chosen[i])
+      std::vector<char> chosen(this->NumberOfSamples);
+      vtkSMPTools::For(
+        0, static_cast<vtkIdType>(this->NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            chosen[i] = this->InRadiusSample(static_cast<std::size_t>(i), every);
+          }
+        });
+      this->Sample.clear();
+      for (std::size_t i = 0; i < this->NumberOfSamples; ++i)
       {
-        sample.push_back(static_cast<std::uint32_t>(i));
+        if (chosen[i])
+        {
+          this->Sample.push_back(static_cast<std::uint32_t>(i));
+        }
+      }
+      this->SampleEvery = every;
+    }
+    std::vector<std::uint32_t> sample;
+    for (const std::uint32_t i : this->Sample)
+    {
+      if (keep(static_cast<std::size_t>(i)))
+      {
+        sample.push_back(i);
       }
     }
     return sample;
   }
-
   // The lists' storage, allocated for every sample but not initialised: untouched pages cost
   // no memory. RowState: 0 not computed, 1 being computed, 2 ready.
   struct RowStates
@@ -198,6 +210,9 @@ struct Neighborhoods
   mutable std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride each
   mutable std::vector<double, UninitializedAllocator<double>> Radii;
   std::unique_ptr<RowStates> Rows;
+  // The last fixed sample RadiusSampleWhere chose, and its `every` (0: none yet).
+  mutable std::vector<std::uint32_t> Sample;
+  mutable std::uint64_t SampleEvery = 0;
 
 private:
   const float* ScaledStencilOf(std::size_t i) const
