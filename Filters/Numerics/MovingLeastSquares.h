@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace lsi
 {
@@ -128,21 +129,30 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     b << 1.0, u, v, w, u * u, v * v, w * w, u * v, u * w, v * w;
     return b;
   };
-  Matrix10 normal = Matrix10::Zero();
+  // Each sample's basis, weight and value, kept for the residuals below (per thread, reused).
+  struct Term
+  {
+    Vector10 Basis;
+    double Weight, Value;
+  };
+  thread_local std::vector<Term> terms;
+  terms.resize(count);
+  Matrix10 normal = Matrix10::Zero(); // its lower triangle (symmetric)
   Vector10 right = Vector10::Zero();
   double sumWeights = 0.0, sumSquaredWeights = 0.0;
   for (std::size_t j = 0; j < count; ++j)
   {
-    double weight;
-    const Vector10 b = basis(j, weight);
-    normal.noalias() += weight * b * b.transpose();
-    right += (weight * value(j)) * b;
-    sumWeights += weight;
-    sumSquaredWeights += weight * weight;
+    Term& t = terms[j];
+    t.Basis = basis(j, t.Weight);
+    t.Value = value(j);
+    normal.selfadjointView<Eigen::Lower>().rankUpdate(t.Basis, t.Weight);
+    right += (t.Weight * t.Value) * t.Basis;
+    sumWeights += t.Weight;
+    sumSquaredWeights += t.Weight * t.Weight;
   }
   // The linear fit: the leading 4 x 4 block (scale-free singularity test as in
   // BuildLinearStencil).
-  const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>();
+  const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>().selfadjointView<Eigen::Lower>();
   const double scale = linearNormal.trace() / 4.0;
   if (!(scale > 0.0) || std::abs(linearNormal.determinant()) < 1e-10 * std::pow(scale, 4))
   {
@@ -155,7 +165,7 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   {
     // Pivoted LDL^T (a tenth of an eigendecomposition's cost); its pivots' spread measures the
     // conditioning.
-    const Eigen::LDLT<Matrix10> ldlt(normal);
+    const Eigen::LDLT<Matrix10, Eigen::Lower> ldlt(normal);
     const Vector10 pivots = ldlt.vectorD().cwiseAbs();
     if (ldlt.info() == Eigen::Success && pivots.maxCoeff() > 0.0 &&
       pivots.minCoeff() >= 1e-7 * pivots.maxCoeff())
@@ -164,11 +174,10 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
       double linearResidual = 0.0, quadraticResidual = 0.0;
       for (std::size_t j = 0; j < count; ++j)
       {
-        double weight;
-        const Vector10 b = basis(j, weight);
-        const double f = value(j);
-        linearResidual += weight * std::pow(f - b.head<4>().dot(coefficients.head<4>()), 2);
-        quadraticResidual += weight * std::pow(f - b.dot(full), 2);
+        const Term& t = terms[j];
+        linearResidual +=
+          t.Weight * std::pow(t.Value - t.Basis.template head<4>().dot(coefficients.head<4>()), 2);
+        quadraticResidual += t.Weight * std::pow(t.Value - t.Basis.dot(full), 2);
       }
       // F = (reduction per added term) / (residual per remaining degree of freedom).
       quadratic =
