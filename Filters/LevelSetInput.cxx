@@ -98,14 +98,20 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
 std::string CheckRangeAndSeeds(
   const double range[2], double isoValue, const std::vector<double>& additionalSeeds)
 {
-  std::ostringstream problem;
   if (!(isoValue > range[0] && isoValue < range[1]))
   {
+    std::ostringstream problem;
     problem << "IsoValue " << isoValue << " is outside the open range of the data (" << range[0]
             << ", " << range[1] << "): no isosurface.";
     return problem.str();
   }
-  for (std::size_t s = 0; s < additionalSeeds.size(); s += 4)
+  return CheckSeedRadii(additionalSeeds);
+}
+
+std::string CheckSeedRadii(const std::vector<double>& additionalSeeds)
+{
+  std::ostringstream problem;
+  for (std::size_t s = 0; s + 3 < additionalSeeds.size(); s += 4)
   {
     if (!(additionalSeeds[s + 3] > 0.0))
     {

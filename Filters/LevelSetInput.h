@@ -34,6 +34,8 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
   std::vector<double>& values, double range[2]);
 std::string CheckRangeAndSeeds(
   const double range[2], double isoValue, const std::vector<double>& additionalSeeds);
+/// The additional seeds' radii (4 numbers per seed: centre, radius), each positive.
+std::string CheckSeedRadii(const std::vector<double>& additionalSeeds);
 
 /// A parameter that is NaN or infinite (a clamp macro lets NaN through): its name, or "".
 /// `named` lists each parameter's name and value.

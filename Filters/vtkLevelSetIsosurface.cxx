@@ -124,9 +124,9 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* 
   {
     seedNumbers.emplace_back("AdditionalSeeds", value);
   }
-  const double anyRange[2] = { this->IsoValue - 1.0, this->IsoValue + 1.0 }; // checked last run
+  // (The isovalue and the data are those of the last run, which checked them.)
   if (this->AdditionalSeeds.size() % 4 != 0 || !lsi::NonFiniteParameter(seedNumbers).empty() ||
-    !lsi::CheckRangeAndSeeds(anyRange, this->IsoValue, this->AdditionalSeeds).empty())
+    !lsi::CheckSeedRadii(this->AdditionalSeeds).empty())
   {
     return false;
   }
