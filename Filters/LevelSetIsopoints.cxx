@@ -22,16 +22,18 @@ std::vector<std::size_t> ThinByVoxels(
 {
   const std::size_t count = points.size() / 3;
   std::vector<std::uint64_t> keys(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    std::uint64_t key = 0;
-    for (int d = 0; d < 3; ++d)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      const auto v = static_cast<std::int64_t>(std::floor(points[3 * i + d] / cell)) + (1 << 20);
-      key = (key << 21) | (static_cast<std::uint64_t>(v) & ((1u << 21) - 1));
+      std::uint64_t key = 0;
+      for (int d = 0; d < 3; ++d)
+      {
+        const auto v = static_cast<std::int64_t>(std::floor(points[3 * i + d] / cell)) + (1 << 20);
+        key = (key << 21) | (static_cast<std::uint64_t>(v) & ((1u << 21) - 1));
+      }
+      keys[i] = key;
     }
-    keys[i] = key;
-  }
+  });
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
   // In each voxel the first of the preferred points wins, else the point with the smallest
@@ -51,7 +53,7 @@ std::vector<std::size_t> ThinByVoxels(
     const double* y = &points[3 * b];
     return std::lexicographical_compare(x, x + 3, y, y + 3) || (std::equal(x, x + 3, y) && a < b);
   };
-  std::sort(order.begin(), order.end(), before);
+  ParallelSort(order.begin(), order.end(), before);
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < count; ++k)
   {

@@ -79,6 +79,37 @@ bool ParallelForInBlocks(
   return true;
 }
 
+/// Sorts [first, last) by `less`, a strict total order (so the result is the same as
+/// std::sort's on any number of threads): pieces sorted in parallel, then merged pairwise
+/// (vtkSMPTools::Sort is serial with the STDThread backend).
+template <typename Iterator, typename Less>
+void ParallelSort(Iterator first, Iterator last, Less less)
+{
+  const std::ptrdiff_t count = last - first;
+  const std::ptrdiff_t pieces = std::max<std::ptrdiff_t>(
+    1, std::min<std::ptrdiff_t>(vtkSMPTools::GetEstimatedNumberOfThreads(), count / 16384));
+  if (pieces == 1)
+  {
+    std::sort(first, last, less);
+    return;
+  }
+  auto bound = [&](std::ptrdiff_t piece) { return first + count * piece / pieces; };
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pieces), 1, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType piece = begin; piece < end; ++piece)
+    {
+      std::sort(bound(piece), bound(piece + 1), less);
+    }
+  });
+  for (std::ptrdiff_t width = 1; width < pieces; width *= 2)
+  {
+    for (std::ptrdiff_t piece = 0; piece + width < pieces; piece += 2 * width)
+    {
+      std::inplace_merge(
+        bound(piece), bound(piece + width), bound(std::min(piece + 2 * width, pieces)), less);
+    }
+  }
+}
+
 } // namespace lsi
 
 #endif
