@@ -7,9 +7,13 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -73,24 +77,51 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
     return problem.str();
   }
 
+  // In parallel; the first bad point (lowest id) is reported, as a serial pass would.
   values.resize(n);
-  for (vtkIdType i = 0; i < n; ++i)
+  vtkSMPThreadLocal<std::array<double, 2>> ranges(std::array<double, 2>{ DBL_MAX, -DBL_MAX });
+  std::atomic<vtkIdType> badValue{ n }, badPoint{ n };
+  auto lower = [](std::atomic<vtkIdType>& first, vtkIdType i) {
+    vtkIdType seen = first.load();
+    while (i < seen && !first.compare_exchange_weak(seen, i))
+    {
+    }
+  };
+  vtkPoints* points = input->GetPoints();
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    std::array<double, 2>& r = ranges.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      scalars->GetTuple(i, &values[i]); // GetTuple is safe from threads (GetComponent is not)
+      if (!std::isfinite(values[i]))
+      {
+        lower(badValue, i);
+      }
+      r[0] = std::min(r[0], values[i]);
+      r[1] = std::max(r[1], values[i]);
+      double x[3];
+      points->GetPoint(i, x);
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      {
+        lower(badPoint, i);
+      }
+    }
+  });
+  if (badValue < n && badValue <= badPoint)
   {
-    values[i] = scalars->GetComponent(i, 0);
-    if (!std::isfinite(values[i]))
-    {
-      problem << "The array '" << name << "' has a NaN or infinite value at point " << i << ".";
-      return problem.str();
-    }
-    range[0] = std::min(range[0], values[i]);
-    range[1] = std::max(range[1], values[i]);
-    double x[3];
-    input->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      problem << "Point " << i << " has a NaN or infinite coordinate.";
-      return problem.str();
-    }
+    problem << "The array '" << name << "' has a NaN or infinite value at point " << badValue
+            << ".";
+    return problem.str();
+  }
+  if (badPoint < n)
+  {
+    problem << "Point " << badPoint << " has a NaN or infinite coordinate.";
+    return problem.str();
+  }
+  for (const std::array<double, 2>& r : ranges)
+  {
+    range[0] = std::min(range[0], r[0]);
+    range[1] = std::max(range[1], r[1]);
   }
   return std::string();
 }

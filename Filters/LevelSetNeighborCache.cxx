@@ -3,9 +3,11 @@
 #include "LevelSetNeighborCache.h"
 
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 namespace lsi
 {
@@ -26,18 +28,33 @@ std::uint64_t Mix(std::uint64_t h, std::uint64_t v)
 
 std::uint64_t CoordinateFingerprint(vtkPoints* points)
 {
+  // Fixed blocks hashed in parallel, then combined in order: the same on any thread count.
   const vtkIdType n = points->GetNumberOfPoints();
+  constexpr vtkIdType Block = 65536;
+  std::vector<std::uint64_t> blocks(static_cast<std::size_t>((n + Block - 1) / Block));
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType b = first; b < last; ++b)
+      {
+        std::uint64_t h = 0;
+        for (vtkIdType i = b * Block; i < std::min(n, (b + 1) * Block); ++i)
+        {
+          double x[3];
+          points->GetPoint(i, x);
+          for (double c : x)
+          {
+            std::uint64_t bits;
+            std::memcpy(&bits, &c, sizeof bits);
+            h = Mix(h, bits);
+          }
+        }
+        blocks[b] = h;
+      }
+    });
   std::uint64_t h = Mix(0, static_cast<std::uint64_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
+  for (std::uint64_t b : blocks)
   {
-    double x[3];
-    points->GetPoint(i, x);
-    for (double c : x)
-    {
-      std::uint64_t bits;
-      std::memcpy(&bits, &c, sizeof bits);
-      h = Mix(h, bits);
-    }
+    h = Mix(h, b);
   }
   return h;
 }

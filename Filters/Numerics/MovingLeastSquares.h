@@ -145,7 +145,14 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     Term& t = terms[j];
     t.Basis = basis(j, t.Weight);
     t.Value = value(j);
-    normal.selfadjointView<Eigen::Lower>().rankUpdate(t.Basis, t.Weight);
+    for (int c = 0; c < 10; ++c) // the lower triangle of weight b b^T
+    {
+      const double wc = t.Weight * t.Basis[c];
+      for (int r = c; r < 10; ++r)
+      {
+        normal(r, c) += wc * t.Basis[r];
+      }
+    }
     right += (t.Weight * t.Value) * t.Basis;
     sumWeights += t.Weight;
     sumSquaredWeights += t.Weight * t.Weight;
@@ -175,9 +182,10 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
       for (std::size_t j = 0; j < count; ++j)
       {
         const Term& t = terms[j];
-        linearResidual +=
-          t.Weight * std::pow(t.Value - t.Basis.template head<4>().dot(coefficients.head<4>()), 2);
-        quadraticResidual += t.Weight * std::pow(t.Value - t.Basis.dot(full), 2);
+        const double linear = t.Value - t.Basis.template head<4>().dot(coefficients.head<4>());
+        const double quadraticPart = t.Value - t.Basis.dot(full);
+        linearResidual += t.Weight * linear * linear;
+        quadraticResidual += t.Weight * quadraticPart * quadraticPart;
       }
       // F = (reduction per added term) / (residual per remaining degree of freedom).
       quadratic =
