@@ -134,7 +134,18 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
   WithTypedCoordinates(coordinates, makeKeys);
   {
     std::vector<std::uint64_t> scratch;
-    RadixSortPacked(words, scratch);
+    // Two pieces per thread, counted and scattered in parallel (the same order on any count).
+    const std::size_t pieces =
+      2 * static_cast<std::size_t>(vtkSMPTools::GetEstimatedNumberOfThreads());
+    RadixSortPacked(
+      words, scratch, pieces, [](std::size_t count, const std::function<void(std::size_t)>& body) {
+        vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
+          for (vtkIdType c = begin; c < end; ++c)
+          {
+            body(static_cast<std::size_t>(c));
+          }
+        });
+      });
   }
   out.Order.resize(n);
   out.Positions.resize(3 * n);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -52,29 +53,55 @@ inline std::uint64_t PackedMortonKey(
 /// Sorts words made by PackedMortonKey: a least-significant-digit radix sort over the key bits
 /// (three passes of 10-bit digits; 1024 buckets keep each pass's writes in cache). Stable, so
 /// ids given in increasing order stay so within a cell and the words end fully sorted.
-/// `scratch` is resized to the same length.
-inline void RadixSortPacked(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch)
+/// `scratch` is resized to the same length. Each pass counts, then scatters, `chunks` contiguous
+/// pieces of the words; forEachChunk(chunks, body) must call body(c) once for each c in
+/// [0, chunks), in any order or at once on several threads (the default runs them in turn).
+/// Each piece's words go after the previous pieces' words of the same digit, so the result is
+/// the same for any number of pieces.
+inline void RadixSortPacked(
+  std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch, std::size_t chunks = 1,
+  const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& forEachChunk =
+    [](std::size_t count, const std::function<void(std::size_t)>& body) {
+      for (std::size_t c = 0; c < count; ++c)
+      {
+        body(c);
+      }
+    })
 {
-  scratch.resize(words.size());
-  std::vector<std::size_t> offsets(1 << 10);
+  constexpr std::size_t Buckets = 1 << 10;
+  const std::size_t n = words.size();
+  scratch.resize(n);
+  chunks = std::max<std::size_t>(1, std::min(chunks, n / 4096 + 1)); // >= 4096 words each
+  auto bound = [&](std::size_t c) { return n * c / chunks; };
+  std::vector<std::size_t> offsets(chunks * Buckets); // [chunk][digit]
   for (int shift = 32; shift < 62; shift += 10)
   {
-    std::fill(offsets.begin(), offsets.end(), 0);
-    for (const std::uint64_t word : words)
+    forEachChunk(chunks, [&](std::size_t c) {
+      std::size_t* count = &offsets[c * Buckets];
+      std::fill(count, count + Buckets, 0);
+      for (std::size_t i = bound(c); i < bound(c + 1); ++i)
+      {
+        ++count[(words[i] >> shift) & 0x3ff];
+      }
+    });
+    std::size_t total = 0; // digit by digit, and within a digit piece by piece
+    for (std::size_t digit = 0; digit < Buckets; ++digit)
     {
-      ++offsets[(word >> shift) & 0x3ff];
+      for (std::size_t c = 0; c < chunks; ++c)
+      {
+        std::size_t& offset = offsets[c * Buckets + digit];
+        const std::size_t count = offset;
+        offset = total;
+        total += count;
+      }
     }
-    std::size_t total = 0;
-    for (std::size_t& offset : offsets)
-    {
-      const std::size_t count = offset;
-      offset = total;
-      total += count;
-    }
-    for (const std::uint64_t word : words)
-    {
-      scratch[offsets[(word >> shift) & 0x3ff]++] = word;
-    }
+    forEachChunk(chunks, [&](std::size_t c) {
+      std::size_t* offset = &offsets[c * Buckets];
+      for (std::size_t i = bound(c); i < bound(c + 1); ++i)
+      {
+        scratch[offset[(words[i] >> shift) & 0x3ff]++] = words[i];
+      }
+    });
     words.swap(scratch);
   }
 }

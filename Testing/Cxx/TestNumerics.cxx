@@ -420,9 +420,13 @@ void TestSpatialOrder()
     words.push_back(lsi::PackedMortonKey(x, lower, size, static_cast<std::uint32_t>(i)));
   }
   std::vector<std::uint64_t> sorted = words, scratch;
+  const std::vector<std::uint64_t> unsortedCopy = words;
   lsi::RadixSortPacked(sorted, scratch);
   std::sort(words.begin(), words.end());
   Check(sorted == words, "radix sort of packed words = std::sort");
+  std::vector<std::uint64_t> inPieces = unsortedCopy;
+  lsi::RadixSortPacked(inPieces, scratch, 7); // pieces run in turn: the same words
+  Check(inPieces == words, "radix sort in 7 pieces = in one");
   bool contiguous = true;
   for (std::size_t i = 1; i < sorted.size(); ++i)
   {
