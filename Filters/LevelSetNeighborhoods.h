@@ -142,17 +142,25 @@ struct Neighborhoods
   template <typename ValueFn>
   Eigen::Vector3d GradientAt(std::size_t i, ValueFn&& value) const
   {
-    return ApplyGradientStencil(
-             this->ScaledStencilOf(i), static_cast<std::size_t>(this->Stride), value) /
-      this->Radii[i];
+    const double h = this->Radii[i]; // 0 only where the stencil is singular (zero)
+    if (!(h > 0.0))
+    {
+      return Eigen::Vector3d::Zero();
+    }
+    const std::size_t count = static_cast<std::size_t>(this->Stride);
+    return ApplyGradientStencil(this->ScaledStencilOf(i), count, value) / h;
   }
   /// The divergence at sample i of vector(m), given at its neighbours like GradientAt's values.
   template <typename VectorFn>
   double DivergenceAt(std::size_t i, VectorFn&& vector) const
   {
-    return ApplyDivergenceStencil(
-             this->ScaledStencilOf(i), static_cast<std::size_t>(this->Stride), vector) /
-      this->Radii[i];
+    const double h = this->Radii[i];
+    if (!(h > 0.0))
+    {
+      return 0.0;
+    }
+    const std::size_t count = static_cast<std::size_t>(this->Stride);
+    return ApplyDivergenceStencil(this->ScaledStencilOf(i), count, vector) / h;
   }
   const double* Position(std::size_t i) const { return &this->Positions[3 * i]; }
 
