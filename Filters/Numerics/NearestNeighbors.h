@@ -175,13 +175,27 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
   std::vector<std::size_t> pieceStart{ 0, count };
   for (int level = 0; level < splitLevels; ++level)
   {
+    // The pieces of a level are cut at once (each on its own range of oldIndex).
+    const std::size_t current = pieceStart.size() - 1;
+    std::vector<std::size_t> middles(current);
+    std::vector<int> axes(current, 0);
+    std::vector<std::function<void()>> cutTasks;
+    for (std::size_t p = 0; p < current; ++p)
+    {
+      cutTasks.push_back([&, p]() {
+        const std::size_t begin = pieceStart[p], end = pieceStart[p + 1];
+        middles[p] = end - begin > 4 * LeafSize
+          ? CutAtMedian(xyz.data(), oldIndex, begin, end, axes[p])
+          : begin;
+      });
+    }
+    run(cutTasks);
     std::vector<std::size_t> next{ 0 };
-    for (std::size_t p = 0; p + 1 < pieceStart.size(); ++p)
+    for (std::size_t p = 0; p < current; ++p)
     {
       const std::size_t begin = pieceStart[p], end = pieceStart[p + 1];
-      int axis = 0;
-      const std::size_t middle =
-        end - begin > 4 * LeafSize ? CutAtMedian(xyz.data(), oldIndex, begin, end, axis) : begin;
+      const int axis = axes[p];
+      const std::size_t middle = middles[p];
       if (middle > begin && middle < end)
       {
         cuts.push_back({ begin, middle, end, axis });
