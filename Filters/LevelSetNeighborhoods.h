@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -267,7 +268,7 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
       missing.push_back(i);
     }
   }
-  std::sort(missing.begin(), missing.end());
+  ParallelSort(missing.begin(), missing.end(), std::less<std::size_t>());
   // In runs of 64, each search bounded first by the radius of the one before it (its spatial
   // neighbour): the lists are exact either way, the bound only prunes the tree walk.
   constexpr std::size_t Run = 64;
