@@ -305,14 +305,21 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   std::vector<Sums> sums;
   std::vector<vtkIdType> rootOfSums;
   std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
+  vtkIdType lastRoot = -1; // consecutive particles are mostly of one component: skip the map
+  std::size_t lastSums = 0;
   auto sumsOf = [&](vtkIdType root) -> Sums& {
-    const auto found = sumsOfRoot.emplace(root, sums.size());
-    if (found.second)
+    if (root != lastRoot)
     {
-      sums.emplace_back();
-      rootOfSums.push_back(root);
+      const auto found = sumsOfRoot.emplace(root, sums.size());
+      if (found.second)
+      {
+        sums.emplace_back();
+        rootOfSums.push_back(root);
+      }
+      lastRoot = root;
+      lastSums = found.first->second;
     }
-    return sums[found.first->second];
+    return sums[lastSums];
   };
   std::vector<double> values(static_cast<std::size_t>(components));
   for (vtkIdType p = 0; p < n; ++p)
