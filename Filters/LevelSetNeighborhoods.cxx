@@ -106,6 +106,29 @@ void FindDuplicates(const std::vector<std::uint64_t>& words, Neighborhoods& out)
   }
 }
 
+// Runs the tasks on at most `threads` threads (the calling one included), each thread taking
+// the next task not yet started.
+void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
+{
+  std::atomic<std::size_t> next(0);
+  auto work = [&]() {
+    for (std::size_t t = next++; t < tasks.size(); t = next++)
+    {
+      tasks[t]();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads && static_cast<std::size_t>(t) < tasks.size(); ++t)
+  {
+    helpers.emplace_back(work);
+  }
+  work();
+  for (std::thread& helper : helpers)
+  {
+    helper.join();
+  }
+}
+
 // Fills out.Order and out.Positions: the points sorted by Morton key over their bounding box.
 void SortSpatially(vtkPoints* points, Neighborhoods& out)
 {
@@ -135,17 +158,9 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
   {
     std::vector<std::uint64_t> scratch;
     // Two pieces per thread, counted and scattered in parallel (the same order on any count).
-    const std::size_t pieces =
-      2 * static_cast<std::size_t>(vtkSMPTools::GetEstimatedNumberOfThreads());
-    RadixSortPacked(
-      words, scratch, pieces, [](std::size_t count, const std::function<void(std::size_t)>& body) {
-        vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
-          for (vtkIdType c = begin; c < end; ++c)
-          {
-            body(static_cast<std::size_t>(c));
-          }
-        });
-      });
+    const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+    RadixSortPacked(words, scratch, 2 * static_cast<std::size_t>(threads),
+      [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); });
   }
   out.Order.resize(n);
   out.Positions.resize(3 * n);
@@ -276,11 +291,11 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
     {
       const std::size_t i = missing[k];
       const std::uint32_t* ids = this->NeighborsOf(i);
-      const bool ok = BuildLinearStencil(
-        this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); },
-        this->RadiusOf(i), LinearStencilView{ stencil.data(), nullptr }); // zero when singular
-      // Stored times h_i (see GradientStencil), of order one in any unit of length.
       const double radius = this->RadiusOf(i);
+      const bool ok = BuildLinearStencil(
+        this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); }, radius,
+        LinearStencilView{ stencil.data(), nullptr }); // zero when singular
+      // Stored times h_i (see GradientStencil), of order one in any unit of length.
       std::transform(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride],
         [radius](double c) { return static_cast<float>(c * radius); });
       this->StencilState[i] = ok ? 1 : 2;
@@ -348,29 +363,6 @@ private:
   std::mutex Mutex;
   std::vector<std::pair<std::thread, std::shared_ptr<TreeBuild>>> Builds;
 };
-
-// Runs the tasks on at most `threads` threads (the calling one included), each thread taking
-// the next task not yet started.
-void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
-{
-  std::atomic<std::size_t> next(0);
-  auto work = [&]() {
-    for (std::size_t t = next++; t < tasks.size(); t = next++)
-    {
-      tasks[t]();
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threads && static_cast<std::size_t>(t) < tasks.size(); ++t)
-  {
-    helpers.emplace_back(work);
-  }
-  work();
-  for (std::thread& helper : helpers)
-  {
-    helper.join();
-  }
-}
 
 // The kd-tree is built in 8 pieces (cut at median planes), whatever the number of threads: the
 // tree decides the samples' storage order, and with it the order of every result, so it must

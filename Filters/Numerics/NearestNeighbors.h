@@ -5,6 +5,8 @@
 #ifndef NearestNeighbors_h
 #define NearestNeighbors_h
 
+#include "TaskRunner.h"
+
 #include <nanoflann.hpp>
 
 #include <algorithm>
@@ -26,9 +28,6 @@ public:
     , Tree(3, Cloud, nanoflann::KDTreeSingleIndexAdaptorParams(LeafSize))
   {
   }
-
-  /// Runs every task of the list, possibly at the same time; returns when all are done.
-  using TaskRunner = std::function<void(std::vector<std::function<void()>>& tasks)>;
 
   /// The same kind of tree, built faster: `xyz` is cut at median planes into up to
   /// 2^splitLevels pieces whose subtrees `run` builds (concurrently, given a runner that uses

@@ -6,6 +6,8 @@
 #ifndef SpatialOrder_h
 #define SpatialOrder_h
 
+#include "TaskRunner.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <functional>
@@ -54,19 +56,11 @@ inline std::uint64_t PackedMortonKey(
 /// (three passes of 10-bit digits; 1024 buckets keep each pass's writes in cache). Stable, so
 /// ids given in increasing order stay so within a cell and the words end fully sorted.
 /// `scratch` is resized to the same length. Each pass counts, then scatters, `chunks` contiguous
-/// pieces of the words; forEachChunk(chunks, body) must call body(c) once for each c in
-/// [0, chunks), in any order or at once on several threads (the default runs them in turn).
-/// Each piece's words go after the previous pieces' words of the same digit, so the result is
-/// the same for any number of pieces.
-inline void RadixSortPacked(
-  std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch, std::size_t chunks = 1,
-  const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& forEachChunk =
-    [](std::size_t count, const std::function<void(std::size_t)>& body) {
-      for (std::size_t c = 0; c < count; ++c)
-      {
-        body(c);
-      }
-    })
+/// pieces of the words as tasks given to `run` (which may run them at once). Each piece's words
+/// go after the previous pieces' words of the same digit, so the result is the same for any
+/// number of pieces.
+inline void RadixSortPacked(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch,
+  std::size_t chunks = 1, const TaskRunner& run = RunInTurn)
 {
   constexpr std::size_t Buckets = 1 << 10;
   const std::size_t n = words.size();
@@ -74,9 +68,17 @@ inline void RadixSortPacked(
   chunks = std::max<std::size_t>(1, std::min(chunks, n / 4096 + 1)); // >= 4096 words each
   auto bound = [&](std::size_t c) { return n * c / chunks; };
   std::vector<std::size_t> offsets(chunks * Buckets); // [chunk][digit]
+  auto forEachChunk = [&](const std::function<void(std::size_t)>& body) {
+    std::vector<std::function<void()>> tasks;
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      tasks.push_back([&body, c]() { body(c); });
+    }
+    run(tasks);
+  };
   for (int shift = 32; shift < 62; shift += 10)
   {
-    forEachChunk(chunks, [&](std::size_t c) {
+    forEachChunk([&](std::size_t c) {
       std::size_t* count = &offsets[c * Buckets];
       std::fill(count, count + Buckets, 0);
       for (std::size_t i = bound(c); i < bound(c + 1); ++i)
@@ -95,7 +97,7 @@ inline void RadixSortPacked(
         total += count;
       }
     }
-    forEachChunk(chunks, [&](std::size_t c) {
+    forEachChunk([&](std::size_t c) {
       std::size_t* offset = &offsets[c * Buckets];
       for (std::size_t i = bound(c); i < bound(c + 1); ++i)
       {

@@ -445,12 +445,6 @@ void TestJoinedTree()
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
-  auto runInTurn = [](std::vector<std::function<void()>>& tasks) {
-    for (auto& task : tasks)
-    {
-      task();
-    }
-  };
   for (int cloud = 0; cloud < 3; ++cloud)
   {
     const std::size_t n = 5000;
@@ -471,7 +465,7 @@ void TestJoinedTree()
     {
       std::vector<double> xyz = original;
       std::vector<std::uint32_t> oldIndex;
-      const lsi::PointCloudIndex index(xyz, oldIndex, levels, runInTurn);
+      const lsi::PointCloudIndex index(xyz, oldIndex, levels, lsi::RunInTurn);
       bool samePoints = oldIndex.size() == n;
       std::vector<char> seen(n, 0);
       for (std::size_t i = 0; samePoints && i < n; ++i)
@@ -516,12 +510,6 @@ void TestJoinedTree()
 // shell of 12 at distance sqrt(2).
 void TestBoundedSearchKeepsTies()
 {
-  auto runInTurn = [](std::vector<std::function<void()>>& tasks) {
-    for (auto& task : tasks)
-    {
-      task();
-    }
-  };
   const int side = 14;
   std::vector<double> xyz;
   for (int x = 0; x < side; ++x)
@@ -529,7 +517,7 @@ void TestBoundedSearchKeepsTies()
       for (int z = 0; z < side; ++z)
         xyz.insert(xyz.end(), { double(x), double(y), double(z) });
   std::vector<std::uint32_t> oldIndex;
-  const lsi::PointCloudIndex index(xyz, oldIndex, 3, runInTurn);
+  const lsi::PointCloudIndex index(xyz, oldIndex, 3, lsi::RunInTurn);
   const std::size_t n = xyz.size() / 3, k = 11;
   std::vector<std::uint32_t> ids(k), bounded(k);
   std::vector<double> d2(k), boundedD2(k);
