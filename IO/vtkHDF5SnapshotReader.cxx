@@ -216,8 +216,6 @@ void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLeng
   }
 }
 
-// The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
-// of them. Empty if `file` is not named that way.
 // A count read from a numeric attribute: a whole number from 0 to 2^53 (a double holds each such
 // integer exactly). False for NaN, infinities, fractions and negatives, which no writer writes.
 bool AsCount(double value, long long& count)
@@ -230,6 +228,8 @@ bool AsCount(double value, long long& count)
   return true;
 }
 
+// The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
+// of them. Empty if `file` is not named that way.
 std::vector<std::string> PartFileNames(const std::string& file, long long parts)
 {
   static const std::regex numbered(R"((.*)\.([0-9]+)\.(hdf5|h5|HDF5)$)");
@@ -554,8 +554,9 @@ bool vtkHDF5SnapshotReader::ReadParticles(
   const long long count = end - begin;
   std::vector<std::string> names;
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;
-  long long filled = 0;    // particles of this range read so far
-  long long partStart = 0; // index of the part's first particle of this type in the snapshot
+  std::vector<char> leftOut; // datasets left out of an earlier part
+  long long filled = 0;      // particles of this range read so far
+  long long partStart = 0;   // index of the part's first particle of this type in the snapshot
   for (std::size_t p = 0; p < this->Parts.size() && filled < count; ++p)
   {
     const long long inPart = this->PartCounts[p][type];
@@ -583,20 +584,34 @@ bool vtkHDF5SnapshotReader::ReadParticles(
       return false;
     }
     arrays.resize(names.size());
+    leftOut.resize(names.size(), 0);
     for (std::size_t d = 0; d < names.size(); ++d)
     {
       Handle dataset(H5Dopen2(particles, names[d].c_str(), H5P_DEFAULT), H5Dclose);
       Handle space(H5Dget_space(dataset), H5Sclose);
       Handle fileType(H5Dget_type(dataset), H5Tclose);
+      // A dataset that is not a per-particle numeric array is left out, in every part alike:
+      // read from some parts only, the other parts' rows of its array would stay unset.
+      auto leaveOut = [&]() {
+        if (arrays[d])
+        {
+          problem = "dataset " + group + "/" + names[d] + " in " + this->Parts[p] +
+            " is not a per-particle numeric array, as it is in an earlier part";
+          return false;
+        }
+        leftOut[d] = 1;
+        return true;
+      };
       const int rank = H5Sget_simple_extent_ndims(space);
       hsize_t dims[2] = { 0, 1 };
-      if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0)
+      if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0 ||
+        dims[1] == 0)
       {
-        continue; // scalars or higher ranks are not per-particle arrays
-      }
-      if (dims[1] == 0)
-      {
-        continue; // no columns: nothing to read
+        if (!leaveOut())
+        {
+          return false;
+        }
+        continue; // scalars, higher ranks or no columns are not per-particle arrays
       }
       if (arrays[d] && static_cast<hsize_t>(arrays[d]->GetNumberOfComponents()) != dims[1])
       {
@@ -612,13 +627,23 @@ bool vtkHDF5SnapshotReader::ReadParticles(
           " particles of this type";
         return false;
       }
+      const int arrayType = ArrayTypeFor(fileType);
+      if (arrayType < 0)
+      {
+        if (!leaveOut())
+        {
+          return false;
+        }
+        continue; // compound or other types: not a numeric array
+      }
+      if (leftOut[d])
+      {
+        problem = "dataset " + group + "/" + names[d] + " in " + this->Parts[p] +
+          " is a per-particle numeric array, but not in an earlier part";
+        return false;
+      }
       if (!arrays[d])
       {
-        const int arrayType = ArrayTypeFor(fileType);
-        if (arrayType < 0)
-        {
-          continue; // compound or other types: not a numeric array
-        }
         arrays[d] = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(arrayType));
         arrays[d]->SetName(names[d].c_str());
         arrays[d]->SetNumberOfComponents(static_cast<int>(rank == 2 ? dims[1] : 1));

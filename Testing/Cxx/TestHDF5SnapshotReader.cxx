@@ -210,6 +210,8 @@ void TestBadFiles(const std::string& dir)
     { "bad_files.hdf5", "NumFilesPerSnapshot is nan, not a number of files", true },
     { "bad_rank.hdf5", "has no Coordinates (N x 3) dataset", true },
     { "bad_columns.0.hdf5", "has 5 columns, but 3 in the first part", true },
+    // Found in review: rows left unset when a dataset is read from one file and not another.
+    { "bad_types.0.hdf5", "is a per-particle numeric array, but not in an earlier part", true },
   };
   for (const Case& c : cases)
   {

@@ -16,7 +16,8 @@ tests can check each one.
   bad_inconsistent.hdf5 (Density shorter than Coordinates), bad_missing_part.0.hdf5 (says 2 files,
   the second is absent), bad_text.hdf5 (a text file), bad_count.hdf5 (NumPart_ThisFile -inf),
   bad_files.hdf5 (NumFilesPerSnapshot NaN), bad_rank.hdf5 (Coordinates of rank 3, no
-  NumPart_ThisFile), bad_columns.0/1.hdf5 (Velocities with 3 columns, then 5).
+  NumPart_ThisFile), bad_columns.0/1.hdf5 (Velocities with 3 columns, then 5),
+  bad_types.0/1.hdf5 (InternalEnergy text, then numbers).
 - string_arrays.hdf5: Header attributes that are arrays of strings, fixed and variable length.
 """
 import os
@@ -125,6 +126,16 @@ def main(out):
             gas(f.create_group("PartType0"), 10 * part, 10)
             del f["PartType0/Velocities"]
             f["PartType0/Velocities"] = np.zeros((10, 3 + 2 * part), dtype=np.float32)
+    # A dataset that is text in the first file and numbers in the second: its array's rows from
+    # the first file were left unset.
+    for part in range(2):
+        with h5py.File(path("bad_types.%d.hdf5" % part), "w") as f:
+            header(f, [10, 0, 0, 0, 0, 0], [20, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0),
+                   files=2)
+            gas(f.create_group("PartType0"), 10 * part, 10)
+            if part == 0:
+                del f["PartType0/InternalEnergy"]
+                f["PartType0/InternalEnergy"] = np.array([b"hot"] * 10, dtype="S3")
     # Arrays of strings as attributes (a fixed-length and a variable-length one): every value
     # is kept.
     with h5py.File(path("string_arrays.hdf5"), "w") as f:
