@@ -7,6 +7,8 @@
 // padded with zeros): a flags byte, a neighbour-count byte, eight float64 parameters (raw bits,
 // so NaN, infinities and extremes occur), then up to 1,000 points of four float32 each
 // (x, y, z, value).
+#include "MessageCounter.h"
+
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -49,14 +51,6 @@ struct Bytes
   }
   std::size_t Left() const { return this->Size - std::min(this->At, this->Size); }
 };
-// Counts the filter's warnings and errors.
-struct MessageCount : public vtkCommand
-{
-  static MessageCount* New() { return new MessageCount; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
-
 // Whether some tuple of `normals` has length zero (a normal that could not be computed).
 bool HasZeroNormal(vtkDataArray* normals)
 {
@@ -162,7 +156,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     flags & 4 ? vtkLevelSetIsosurface::SPH_FIELD : vtkLevelSetIsosurface::AUTOMATIC_FIELD);
   filter->SetEvolutionScheme(flags & 64 ? 1 : 0);
   filter->SetCompletion(!(flags & 128));
-  vtkNew<MessageCount> messages;
+  vtkNew<lsi::test::MessageCounter> messages; // warnings and errors
   filter->AddObserver(vtkCommand::ErrorEvent, messages);
   filter->AddObserver(vtkCommand::WarningEvent, messages);
   filter->Update();
