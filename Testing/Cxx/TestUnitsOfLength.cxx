@@ -103,11 +103,8 @@ int main()
     filter->SetInputData(scaled);
     SetCaseInputs(filter, *c);
     filter->SetIsoValue(scale * c->IsoValue);
-    filter->SetOutputTypeToIsopoints();
-    filter->Update();
-    std::vector<double> isopoints, normals;
-    IsopointArrays(filter->GetOutput(0), isopoints, normals);
-    const SurfaceMetrics m = MeasureSurface(*c, isopoints, normals, samples, spacing);
+    double seconds = 0.0;
+    const SurfaceMetrics m = RunAndMeasure(filter, *c, samples, spacing, seconds);
     std::ostringstream label;
     label << "values x" << scale;
     std::cout << label.str() << ": " << m.Isopoints << " isopoints, mean distance "
