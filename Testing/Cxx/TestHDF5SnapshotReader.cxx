@@ -36,11 +36,17 @@ double GasValue(int i, int column)
   return 1.0 + 0.01 * i + 10.0 * column;
 }
 
+// A string field array's values, joined by commas ("" if there is none).
 std::string FieldString(vtkPolyData* data, const char* name)
 {
   vtkStringArray* array =
-    vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
-  return array && array->GetNumberOfValues() ? array->GetValue(0) : "";
+    data ? vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name)) : nullptr;
+  std::string joined;
+  for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
+  {
+    joined += (k ? "," : "") + array->GetValue(k);
+  }
+  return joined;
 }
 
 double FieldNumber(vtkPolyData* data, const char* name, int index = 0)
@@ -243,21 +249,11 @@ void TestStringArrays(const std::string& dir)
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
-  auto values = [&](const char* name) {
-    std::string joined;
-    auto* array =
-      gas ? vtkStringArray::SafeDownCast(gas->GetFieldData()->GetAbstractArray(name)) : nullptr;
-    for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
-    {
-      joined += (k ? "," : "") + array->GetValue(k);
-    }
-    return joined;
-  };
   Check(gas && gas->GetNumberOfPoints() == 10, path + ": 10 gas particles");
-  Check(
-    values("Fixed") == "one,three", path + ": fixed-length strings (got " + values("Fixed") + ")");
-  Check(values("Variable") == "alpha,beta,gamma",
-    path + ": variable-length strings (got " + values("Variable") + ")");
+  Check(FieldString(gas, "Fixed") == "one,three",
+    path + ": fixed-length strings (got " + FieldString(gas, "Fixed") + ")");
+  Check(FieldString(gas, "Variable") == "alpha,beta,gamma",
+    path + ": variable-length strings (got " + FieldString(gas, "Variable") + ")");
 }
 
 void TestSwift(const std::string& path)
