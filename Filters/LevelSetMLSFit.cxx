@@ -10,39 +10,96 @@
 namespace lsi
 {
 
+namespace
+{
+double SquaredDistance(const Eigen::Vector3d& p, const double* x)
+{
+  double sum = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double diff = p[d] - x[d];
+    sum += diff * diff;
+  }
+  return sum;
+}
+} // namespace
+
 MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count)
   : Geometry(geometry)
-  , Ids(std::min(count, geometry.NumberOfSamples))
+  , Count(std::min(count, geometry.NumberOfSamples))
+  , Ids(std::min(count + 1, geometry.NumberOfSamples)) // one more: how far the next one is
   , D2(Ids.size())
-  , GradientWeightData(3 * Ids.size())
-  , ValueWeights(Ids.size())
+  , GradientWeightData(3 * Count)
+  , ValueWeights(Count)
 {
 }
 
 void MLSStencil::Gather(const Eigen::Vector3d& p)
 {
+  if (this->FoundCount > 0 && this->Regather(p))
+  {
+    return;
+  }
   // Consecutive gathers are usually near each other (isopoints come in the samples' spatial
-  // order): the last gather's samples all lie within its radius plus the step from p, so the
-  // search can be bounded by that (slightly widened against rounding) and still finds the same
-  // samples, ties included (TestNumerics). A long step searches without a bound.
-  const std::size_t k = this->Ids.size();
+  // order): the last gather's k + 1 samples all lie within its outer radius plus the step from
+  // p, so the search can be bounded by that (slightly widened against rounding) and still finds
+  // the same samples, ties included (TestNumerics). A long step searches without a bound.
+  const std::size_t wanted = this->Ids.size(); // k + 1, or the whole cloud
   const double step = (p - this->GatherPoint).norm();
-  const double bound = this->GatherRadius + step;
-  this->FoundCount = 0;
-  if (this->GatherRadius > 0.0 && step < 2.0 * this->GatherRadius && this->PreviousFound == k)
+  std::size_t found = 0;
+  if (this->FoundCount > 0 && this->OuterRadius < HUGE_VAL && step < this->OuterRadius)
   {
-    this->FoundCount = this->Geometry.Index->NearestWithin(
-      p.data(), k, bound * bound * (1.0 + 1e-9), this->Ids.data(), this->D2.data());
+    const double bound = this->OuterRadius + step;
+    found = this->Geometry.Index->NearestWithin(
+      p.data(), wanted, bound * bound * (1.0 + 1e-9), this->Ids.data(), this->D2.data());
   }
-  if (this->FoundCount < k)
+  if (found < wanted)
   {
-    this->FoundCount =
-      this->Geometry.Index->Nearest(p.data(), k, this->Ids.data(), this->D2.data());
+    found = this->Geometry.Index->Nearest(p.data(), wanted, this->Ids.data(), this->D2.data());
   }
-  this->PreviousFound = this->FoundCount;
-  this->GatherRadius =
-    std::sqrt(*std::max_element(this->D2.begin(), this->D2.begin() + this->FoundCount));
+  this->FoundCount = std::min(found, this->Count);
+  this->OuterRadius = found > this->Count ? std::sqrt(this->D2[this->Count]) : HUGE_VAL;
+  this->OuterCenter = p;
+  this->SortGathered();
   this->GatherPoint = p;
+}
+
+bool MLSStencil::Regather(const Eigen::Vector3d& p)
+{
+  // The gathered samples are still p's nearest (StillNearest) across the short last steps of a
+  // projection: the fit there needs no tree search.
+  const double step = (p - this->OuterCenter).norm();
+  double farthest = 0.0;
+  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  {
+    this->D2[j] = SquaredDistance(p, this->Geometry.Position(this->Ids[j]));
+    farthest = std::max(farthest, this->D2[j]);
+  }
+  if (!StillNearest(std::sqrt(farthest), step, this->OuterRadius))
+  {
+    return false;
+  }
+  this->SortGathered();
+  this->GatherPoint = p;
+  return true;
+}
+
+void MLSStencil::SortGathered()
+{
+  // By distance, then by index: the order (and so the fit's rounding) does not depend on
+  // whether the samples came from the tree or from the last gather.
+  this->Sorted.clear();
+  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  {
+    this->Sorted.emplace_back(this->D2[j], this->Ids[j]);
+  }
+  std::sort(this->Sorted.begin(), this->Sorted.end());
+  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  {
+    this->D2[j] = this->Sorted[j].first;
+    this->Ids[j] = this->Sorted[j].second;
+  }
+  this->GatherRadius = this->FoundCount ? std::sqrt(this->D2[this->FoundCount - 1]) : 0.0;
 }
 
 double MLSStencil::SupportAt(const Eigen::Vector3d& p) const

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lsi
@@ -41,12 +42,21 @@ public:
   const double* GradientWeights(std::size_t j) const { return &this->GradientWeightData[3 * j]; }
 
 private:
+  bool Regather(const Eigen::Vector3d& p);
+  void SortGathered();
+
   const Neighborhoods& Geometry;
-  std::size_t FoundCount = 0, PreviousFound = 0;
+  const std::size_t Count;
+  std::size_t FoundCount = 0;
   double GatherRadius = 0.0; // of the last gather (0 before the first)
   Eigen::Vector3d GatherPoint = Eigen::Vector3d::Zero();
-  std::vector<std::uint32_t> Ids;
+  // The last tree search: every sample it did not gather is at least OuterRadius from its
+  // centre (the distance of the first one left out).
+  double OuterRadius = 0.0;
+  Eigen::Vector3d OuterCenter = Eigen::Vector3d::Zero();
+  std::vector<std::uint32_t> Ids; // the gathered samples, then the nearest one left out
   std::vector<double> D2, GradientWeightData, ValueWeights;
+  std::vector<std::pair<double, std::uint32_t>> Sorted;
 };
 
 /// Value and gradient at p of the MLS linear fit of per-sample values over the samples nearest

@@ -129,18 +129,17 @@ void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
   }
 }
 
-// Fills out.Order and out.Positions: the points sorted by Morton key over their bounding box.
-void SortSpatially(vtkPoints* points, Neighborhoods& out)
+// Fills out.Order and out.Positions: the points sorted by Morton key over the cube around their
+// bounding box (cubic cells, whose halvings are the kd-tree's cuts). Returns the sorted words.
+std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
 {
   const std::size_t n = out.NumberOfSamples;
   double bounds[6];
   points->GetBounds(bounds);
   const double lower[3] = { bounds[0], bounds[2], bounds[4] };
-  double size[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    size[k] = std::max(bounds[2 * k + 1] - bounds[2 * k], 1e-300);
-  }
+  const double side =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
+  const double size[3] = { side, side, side };
   vtkDataArray* coordinates = points->GetData();
   std::vector<std::uint64_t> words(n);
   auto makeKeys = [&](auto* array) {
@@ -180,6 +179,7 @@ void SortSpatially(vtkPoints* points, Neighborhoods& out)
   };
   WithTypedCoordinates(coordinates, gather);
   FindDuplicates(words, out);
+  return words;
 }
 // Whether all positions lie on one plane or line (up to rounding): the smallest eigenvalue of
 // their covariance is negligible against the largest.
@@ -323,7 +323,8 @@ namespace
 struct TreeBuild
 {
   std::vector<double> Positions;
-  std::vector<std::uint32_t> TreeOrder; // the tree's reordering of Positions
+  std::vector<std::uint64_t> MortonWords; // of Positions, in their order
+  std::vector<std::uint32_t> TreeOrder;   // the tree's reordering of Positions
   std::unique_ptr<PointCloudIndex> Index;
   std::atomic<bool> Done{ false };
 };
@@ -364,20 +365,20 @@ private:
   std::vector<std::pair<std::thread, std::shared_ptr<TreeBuild>>> Builds;
 };
 
-// The kd-tree is built in 8 pieces (cut at median planes), whatever the number of threads: the
-// tree decides the samples' storage order, and with it the order of every result, so it must
-// not depend on the threads or the output would (the pieces are then shared among the threads).
-constexpr int TreeSplitLevels = 3;
-
-bool BuildTree(Neighborhoods& out, const AbortCheck& aborted)
+bool BuildTree(
+  Neighborhoods& out, std::vector<std::uint64_t> mortonWords, const AbortCheck& aborted)
 {
   auto build = std::make_shared<TreeBuild>();
   build->Positions = std::move(out.Positions); // the buffer moves, the index will point into it
+  build->MortonWords = std::move(mortonWords);
   const std::size_t n = out.NumberOfSamples;
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  // The tree depends on the points only (not on the threads): it decides the samples' storage
+  // order, and with it the order of every result.
   std::thread worker([build, threads]() {
-    build->Index.reset(new PointCloudIndex(build->Positions, build->TreeOrder, TreeSplitLevels,
+    build->Index.reset(new PointCloudIndex(build->Positions, build->MortonWords, build->TreeOrder,
       [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); }));
+    std::vector<std::uint64_t>().swap(build->MortonWords);
     build->Done = true;
   });
   while (!build->Done)
@@ -415,7 +416,7 @@ bool BuildNeighborhoods(
   out.NumberOfSamples = n;
   out.Stride = stride;
   auto start = Clock::now();
-  SortSpatially(points, out);
+  std::vector<std::uint64_t> mortonWords = SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
   if (Aborted(aborted, 0.25))
   {
@@ -424,7 +425,7 @@ bool BuildNeighborhoods(
 
   // Nearest neighbours, queried in storage (leaf) order: consecutive queries walk the same nodes.
   start = Clock::now();
-  if (!BuildTree(out, aborted))
+  if (!BuildTree(out, std::move(mortonWords), aborted))
   {
     return false;
   }
@@ -476,7 +477,8 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
   }
   const int stride = this->Stride;
   std::uint32_t* ids = &this->Ids[i * stride];
-  std::vector<double> d2(static_cast<std::size_t>(stride));
+  thread_local std::vector<double> d2; // one per thread: rows are computed millions of times
+  d2.resize(static_cast<std::size_t>(stride));
   // A search within a little more than a nearby sample's radius finds the same neighbours (ties
   // included: both walks visit the same leaves in the same order) when it finds enough.
   const std::size_t k = static_cast<std::size_t>(stride);

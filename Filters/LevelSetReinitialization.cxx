@@ -84,11 +84,9 @@ void Reinitialization::Run(
         return;
       }
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
-      const UpwindSlope slope =
-        SteepestUpwindSlope(phi[i], stride, [&](std::size_t m, double& value, double& length) {
-          value = phi[ids[m]];
-          length = distance(i, ids[m]);
-        });
+      const UpwindSlope slope = SteepestUpwindSlope(
+        phi[i], stride, [&](std::size_t m) { return phi[ids[m]]; },
+        [&](std::size_t m) { return distance(i, ids[m]); });
       this->NewValues[k] = ReinitializedValue(
         phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
     });

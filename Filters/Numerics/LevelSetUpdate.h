@@ -68,26 +68,31 @@ struct UpwindSlope
   double Floor = 0.0;
 };
 
-template <typename NeighborFn>
-UpwindSlope SteepestUpwindSlope(double psi, std::size_t count, NeighborFn neighbor)
+template <typename ValueFn, typename DistanceFn>
+UpwindSlope SteepestUpwindSlope(double psi, std::size_t count, ValueFn value, DistanceFn distance)
 {
-  // neighbor(j, value, distance) fills the neighbour's value and distance from the sample.
+  // value(j) and distance(j): the neighbour's value and its distance from the sample. The
+  // distance (a square root) is taken only for the upwind neighbours.
   UpwindSlope best;
   const double sign = psi >= 0.0 ? 1.0 : -1.0;
   for (std::size_t j = 0; j < count; ++j)
   {
-    double value = 0.0, distance = 0.0;
-    neighbor(j, value, distance);
-    if (!(distance > 0.0) || !(sign * value < sign * psi))
+    const double v = value(j);
+    if (!(sign * v < sign * psi))
     {
       continue;
     }
-    const double slope = sign * (psi - value) / distance;
+    const double d = distance(j);
+    if (!(d > 0.0))
+    {
+      continue;
+    }
+    const double slope = sign * (psi - v) / d;
     if (!best.Found || slope > best.Norm)
     {
       best.Found = true;
       best.Norm = slope;
-      best.Floor = value;
+      best.Floor = v;
     }
   }
   return best;

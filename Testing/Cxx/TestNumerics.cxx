@@ -19,6 +19,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -313,23 +314,21 @@ void TestTheorem1()
 void TestReinitialization()
 {
   // Upwind slope of an exact 1D distance (neighbours at +-1 of psi = 5) is 1: nothing moves.
+  auto unit = [](std::size_t) { return 1.0; };
   auto neighbors = [](double a, double b) {
-    return [a, b](std::size_t j, double& value, double& distance) {
-      value = j == 0 ? a : b;
-      distance = 1.0;
-    };
+    return [a, b](std::size_t j) { return j == 0 ? a : b; };
   };
-  lsi::UpwindSlope s = lsi::SteepestUpwindSlope(5.0, 2, neighbors(4.0, 6.0));
+  lsi::UpwindSlope s = lsi::SteepestUpwindSlope(5.0, 2, neighbors(4.0, 6.0), unit);
   Check(s.Found && std::abs(s.Norm - 1.0) < 1e-15, "upwind slope of a distance is 1");
   Check(lsi::ReinitializedValue(5.0, 5.0, s, 1.0, 0.5) == 5.0, "a distance is a fixed point");
   // Too steep (psi = 9 next to 4): decreases, but never below the upwind value.
-  s = lsi::SteepestUpwindSlope(9.0, 2, neighbors(4.0, 10.0));
+  s = lsi::SteepestUpwindSlope(9.0, 2, neighbors(4.0, 10.0), unit);
   const double next = lsi::ReinitializedValue(9.0, 9.0, s, 1.0, 100.0);
   Check(next < 9.0 && next >= 4.0, "steep psi decreases, bounded by the upwind value");
   // Too flat: grows by at most the pseudo-time step. Negative side mirrors.
-  s = lsi::SteepestUpwindSlope(4.1, 2, neighbors(4.0, 4.2));
+  s = lsi::SteepestUpwindSlope(4.1, 2, neighbors(4.0, 4.2), unit);
   Check(lsi::ReinitializedValue(4.1, 4.1, s, 1.0, 0.5) <= 4.6 + 1e-12, "growth bounded");
-  s = lsi::SteepestUpwindSlope(-9.0, 2, neighbors(-4.0, -10.0));
+  s = lsi::SteepestUpwindSlope(-9.0, 2, neighbors(-4.0, -10.0), unit);
   const double negative = lsi::ReinitializedValue(-9.0, -9.0, s, 1.0, 100.0);
   Check(negative > -9.0 && negative <= -4.0, "negative side mirrors");
   Check(lsi::InterfaceDistance(0.6, 2.0, 1.0) == 0.3, "interface distance phi / |grad phi|");
@@ -437,15 +436,59 @@ void TestSpatialOrder()
   Check(contiguous, "Morton order keeps octants contiguous");
 }
 
-// The kd-tree built in joined pieces answers like brute force, on a uniform cloud, a clustered
-// one and one where a quarter of the points share one x (so some median cuts cannot separate);
-// the reordered points and oldIndex describe the same cloud.
-void TestJoinedTree()
+// The filter's way to its kd-tree: Morton words over the cube around the points, sorted, the
+// points put in their order, then the tree built from that order. oldIndex[i] receives the
+// original position of what is now point i.
+std::unique_ptr<lsi::PointCloudIndex> MortonTree(
+  std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex)
+{
+  const std::size_t n = xyz.size() / 3;
+  double lower[3] = { xyz[0], xyz[1], xyz[2] }, side = 1e-300;
+  for (int a = 0; a < 3; ++a)
+  {
+    double high = xyz[a];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      lower[a] = std::min(lower[a], xyz[3 * i + a]);
+      high = std::max(high, xyz[3 * i + a]);
+    }
+    side = std::max(side, high - lower[a]);
+  }
+  const double size[3] = { side, side, side };
+  std::vector<std::uint64_t> words(n), scratch;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    words[i] = lsi::PackedMortonKey(&xyz[3 * i], lower, size, static_cast<std::uint32_t>(i));
+  }
+  lsi::RadixSortPacked(words, scratch);
+  std::vector<double> sorted(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::uint32_t id = static_cast<std::uint32_t>(words[i]);
+    std::copy(&xyz[3 * id], &xyz[3 * id] + 3, &sorted[3 * i]);
+  }
+  xyz.swap(sorted);
+  std::vector<std::uint32_t> treeOrder;
+  std::unique_ptr<lsi::PointCloudIndex> index(
+    new lsi::PointCloudIndex(xyz, words, treeOrder, lsi::RunInTurn));
+  oldIndex.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    oldIndex[i] = static_cast<std::uint32_t>(words[treeOrder[i]]);
+  }
+  return index;
+}
+
+// The kd-tree built from Morton order answers like brute force, on a uniform cloud, a clustered
+// one, one where a quarter of the points share one x, and one where most points lie in one
+// Morton cell (cut at medians), 40 of them at one spot; the reordered points and oldIndex
+// describe the same cloud.
+void TestMortonTree()
 {
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (int cloud = 0; cloud < 3; ++cloud)
+  for (int cloud = 0; cloud < 4; ++cloud)
   {
     const std::size_t n = 5000;
     std::vector<double> original(3 * n);
@@ -453,55 +496,136 @@ void TestJoinedTree()
     {
       for (int a = 0; a < 3; ++a)
       {
-        original[3 * i + a] =
-          cloud == 1 ? std::pow(unit(random), 3.0) * normal(random) : unit(random);
+        original[3 * i + a] = cloud == 1 ? std::pow(unit(random), 3.0) * normal(random)
+          : cloud == 3 && i > 100        ? 0.25 + (i < 140 ? 0.0 : 1e-7 * unit(random))
+                                         : unit(random);
       }
       if (cloud == 2 && i % 4 == 0)
       {
         original[3 * i] = 0.5;
       }
     }
-    for (int levels = 0; levels <= 3; ++levels)
+    std::vector<double> xyz = original;
+    std::vector<std::uint32_t> oldIndex;
+    const std::unique_ptr<lsi::PointCloudIndex> index = MortonTree(xyz, oldIndex);
+    bool samePoints = oldIndex.size() == n;
+    std::vector<char> seen(n, 0);
+    for (std::size_t i = 0; samePoints && i < n; ++i)
     {
-      std::vector<double> xyz = original;
-      std::vector<std::uint32_t> oldIndex;
-      const lsi::PointCloudIndex index(xyz, oldIndex, levels, lsi::RunInTurn);
-      bool samePoints = oldIndex.size() == n;
-      std::vector<char> seen(n, 0);
-      for (std::size_t i = 0; samePoints && i < n; ++i)
-      {
-        samePoints = !seen[oldIndex[i]] &&
-          std::equal(&xyz[3 * i], &xyz[3 * i] + 3, &original[3 * oldIndex[i]]);
-        seen[oldIndex[i]] = 1;
-      }
-      Check(samePoints, "joined tree: points moved, none lost");
-      bool sameAnswers = true;
-      const std::size_t k = 28;
-      std::vector<std::uint32_t> ids(k);
-      std::vector<double> d2(k), all(n);
-      for (int q = 0; q < 300; ++q)
-      {
-        const double query[3] = { unit(random), unit(random), unit(random) };
-        for (std::size_t j = 0; j < n; ++j)
-        {
-          all[j] = 0.0;
-          for (int a = 0; a < 3; ++a)
-          {
-            all[j] += (xyz[3 * j + a] - query[a]) * (xyz[3 * j + a] - query[a]);
-          }
-        }
-        std::nth_element(all.begin(), all.begin() + (k - 1), all.end());
-        const bool found =
-          index.Nearest(query, k, ids.data(), d2.data()) == k && d2[k - 1] == all[k - 1];
-        const bool within =
-          index.NearestWithin(query, k, 1.01 * all[k - 1], ids.data(), d2.data()) == k;
-        sameAnswers = sameAnswers && found && within && d2[k - 1] == all[k - 1];
-      }
-      const std::string what = "joined tree (" + std::to_string(levels) + " levels, cloud " +
-        std::to_string(cloud) + "): k-th nearest distance equals brute force";
-      Check(sameAnswers, what.c_str());
+      samePoints =
+        !seen[oldIndex[i]] && std::equal(&xyz[3 * i], &xyz[3 * i] + 3, &original[3 * oldIndex[i]]);
+      seen[oldIndex[i]] = 1;
     }
+    Check(samePoints, "Morton tree: points moved, none lost");
+    bool sameAnswers = true;
+    const std::size_t k = 28;
+    std::vector<std::uint32_t> ids(k);
+    std::vector<double> d2(k), all(n);
+    for (int q = 0; q < 300; ++q)
+    {
+      // Queries anywhere, and at the points themselves (inside the dense cell for cloud 3).
+      double query[3] = { unit(random), unit(random), unit(random) };
+      if (q % 2)
+      {
+        std::copy(&xyz[3 * (q * 16 % n)], &xyz[3 * (q * 16 % n)] + 3, query);
+      }
+      for (std::size_t j = 0; j < n; ++j)
+      {
+        all[j] = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          all[j] += (xyz[3 * j + a] - query[a]) * (xyz[3 * j + a] - query[a]);
+        }
+      }
+      std::nth_element(all.begin(), all.begin() + (k - 1), all.end());
+      const bool found =
+        index->Nearest(query, k, ids.data(), d2.data()) == k && d2[k - 1] == all[k - 1];
+      const double bound = std::max(1.01 * all[k - 1], 1e-300);
+      const bool within = index->NearestWithin(query, k, bound, ids.data(), d2.data()) == k;
+      sameAnswers = sameAnswers && found && within && d2[k - 1] == all[k - 1];
+    }
+    const std::string what =
+      "Morton tree (cloud " + std::to_string(cloud) + "): k-th nearest distance equals brute force";
+    Check(sameAnswers, what.c_str());
   }
+}
+
+// A gather of the k + 1 nearest points at c serves a nearby point p when StillNearest says so:
+// then p's k nearest (by brute force) are exactly the k gathered at c. Steps from tiny to a
+// spacing, so that the check both holds and fails.
+void TestStillNearest()
+{
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::size_t n = 4000, k = 27;
+  std::vector<double> xyz(3 * n);
+  for (double& v : xyz)
+  {
+    v = unit(random);
+  }
+  auto nearest = [&](const double* q, std::size_t count) {
+    std::vector<std::pair<double, std::uint32_t>> all(n);
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      double d2 = 0.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        d2 += (xyz[3 * j + a] - q[a]) * (xyz[3 * j + a] - q[a]);
+      }
+      all[j] = { d2, static_cast<std::uint32_t>(j) };
+    }
+    std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(count), all.end());
+    all.resize(count);
+    return all;
+  };
+  std::size_t held = 0, failed = 0, wrong = 0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    const double c[3] = { 0.2 + 0.6 * unit(random), 0.2 + 0.6 * unit(random),
+      0.2 + 0.6 * unit(random) };
+    const auto gathered = nearest(c, k + 1);
+    const double outer = std::sqrt(gathered[k].first);
+    const double length = 0.06 * std::pow(10.0, -3.0 * unit(random)); // spacing ~0.06
+    double p[3], step2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double d = length * (2.0 * unit(random) - 1.0);
+      p[a] = c[a] + d;
+      step2 += d * d;
+    }
+    double farthest2 = 0.0;
+    std::vector<std::uint32_t> kept;
+    for (std::size_t m = 0; m < k; ++m)
+    {
+      const std::uint32_t j = gathered[m].second;
+      double d2 = 0.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        d2 += (xyz[3 * j + a] - p[a]) * (xyz[3 * j + a] - p[a]);
+      }
+      farthest2 = std::max(farthest2, d2);
+      kept.push_back(j);
+    }
+    if (!lsi::StillNearest(std::sqrt(farthest2), std::sqrt(step2), outer))
+    {
+      ++failed;
+      continue;
+    }
+    ++held;
+    std::vector<std::uint32_t> truth;
+    for (const auto& entry : nearest(p, k))
+    {
+      truth.push_back(entry.second);
+    }
+    std::sort(kept.begin(), kept.end());
+    std::sort(truth.begin(), truth.end());
+    wrong += kept == truth ? 0 : 1;
+  }
+  const std::string what = "a gather still nearest when StillNearest holds (" +
+    std::to_string(held) + " held, " + std::to_string(failed) + " did not, " +
+    std::to_string(wrong) + " wrong)";
+  std::cout << what << "\n";
+  Check(held > 50 && failed > 50 && wrong == 0, what.c_str());
 }
 
 // The neighbour lists are computed when first needed, some with a search bounded by a nearby
@@ -517,7 +641,8 @@ void TestBoundedSearchKeepsTies()
       for (int z = 0; z < side; ++z)
         xyz.insert(xyz.end(), { double(x), double(y), double(z) });
   std::vector<std::uint32_t> oldIndex;
-  const lsi::PointCloudIndex index(xyz, oldIndex, 3, lsi::RunInTurn);
+  const std::unique_ptr<lsi::PointCloudIndex> tree = MortonTree(xyz, oldIndex);
+  const lsi::PointCloudIndex& index = *tree;
   const std::size_t n = xyz.size() / 3, k = 11;
   std::vector<std::uint32_t> ids(k), bounded(k);
   std::vector<double> d2(k), boundedD2(k);
@@ -771,7 +896,8 @@ int main()
   TestSPHKernels();
   TestSPHKernelGradients();
   TestSpatialOrder();
-  TestJoinedTree();
+  TestMortonTree();
+  TestStillNearest();
   TestBoundedSearchKeepsTies();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
