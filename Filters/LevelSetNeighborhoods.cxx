@@ -13,6 +13,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cfloat>
 #include <chrono>
@@ -134,13 +135,39 @@ void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
 std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
 {
   const std::size_t n = out.NumberOfSamples;
-  double bounds[6];
-  points->GetBounds(bounds);
+  vtkDataArray* coordinates = points->GetData();
+  // The bounds in parallel (vtkPoints::GetBounds scans in one thread).
+  vtkSMPThreadLocal<std::array<double, 6>> localBounds(
+    std::array<double, 6>{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL });
+  auto findBounds = [&](auto* array) {
+    const auto xyz = vtk::DataArrayTupleRange<3>(array);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      std::array<double, 6>& b = localBounds.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const double x = static_cast<double>(xyz[i][k]);
+          b[2 * k] = std::min(b[2 * k], x);
+          b[2 * k + 1] = std::max(b[2 * k + 1], x);
+        }
+      }
+    });
+  };
+  WithTypedCoordinates(coordinates, findBounds);
+  double bounds[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+  for (const std::array<double, 6>& b : localBounds)
+  {
+    for (int k = 0; k < 6; k += 2)
+    {
+      bounds[k] = std::min(bounds[k], b[k]);
+      bounds[k + 1] = std::max(bounds[k + 1], b[k + 1]);
+    }
+  }
   const double lower[3] = { bounds[0], bounds[2], bounds[4] };
   const double side =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
   const double size[3] = { side, side, side };
-  vtkDataArray* coordinates = points->GetData();
   std::vector<std::uint64_t> words(n);
   auto makeKeys = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
