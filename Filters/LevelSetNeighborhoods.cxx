@@ -130,19 +130,17 @@ void RunOnThreads(std::vector<std::function<void()>>& tasks, int threads)
   }
 }
 
-// Fills out.Order and out.Positions: the points sorted by Morton key over the cube around their
-// bounding box (cubic cells, whose halvings are the kd-tree's cuts). Returns the sorted words.
-std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
+} // namespace
+
+void PointBounds(vtkPoints* points, double bounds[6])
 {
-  const std::size_t n = out.NumberOfSamples;
-  vtkDataArray* coordinates = points->GetData();
-  // The bounds in parallel (vtkPoints::GetBounds scans in one thread).
-  vtkSMPThreadLocal<std::array<double, 6>> localBounds(
+  const vtkIdType n = points->GetNumberOfPoints();
+  vtkSMPThreadLocal<std::array<double, 6>> local(
     std::array<double, 6>{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL });
-  auto findBounds = [&](auto* array) {
+  auto scan = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      std::array<double, 6>& b = localBounds.Local();
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      std::array<double, 6>& b = local.Local();
       for (vtkIdType i = begin; i < end; ++i)
       {
         for (int k = 0; k < 3; ++k)
@@ -154,9 +152,10 @@ std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
       }
     });
   };
-  WithTypedCoordinates(coordinates, findBounds);
-  double bounds[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
-  for (const std::array<double, 6>& b : localBounds)
+  WithTypedCoordinates(points->GetData(), scan);
+  const double empty[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+  std::copy(empty, empty + 6, bounds);
+  for (const std::array<double, 6>& b : local)
   {
     for (int k = 0; k < 6; k += 2)
     {
@@ -164,6 +163,18 @@ std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
       bounds[k + 1] = std::max(bounds[k + 1], b[k + 1]);
     }
   }
+}
+
+namespace
+{
+// Fills out.Order and out.Positions: the points sorted by Morton key over the cube around their
+// bounding box (cubic cells, whose halvings are the kd-tree's cuts). Returns the sorted words.
+std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
+{
+  const std::size_t n = out.NumberOfSamples;
+  vtkDataArray* coordinates = points->GetData();
+  double bounds[6];
+  PointBounds(points, bounds);
   const double lower[3] = { bounds[0], bounds[2], bounds[4] };
   const double side =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });

@@ -334,6 +334,10 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
   return true;
 }
 
+/// The points' bounds (xmin, xmax, ymin, ...), scanned in parallel (vtkPoints::GetBounds scans
+/// in one thread, about 0.03 s at 2M points).
+void PointBounds(vtkPoints* points, double bounds[6]);
+
 /// Builds everything from the points. Returns false only when aborted.
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted);

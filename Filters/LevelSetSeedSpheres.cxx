@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSeedSpheres.h"
 
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -55,21 +58,33 @@ SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
   start.InSeed.resize(n);
   start.SamplesPerSphere.assign(spheres.size() / 4, 0);
   phi.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const double* x = geometry.Position(i);
-    double seed = spheres.empty() ? DBL_MAX : -DBL_MAX;
-    for (std::size_t s = 0; s < spheres.size(); s += 4)
+  const std::size_t sphereCount = spheres.size() / 4;
+  vtkSMPThreadLocal<std::vector<std::size_t>> localCounts(std::vector<std::size_t>(sphereCount, 0));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    std::vector<std::size_t>& counts = localCounts.Local();
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      const double d = spheres[s + 3] -
-        std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
-          (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
-          (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
-      start.SamplesPerSphere[s / 4] += d > 0.0 && ranks.Owns(i);
-      seed = std::max(seed, d);
+      const double* x = geometry.Position(static_cast<std::size_t>(i));
+      double seed = spheres.empty() ? DBL_MAX : -DBL_MAX;
+      for (std::size_t s = 0; s < spheres.size(); s += 4)
+      {
+        const double d = spheres[s + 3] -
+          std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
+            (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
+            (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
+        counts[s / 4] += d > 0.0 && ranks.Owns(static_cast<std::size_t>(i));
+        seed = std::max(seed, d);
+      }
+      start.InSeed[i] = spheres.empty() || seed > 0.0;
+      phi[i] = std::min(seed, DistanceInsideBox(x, box));
     }
-    start.InSeed[i] = spheres.empty() || seed > 0.0;
-    phi[i] = std::min(seed, DistanceInsideBox(x, box));
+  });
+  for (const std::vector<std::size_t>& counts : localCounts)
+  {
+    for (std::size_t s = 0; s < sphereCount; ++s)
+    {
+      start.SamplesPerSphere[s] += counts[s];
+    }
   }
   std::vector<double> counts(start.SamplesPerSphere.begin(), start.SamplesPerSphere.end());
   ranks.Sum(counts.data(), static_cast<int>(counts.size()));

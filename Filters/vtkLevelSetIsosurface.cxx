@@ -650,7 +650,7 @@ void vtkLevelSetIsosurface::Bounds(vtkPointSet* input, double bounds[6])
   double signedBounds[6] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   if (input->GetNumberOfPoints() > 0)
   {
-    input->GetBounds(bounds);
+    lsi::PointBounds(input->GetPoints(), bounds);
     for (int d = 0; d < 3; ++d)
     {
       signedBounds[2 * d] = -bounds[2 * d];
