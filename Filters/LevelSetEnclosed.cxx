@@ -130,6 +130,63 @@ Sums Unpack(const double* in, std::size_t means)
   return c;
 }
 
+// Adds particle p (sample i, at signed distance `signedDistance` from the surface) to the sums
+// of its component. `tuple` is scratch space (GetTuple into a buffer is safe from threads).
+void AddParticle(const EnclosedInputs& in, const Neighborhoods& geometry,
+  const std::vector<double>& phi, const std::vector<vtkDataArray*>& arrays, int components,
+  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
+{
+  const double s = geometry.RadiusOf(i); // the shell's half width
+  const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
+  double mass = 0.0, rho = 0.0;
+  if (in.Mass)
+  {
+    in.Mass->GetTuple(p, &mass);
+  }
+  if (in.Density)
+  {
+    in.Density->GetTuple(p, &rho);
+  }
+  const double radius = geometry.RadiusOf(i);
+  const int neighbors = geometry.Stride - 1;
+  const double volume = in.Mass && in.Density && rho > 0.0
+    ? mass / rho
+    : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
+  c.Inside = c.Inside || phi[i] > 0.0;
+  c.Particles += phi[i] > 0.0 ? 1 : 0;
+  c.Mass += mass * h;
+  c.Volume += volume * h;
+  c.Area += volume * delta;
+  const double weight = (in.Mass ? mass : volume) * h;
+  c.Weight += weight;
+  const double* x = geometry.Position(i);
+  if (!c.HasReference)
+  {
+    std::copy(x, x + 3, c.Reference);
+    c.HasReference = true;
+    c.Means.assign(static_cast<std::size_t>(components), 0.0);
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    double offset = x[d] - c.Reference[d];
+    if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
+    {
+      offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
+    }
+    c.Moment[d] += weight * offset;
+  }
+  int k = 0;
+  for (vtkDataArray* array : arrays)
+  {
+    tuple.resize(static_cast<std::size_t>(array->GetNumberOfComponents()));
+    array->GetTuple(p, tuple.data());
+    for (const double value : tuple)
+    {
+      c.Means[k++] += weight * value;
+    }
+  }
+}
+
 double Find(std::map<double, double>& parent, double key)
 {
   auto it = parent.find(key);
@@ -151,7 +208,6 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   const Neighborhoods& geometry = *in.Geometry;
   const std::vector<double>& phi = *in.Phi;
   const vtkIdType n = in.ParticleCount;
-  const int neighbors = geometry.Stride - 1;
 
   // Each real particle's own sample (not an image's), and its shell width: one local spacing.
   std::vector<std::size_t> sampleOf(static_cast<std::size_t>(n), 0);
@@ -195,11 +251,12 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   {
     s = s >= 0 ? s : slots++;
   }
+  // Serial: a parallel union-find (compare-and-swap links) measured no faster here.
   std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
   std::iota(parent.begin(), parent.end(), vtkIdType(0));
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
-    if (!touches(i) || (!geometry.Truncated.empty() && geometry.Truncated[i]))
+    if (!touches(i) || geometry.IsTruncated(i))
     {
       continue;
     }
@@ -216,6 +273,12 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
         }
       }
     }
+  }
+  // Every slot's root, so that the parallel sums below only read: links only go to smaller
+  // slots, so in increasing order each slot's parent already holds its root.
+  for (vtkIdType p = 0; p < slots; ++p)
+  {
+    parent[p] = parent[parent[p]];
   }
 
   // The arrays to average: every numeric point array, all components.
@@ -301,73 +364,64 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
       }
     });
 
-  // One Sums per component that touches the surface (few), found through its root.
+  // One Sums per component that touches the surface (few), found through its root. The
+  // particles are summed in fixed chunks in parallel, each chunk's parts then added in chunk
+  // order: the same sums on any number of threads.
+  struct ChunkSums
+  {
+    std::vector<Sums> Parts;
+    std::vector<vtkIdType> Roots;
+  };
+  constexpr vtkIdType ChunkSize = 32768;
+  const vtkIdType chunks = (n + ChunkSize - 1) / ChunkSize;
+  std::vector<ChunkSums> chunkSums(static_cast<std::size_t>(chunks));
+  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType firstChunk, vtkIdType lastChunk) {
+    std::vector<double> tuple;
+    for (vtkIdType chunk = firstChunk; chunk < lastChunk; ++chunk)
+    {
+      ChunkSums& out = chunkSums[static_cast<std::size_t>(chunk)];
+      std::unordered_map<vtkIdType, std::size_t> partOfRoot;
+      vtkIdType lastRoot = -1; // consecutive particles are mostly of one component
+      std::size_t lastPart = 0;
+      const vtkIdType end = std::min(n, (chunk + 1) * ChunkSize);
+      for (vtkIdType p = chunk * ChunkSize; p < end; ++p)
+      {
+        const std::size_t i = sampleOf[p];
+        if (!touches(i))
+        {
+          continue;
+        }
+        const vtkIdType root = parent[p];
+        if (root != lastRoot)
+        {
+          const auto found = partOfRoot.emplace(root, out.Parts.size());
+          if (found.second)
+          {
+            out.Parts.emplace_back();
+            out.Roots.push_back(root);
+          }
+          lastRoot = root;
+          lastPart = found.first->second;
+        }
+        AddParticle(
+          in, geometry, phi, arrays, components, p, i, distances[i], tuple, out.Parts[lastPart]);
+      }
+    }
+  });
   std::vector<Sums> sums;
   std::vector<vtkIdType> rootOfSums;
   std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
-  vtkIdType lastRoot = -1; // consecutive particles are mostly of one component: skip the map
-  std::size_t lastSums = 0;
-  auto sumsOf = [&](vtkIdType root) -> Sums& {
-    if (root != lastRoot)
+  for (const ChunkSums& chunk : chunkSums)
+  {
+    for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
     {
-      const auto found = sumsOfRoot.emplace(root, sums.size());
+      const auto found = sumsOfRoot.emplace(chunk.Roots[k], sums.size());
       if (found.second)
       {
         sums.emplace_back();
-        rootOfSums.push_back(root);
+        rootOfSums.push_back(chunk.Roots[k]);
       }
-      lastRoot = root;
-      lastSums = found.first->second;
-    }
-    return sums[lastSums];
-  };
-  std::vector<double> values(static_cast<std::size_t>(components));
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    const std::size_t i = sampleOf[p];
-    if (!touches(i))
-    {
-      continue;
-    }
-    const double s = width(i), signedDistance = distances[i];
-    const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
-    const double mass = in.Mass ? in.Mass->GetTuple1(p) : 0.0;
-    const double rho = in.Density ? in.Density->GetTuple1(p) : 0.0;
-    const double radius = geometry.RadiusOf(i);
-    const double volume = in.Mass && in.Density && rho > 0.0
-      ? mass / rho
-      : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
-    Sums& c = sumsOf(Root(parent, p));
-    c.Inside = c.Inside || phi[i] > 0.0;
-    c.Particles += phi[i] > 0.0 ? 1 : 0;
-    c.Mass += mass * h;
-    c.Volume += volume * h;
-    c.Area += volume * delta;
-    const double weight = (in.Mass ? mass : volume) * h;
-    c.Weight += weight;
-    const double* x = geometry.Position(i);
-    if (!c.HasReference)
-    {
-      std::copy(x, x + 3, c.Reference);
-      c.HasReference = true;
-      c.Means.assign(static_cast<std::size_t>(components), 0.0);
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-      double offset = x[d] - c.Reference[d];
-      if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
-      {
-        offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
-      }
-      c.Moment[d] += weight * offset;
-    }
-    int k = 0;
-    for (vtkDataArray* array : arrays)
-    {
-      for (int q = 0; q < array->GetNumberOfComponents(); ++q)
-      {
-        c.Means[k++] += weight * array->GetComponent(p, q);
-      }
+      sums[found.first->second].Add(chunk.Parts[k], in.Box);
     }
   }
 
