@@ -480,11 +480,10 @@ bool BuildNeighborhoods(
   const std::uint64_t every = RadiusSampleEvery(static_cast<double>(n));
   const std::vector<std::uint32_t> sample =
     out.RadiusSampleWhere(every, [](std::size_t) { return true; });
-  out.EnsureNeighbors(sample);
   double sumRadius = 0.0;
   for (std::uint32_t i : sample)
   {
-    sumRadius += out.RadiusOf(i);
+    sumRadius += out.FixedSampleRow(i).Radius;
   }
   out.MeanRadius = sample.empty() ? 0.0 : sumRadius / static_cast<double>(sample.size());
   out.SearchSeconds = SecondsSince(start);
@@ -513,8 +512,14 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
     }
     return;
   }
+  this->Radii[i] = this->SearchRow(i, nearbyRadius, &this->Ids[i * this->Stride]);
+  ++this->Rows->Computed;
+  state.store(2, std::memory_order_release);
+}
+
+double Neighborhoods::SearchRow(std::size_t i, double nearbyRadius, std::uint32_t* ids) const
+{
   const int stride = this->Stride;
-  std::uint32_t* ids = &this->Ids[i * stride];
   thread_local std::vector<double> d2; // one per thread: rows are computed millions of times
   d2.resize(static_cast<std::size_t>(stride));
   // A search within a little more than a nearby sample's radius finds the same neighbours (ties
@@ -526,9 +531,30 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
     this->Index->Nearest(this->Position(i), k, ids, d2.data());
   }
   ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride);
-  this->Radii[i] = std::sqrt(*std::max_element(d2.begin(), d2.end()));
-  ++this->Rows->Computed;
-  state.store(2, std::memory_order_release);
+  return std::sqrt(*std::max_element(d2.begin(), d2.end()));
+}
+
+Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
+{
+  const auto at = std::lower_bound(this->Sample.begin(), this->Sample.end(), i);
+  const std::size_t k = static_cast<std::size_t>(at - this->Sample.begin());
+  if (this->SampleRowsEvery != this->SampleEvery)
+  {
+    // First use of this sample: its lists, in parallel. Main thread only (as RadiusSampleWhere).
+    const std::size_t stride = static_cast<std::size_t>(this->Stride);
+    this->SampleIds.resize(this->Sample.size() * stride);
+    this->SampleRadii.resize(this->Sample.size());
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(this->Sample.size()), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType m = begin; m < end; ++m)
+        {
+          this->SampleRadii[m] =
+            this->SearchRow(this->Sample[m], 0.0, &this->SampleIds[m * stride]);
+        }
+      });
+    this->SampleRowsEvery = this->SampleEvery;
+  }
+  return { &this->SampleIds[k * static_cast<std::size_t>(this->Stride)], this->SampleRadii[k] };
 }
 
 bool Neighborhoods::EnsureAllNeighbors(const AbortCheck& aborted) const

@@ -205,6 +205,17 @@ struct Neighborhoods
     }
     return sample;
   }
+  /// The list and radius of sample i of the fixed sample that RadiusSampleWhere chose last
+  /// (the same as NeighborsOf and RadiusOf give). They are kept apart from the main lists: the
+  /// sample is spread over all samples, and its lists written there would make nearly every
+  /// page of that array resident. Computed on first use; main thread only.
+  struct SampleRow
+  {
+    const std::uint32_t* Ids;
+    double Radius;
+  };
+  SampleRow FixedSampleRow(std::size_t i) const;
+
   // The lists' storage, allocated for every sample but not initialised: untouched pages cost
   // no memory. RowState: 0 not computed, 1 being computed, 2 ready.
   struct RowStates
@@ -222,6 +233,10 @@ struct Neighborhoods
   // The last fixed sample RadiusSampleWhere chose, and its `every` (0: none yet).
   mutable std::vector<std::uint32_t> Sample;
   mutable std::uint64_t SampleEvery = 0;
+  // The fixed sample's lists (FixedSampleRow), for the sample of SampleRowsEvery.
+  mutable std::vector<std::uint32_t> SampleIds;
+  mutable std::vector<double> SampleRadii;
+  mutable std::uint64_t SampleRowsEvery = 0;
 
 private:
   const float* ScaledStencilOf(std::size_t i) const
@@ -237,6 +252,8 @@ private:
   }
   /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
   void ComputeRow(std::size_t i, double nearbyRadius) const;
+  /// Sample i's list into `ids` (Stride entries); returns its radius.
+  double SearchRow(std::size_t i, double nearbyRadius, std::uint32_t* ids) const;
 };
 
 /// About how many samples the global scales are taken over (Neighborhoods::InRadiusSample):

@@ -18,10 +18,7 @@ std::vector<std::uint32_t> OwnedRadiusSample(
     owned += ranks.Owns(i) ? 1.0 : 0.0;
   }
   const std::uint64_t every = RadiusSampleEvery(ranks.Sum(owned));
-  std::vector<std::uint32_t> sample =
-    geometry.RadiusSampleWhere(every, [&](std::size_t i) { return ranks.Owns(i); });
-  geometry.EnsureNeighbors(sample);
-  return sample;
+  return geometry.RadiusSampleWhere(every, [&](std::size_t i) { return ranks.Owns(i); });
 }
 
 SurfaceScale ScaleAtSurface(
@@ -35,14 +32,14 @@ SurfaceScale ScaleAtSurface(
   double& count = sums[1];
   for (const std::size_t i : sample)
   {
-    sums[2] += geometry.RadiusOf(i);
+    const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
+    sums[2] += row.Radius;
     sums[3] += 1.0;
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
     {
-      if (dataSign[ids[m]] != dataSign[i])
+      if (dataSign[row.Ids[m]] != dataSign[i])
       {
-        sum += geometry.RadiusOf(i);
+        sum += row.Radius;
         ++count;
         break;
       }

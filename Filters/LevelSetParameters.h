@@ -34,7 +34,8 @@ struct RequestedParameters
 };
 
 /// The owned samples of the fixed sample of about RadiusSampleSize particles over all ranks
-/// (Neighborhoods::InRadiusSample) that global scales are measured on, their lists computed.
+/// (Neighborhoods::InRadiusSample) that global scales are measured on (their lists:
+/// Neighborhoods::FixedSampleRow).
 std::vector<std::uint32_t> OwnedRadiusSample(
   const Neighborhoods& geometry, const Communicator& ranks = SingleProcess());
 

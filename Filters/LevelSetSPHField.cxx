@@ -383,13 +383,13 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
   for (const std::size_t i : sample)
   {
     const bool above = values[geometry.Order[i]] > isoValue;
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
     for (int m = 1; m < geometry.Stride; ++m)
     {
-      if ((values[geometry.Order[ids[m]]] > isoValue) != above)
+      if ((values[geometry.Order[row.Ids[m]]] > isoValue) != above)
       {
         supports.push_back(field.Support(i));
-        radii.push_back(geometry.RadiusOf(i));
+        radii.push_back(row.Radius);
         break;
       }
     }
@@ -399,7 +399,7 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
     for (const std::size_t i : sample)
     {
       supports.push_back(field.Support(i));
-      radii.push_back(geometry.RadiusOf(i));
+      radii.push_back(geometry.FixedSampleRow(i).Radius);
     }
   }
   ranks.GatherAll(supports);
