@@ -4,6 +4,7 @@
 
 #include "LevelSetSplines.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkPointSet.h"
@@ -36,6 +37,32 @@ std::string CheckCount(vtkIdType n, int numberOfNeighbors)
   }
   return problem.str();
 }
+
+namespace
+{
+// Value i of a concrete array type, or of any vtkDataArray through GetTuple (safe from threads).
+template <typename Array>
+void ValueInto(Array* array, vtkIdType i, double& value)
+{
+  value = static_cast<double>(array->GetValue(i));
+}
+void ValueInto(vtkDataArray* array, vtkIdType i, double& value)
+{
+  array->GetTuple(i, &value);
+}
+template <typename Array>
+void PointInto(Array* array, vtkIdType i, double x[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    x[k] = static_cast<double>(array->GetTypedComponent(i, k));
+  }
+}
+void PointInto(vtkDataArray* array, vtkIdType i, double x[3])
+{
+  array->GetTuple(i, x);
+}
+} // namespace
 
 std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int association,
   std::vector<double>& values, double range[2])
@@ -87,26 +114,47 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
     {
     }
   };
-  vtkPoints* points = input->GetPoints();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    std::array<double, 2>& r = ranges.Local();
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      scalars->GetTuple(i, &values[i]); // GetTuple is safe from threads (GetComponent is not)
-      if (!std::isfinite(values[i]))
+  // Through the arrays' concrete types where vtkArrayDispatch knows them (no virtual call per
+  // value), else through vtkDataArray.
+  // (vtkDataArray's GetComponent is not safe from threads; GetTuple into a buffer is.)
+  auto readValues = [&](auto* array) {
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      std::array<double, 2>& r = ranges.Local();
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        lower(badValue, i);
+        ValueInto(array, i, values[i]);
+        if (!std::isfinite(values[i]))
+        {
+          lower(badValue, i);
+        }
+        r[0] = std::min(r[0], values[i]);
+        r[1] = std::max(r[1], values[i]);
       }
-      r[0] = std::min(r[0], values[i]);
-      r[1] = std::max(r[1], values[i]);
-      double x[3];
-      points->GetPoint(i, x);
-      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    });
+  };
+  if (!vtkArrayDispatch::Dispatch::Execute(scalars, readValues))
+  {
+    readValues(scalars);
+  }
+  auto checkPoints = [&](auto* array) {
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        lower(badPoint, i);
+        double x[3];
+        PointInto(array, i, x);
+        if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+        {
+          lower(badPoint, i);
+        }
       }
-    }
-  });
+    });
+  };
+  vtkDataArray* coordinates = input->GetPoints()->GetData();
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+        coordinates, checkPoints))
+  {
+    checkPoints(coordinates);
+  }
   if (badValue < n && badValue <= badPoint)
   {
     problem << "The array '" << name << "' has a NaN or infinite value at point " << badValue
