@@ -157,19 +157,10 @@ bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::V
     this->QuadraticFits += quadratic ? 1 : 0;
     return ok;
   }
-  if (!this->Stencil.Build(p))
-  {
-    return false;
-  }
-  value = 0.0;
-  gradient.setZero();
-  for (std::size_t j = 0; j < this->Stencil.Found(); ++j)
-  {
-    const double v = this->Values[this->Stencil.Sample(j)];
-    value += this->Stencil.ValueWeight(j) * v;
-    gradient += v * Eigen::Vector3d(this->Stencil.GradientWeights(j));
-  }
-  return true;
+  const MLSStencil& s = this->Stencil;
+  return FitLinear(
+    p.data(), s.Found(), [&](std::size_t j) { return s.Position(j); },
+    [&](std::size_t j) { return this->Values[s.Sample(j)]; }, s.SupportAt(p), value, gradient);
 }
 
 } // namespace lsi

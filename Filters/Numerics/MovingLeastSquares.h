@@ -96,6 +96,44 @@ bool BuildLinearStencil(
   return true;
 }
 
+/// The same weighted linear fit for one field only: its value and gradient at `centre`, from
+/// the normal equations with the values on the right (one 4x4 solve, where a stencil applies
+/// the inverse to every neighbour). Equal to the stencil's sums up to rounding. False (value
+/// and gradient zero) when the fit is singular, as BuildLinearStencil.
+template <typename PositionFn, typename ValueFn>
+bool FitLinear(const double centre[3], std::size_t count, PositionFn position, ValueFn value,
+  double h, double& fitted, Eigen::Vector3d& gradient)
+{
+  fitted = 0.0;
+  gradient.setZero();
+  if (!(h > 0.0) || !std::isfinite(h))
+  {
+    return false;
+  }
+  const double invH = 1.0 / h;
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d right = Eigen::Vector4d::Zero();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double* x = position(j);
+    const Eigen::Vector4d q(
+      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    const Eigen::Vector4d weighted = (w * w) * q;
+    normal.noalias() += weighted * q.transpose();
+    right += weighted * value(j);
+  }
+  const double scale = normal.trace() / 4.0; // the singularity test of BuildLinearStencil
+  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  {
+    return false;
+  }
+  const Eigen::Vector4d c = normal.inverse() * right;
+  gradient = c.head<3>() * invH; // the fit is in scaled coordinates
+  fitted = c[3];
+  return true;
+}
+
 /// The weighted least-squares fit of per-sample values around `centre` that the data support:
 /// quadratic (basis 1, x, y, z and the six second-order monomials, in coordinates centred and
 /// scaled by 1/h; the linear fit's weights) where its six second-order terms explain

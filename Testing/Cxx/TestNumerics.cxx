@@ -106,6 +106,20 @@ void TestMLS()
       v += value[j] * field(j);
     }
     Check(std::abs(v - field(0)) < 1e-10, "MLS value exact for a linear field");
+    // The one-field fit gives what the stencil gives, for a field that is not linear too.
+    auto curved = [&](std::size_t j) { return field(j) + std::pow(xyz[3 * j + 1] - 5.0, 2); };
+    double direct = 0.0, stencilValue = 0.0;
+    Eigen::Vector3d directGradient;
+    const bool fitted = lsi::FitLinear(
+      c, 27, [&](std::size_t j) { return &xyz[3 * j]; }, curved, h, direct, directGradient);
+    for (std::size_t j = 0; j < 27; ++j)
+    {
+      stencilValue += value[j] * curved(j);
+    }
+    const Eigen::Vector3d stencilGradient = lsi::ApplyGradientStencil(g.data(), 27, curved);
+    Check(fitted && std::abs(direct - stencilValue) < 1e-12 * (1.0 + std::abs(stencilValue)) &&
+        (directGradient - stencilGradient).norm() < 1e-12 * (1.0 + stencilGradient.norm()),
+      "one-field MLS fit equals the stencil's sums");
     // Divergence of the linear vector field (x, 2y, -z) is 1 + 2 - 1 = 2.
     const double div = lsi::ApplyDivergenceStencil(g.data(), 27, [&](std::size_t j) {
       return Eigen::Vector3d(xyz[3 * j], 2.0 * xyz[3 * j + 1], -xyz[3 * j + 2]);
@@ -129,6 +143,13 @@ void TestMLS()
             c, 27, [&](std::size_t j) { return &(*xyz)[3 * j]; }, 3.0,
             lsi::LinearStencilView{ g.data(), nullptr }),
       "degenerate neighbourhood reported singular");
+    double value = 1.0;
+    Eigen::Vector3d gradient;
+    Check(!lsi::FitLinear(
+            c, 27, [&](std::size_t j) { return &(*xyz)[3 * j]; }, [](std::size_t) { return 1.0; },
+            3.0, value, gradient) &&
+        value == 0.0 && gradient.isZero(),
+      "degenerate neighbourhood reported singular by the one-field fit");
   }
 }
 
