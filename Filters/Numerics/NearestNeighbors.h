@@ -86,13 +86,26 @@ private:
   // Moves the points into the order of the leaves (the median cuts' order within a Morton cell).
   void MoveIntoLeafOrder(
     std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, const TaskRunner& run);
-  Node* MortonNode(
-    const std::uint64_t* words, std::size_t begin, std::size_t end, int bit, Box& box);
-  Node* MedianNode(std::size_t begin, std::size_t end, Box& box);
-  Node* Leaf(std::size_t begin, std::size_t end, Box& box);
+  using Pool = nanoflann::PooledAllocator;
+  // A crowded Morton cell left for later, to be cut at medians on some thread: its node is
+  // allocated already (Stub) and receives the subtree's root.
+  struct MedianJob
+  {
+    std::size_t Begin, End;
+    Node* Stub;
+  };
+  Node* MortonNode(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
+    Box& box, std::vector<MedianJob>& jobs);
+  void RunMedianJobs(std::vector<MedianJob> jobs, const TaskRunner& run);
+  static int MedianAxis(const Box& box);
+  std::size_t SplitAtMedian(std::size_t begin, std::size_t end, int axis);
+  Node* MedianNode(std::size_t begin, std::size_t end, Box& box, Pool& pool);
+  Node* Leaf(std::size_t begin, std::size_t end, Box& box, Pool& pool);
   void BoxOf(std::size_t begin, std::size_t end, Box& box) const;
-  Node* Parent(
-    Node* lower, Node* upper, int axis, const Box& lowerBox, const Box& upperBox, Box& box);
+  static void MakeParent(Node* node, Node* lower, Node* upper, int axis, const Box& lowerBox,
+    const Box& upperBox, Box& box);
+  // Crowded cells with more points than this are cut on several threads, a level at a time.
+  static constexpr std::size_t ParallelCell = 1 << 16;
 
   // Runs body(begin, end) over [0, count) in `chunks` tasks given to `run`.
   template <typename Body>
@@ -109,6 +122,7 @@ private:
 
   Adaptor Cloud;
   Tree3D Tree;
+  std::vector<std::unique_ptr<Pool>> JobPools; // the nodes built by median jobs
 };
 
 /// Whether the k points gathered as the nearest to a point c are still the k nearest to a point
@@ -162,19 +176,21 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
   this->Tree.m_size_at_index_build = count;
   if (count > 0)
   {
+    std::vector<MedianJob> jobs;
     this->Tree.root_node =
-      this->MortonNode(mortonWords.data(), 0, count, MortonBits - 1, this->Tree.root_bbox);
+      this->MortonNode(mortonWords.data(), 0, count, MortonBits - 1, this->Tree.root_bbox, jobs);
+    this->RunMedianJobs(std::move(jobs), run);
   }
   this->MoveIntoLeafOrder(xyz, oldIndex, run);
 }
 
 // Packed Morton words hold a 30-bit key above the 32-bit id; key bit b splits axis b % 3.
-inline PointCloudIndex::Node* PointCloudIndex::MortonNode(
-  const std::uint64_t* words, std::size_t begin, std::size_t end, int bit, Box& box)
+inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* words,
+  std::size_t begin, std::size_t end, int bit, Box& box, std::vector<MedianJob>& jobs)
 {
   if (end - begin <= LeafSize)
   {
-    return this->Leaf(begin, end, box);
+    return this->Leaf(begin, end, box, this->Tree.pool);
   }
   // The words of [begin, end) share their key bits above `bit`: the next bit that differs
   // within the range splits it in two contiguous parts.
@@ -188,46 +204,114 @@ inline PointCloudIndex::Node* PointCloudIndex::MortonNode(
       break;
     }
   }
+  if (bit < 0 && end - begin > ParallelCell) // one crowded Morton cell: later, in parallel
+  {
+    this->BoxOf(begin, end, box);
+    jobs.push_back({ begin, end, this->Tree.pool.template allocate<Node>() });
+    return jobs.back().Stub;
+  }
   if (bit < 0)
   {
-    return this->MedianNode(begin, end, box); // one Morton cell
+    return this->MedianNode(begin, end, box, this->Tree.pool); // one Morton cell
   }
   Box lower, upper;
-  Node* below = this->MortonNode(words, begin, split, bit - 1, lower);
-  Node* above = this->MortonNode(words, split, end, bit - 1, upper);
-  return this->Parent(below, above, bit % 3, lower, upper, box);
+  Node* below = this->MortonNode(words, begin, split, bit - 1, lower, jobs);
+  Node* above = this->MortonNode(words, split, end, bit - 1, upper, jobs);
+  Node* node = this->Tree.pool.template allocate<Node>();
+  MakeParent(node, below, above, bit % 3, lower, upper, box);
+  return node;
 }
 
-inline PointCloudIndex::Node* PointCloudIndex::MedianNode(
-  std::size_t begin, std::size_t end, Box& box)
+// The crowded cells, a level of median cuts at a time: a job too large is cut once (its halves
+// become the next level's jobs), a smaller one is built whole, each on a pool of its own. The
+// cuts are those MedianNode makes, so the tree does not depend on the threads.
+inline void PointCloudIndex::RunMedianJobs(std::vector<MedianJob> jobs, const TaskRunner& run)
 {
-  this->BoxOf(begin, end, box);
+  while (!jobs.empty())
+  {
+    std::vector<std::vector<MedianJob>> halves(jobs.size());
+    std::vector<std::function<void()>> tasks;
+    for (std::size_t j = 0; j < jobs.size(); ++j)
+    {
+      this->JobPools.emplace_back(new Pool);
+      Pool& pool = *this->JobPools.back();
+      tasks.push_back([this, &jobs, &halves, &pool, j]() {
+        const MedianJob job = jobs[j];
+        Box box;
+        this->BoxOf(job.Begin, job.End, box);
+        const int axis = MedianAxis(box);
+        if (job.End - job.Begin <= ParallelCell || !(box[axis].high > box[axis].low))
+        {
+          *job.Stub = *this->MedianNode(job.Begin, job.End, box, pool);
+          return;
+        }
+        const std::size_t middle = this->SplitAtMedian(job.Begin, job.End, axis);
+        Box lower, upper;
+        this->BoxOf(job.Begin, middle, lower);
+        this->BoxOf(middle, job.End, upper);
+        Node* below = pool.template allocate<Node>();
+        Node* above = pool.template allocate<Node>();
+        MakeParent(job.Stub, below, above, axis, lower, upper, box);
+        halves[j] = { { job.Begin, middle, below }, { middle, job.End, above } };
+      });
+    }
+    run(tasks);
+    std::vector<MedianJob> next;
+    for (const std::vector<MedianJob>& pair : halves)
+    {
+      next.insert(next.end(), pair.begin(), pair.end());
+    }
+    jobs.swap(next);
+  }
+}
+
+inline int PointCloudIndex::MedianAxis(const Box& box)
+{
   int axis = 0;
   for (int a = 1; a < 3; ++a)
   {
     axis = box[a].high - box[a].low > box[axis].high - box[axis].low ? a : axis;
   }
-  if (end - begin <= LeafSize || !(box[axis].high > box[axis].low))
-  {
-    return this->Leaf(begin, end, box); // few points, or all coincident
-  }
+  return axis;
+}
+
+// Puts the lower half of [begin, end) along `axis` first (ties by index); returns the middle.
+inline std::size_t PointCloudIndex::SplitAtMedian(std::size_t begin, std::size_t end, int axis)
+{
   std::vector<std::uint32_t>& order = this->Tree.vAcc;
   const std::size_t middle = begin + (end - begin) / 2;
   const double* xyz = this->Cloud.Points;
-  std::nth_element(order.begin() + begin, order.begin() + middle, order.begin() + end,
-    [&](std::uint32_t a, std::uint32_t b) {
+  std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
+    order.begin() + static_cast<std::ptrdiff_t>(middle),
+    order.begin() + static_cast<std::ptrdiff_t>(end), [&](std::uint32_t a, std::uint32_t b) {
       return xyz[3 * a + axis] < xyz[3 * b + axis] ||
         (xyz[3 * a + axis] == xyz[3 * b + axis] && a < b);
     });
-  Box lower, upper;
-  Node* below = this->MedianNode(begin, middle, lower);
-  Node* above = this->MedianNode(middle, end, upper);
-  return this->Parent(below, above, axis, lower, upper, box);
+  return middle;
 }
 
-inline PointCloudIndex::Node* PointCloudIndex::Leaf(std::size_t begin, std::size_t end, Box& box)
+inline PointCloudIndex::Node* PointCloudIndex::MedianNode(
+  std::size_t begin, std::size_t end, Box& box, Pool& pool)
 {
-  Node* node = this->Tree.pool.template allocate<Node>();
+  this->BoxOf(begin, end, box);
+  const int axis = MedianAxis(box);
+  if (end - begin <= LeafSize || !(box[axis].high > box[axis].low))
+  {
+    return this->Leaf(begin, end, box, pool); // few points, or all coincident
+  }
+  const std::size_t middle = this->SplitAtMedian(begin, end, axis);
+  Box lower, upper;
+  Node* below = this->MedianNode(begin, middle, lower, pool);
+  Node* above = this->MedianNode(middle, end, upper, pool);
+  Node* node = pool.template allocate<Node>();
+  MakeParent(node, below, above, axis, lower, upper, box);
+  return node;
+}
+
+inline PointCloudIndex::Node* PointCloudIndex::Leaf(
+  std::size_t begin, std::size_t end, Box& box, Pool& pool)
+{
+  Node* node = pool.template allocate<Node>();
   node->child1 = node->child2 = nullptr;
   node->node_type.lr.left = begin;
   node->node_type.lr.right = end;
@@ -253,10 +337,9 @@ inline void PointCloudIndex::BoxOf(std::size_t begin, std::size_t end, Box& box)
   }
 }
 
-inline PointCloudIndex::Node* PointCloudIndex::Parent(
-  Node* lower, Node* upper, int axis, const Box& lowerBox, const Box& upperBox, Box& box)
+inline void PointCloudIndex::MakeParent(Node* node, Node* lower, Node* upper, int axis,
+  const Box& lowerBox, const Box& upperBox, Box& box)
 {
-  Node* node = this->Tree.pool.template allocate<Node>();
   node->child1 = lower;
   node->child2 = upper;
   node->node_type.sub.divfeat = axis;
@@ -267,7 +350,6 @@ inline PointCloudIndex::Node* PointCloudIndex::Parent(
     box[a].low = std::min(lowerBox[a].low, upperBox[a].low);
     box[a].high = std::max(lowerBox[a].high, upperBox[a].high);
   }
-  return node;
 }
 
 } // namespace lsi

@@ -501,25 +501,27 @@ std::unique_ptr<lsi::PointCloudIndex> MortonTree(
 }
 
 // The kd-tree built from Morton order answers like brute force, on a uniform cloud, a clustered
-// one, one where a quarter of the points share one x, and one where most points lie in one
-// Morton cell (cut at medians), 40 of them at one spot; the reordered points and oldIndex
-// describe the same cloud.
+// one, one where a quarter of the points share one x, and two where most points lie in one
+// Morton cell (cut at medians; the larger one in jobs), 40 of them at one spot; the reordered
+// points and oldIndex describe the same cloud.
 void TestMortonTree()
 {
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (int cloud = 0; cloud < 4; ++cloud)
+  for (int cloud = 0; cloud < 5; ++cloud)
   {
-    const std::size_t n = 5000;
+    // Cloud 4: a crowded cell larger than the tree cuts in parallel jobs (PointCloudIndex's
+    // ParallelCell), 150,000 points.
+    const std::size_t n = cloud == 4 ? 150000 : 5000;
     std::vector<double> original(3 * n);
     for (std::size_t i = 0; i < n; ++i)
     {
       for (int a = 0; a < 3; ++a)
       {
-        original[3 * i + a] = cloud == 1 ? std::pow(unit(random), 3.0) * normal(random)
-          : cloud == 3 && i > 100        ? 0.25 + (i < 140 ? 0.0 : 1e-7 * unit(random))
-                                         : unit(random);
+        original[3 * i + a] = cloud == 1          ? std::pow(unit(random), 3.0) * normal(random)
+          : (cloud == 3 || cloud == 4) && i > 100 ? 0.25 + (i < 140 ? 0.0 : 1e-7 * unit(random))
+                                                  : unit(random);
       }
       if (cloud == 2 && i % 4 == 0)
       {
