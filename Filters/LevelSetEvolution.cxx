@@ -217,17 +217,16 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   // Values beyond the reinitialised region are never read as distances: clamp them, so that a
   // front moving into stale values meets a bounded step that the reinitialisation repairs.
   const double clamp = ReinitializationHalfWidth(settings);
-  for (double& phi : this->Phi)
-  {
-    phi = std::max(-clamp, std::min(clamp, phi));
-  }
   const std::size_t n = this->Geometry.NumberOfSamples;
   this->InitiallyPositive.resize(n);
   this->HasChangedSign.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    this->InitiallyPositive[i] = Positive(this->Phi[i]);
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      this->Phi[i] = std::max(-clamp, std::min(clamp, this->Phi[i]));
+      this->InitiallyPositive[i] = Positive(this->Phi[i]);
+    }
+  });
   const Communicator& ranks = *this->Ranks;
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {

@@ -355,9 +355,9 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
 
 namespace
 {
-// nanoflann's tree build cannot stop half way (about 0.3 s at 2M points): it runs on a worker
-// thread while this one keeps checking for abort. An abandoned build finishes on its own and
-// frees its memory, which it owns through the shared pointer.
+// The tree build cannot stop half way (0.07 s at 2M uniform points, more on clustered data): it
+// runs on a worker thread while this one keeps checking for abort. An abandoned build finishes
+// on its own and frees its memory, which it owns through the shared pointer.
 struct TreeBuild
 {
   std::vector<double> Positions;
