@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetBand.h"
 
-#include "vtkSMPTools.h"
+#include "LevelSetParallel.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace lsi
@@ -19,31 +18,9 @@ BandCollector::BandCollector(const Neighborhoods& geometry)
 void BandCollector::Where(
   const std::vector<double>& phi, double halfWidth, std::vector<std::size_t>& out) const
 {
-  // In fixed chunks, in parallel, joined in order: the samples in storage order, as a serial
-  // scan gives them (it runs several times per iteration over every sample).
-  constexpr std::size_t Chunk = 1 << 16;
-  const std::size_t n = this->Geometry.NumberOfSamples;
-  const std::size_t chunks = (n + Chunk - 1) / Chunk;
-  std::vector<std::vector<std::size_t>> found(chunks);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType c = first; c < last; ++c)
-    {
-      std::vector<std::size_t>& mine = found[c];
-      const std::size_t end = std::min(n, (static_cast<std::size_t>(c) + 1) * Chunk);
-      for (std::size_t i = static_cast<std::size_t>(c) * Chunk; i < end; ++i)
-      {
-        if (std::abs(phi[i]) < halfWidth)
-        {
-          mine.push_back(i);
-        }
-      }
-    }
-  });
-  out.clear();
-  for (const std::vector<std::size_t>& mine : found)
-  {
-    out.insert(out.end(), mine.begin(), mine.end());
-  }
+  // In parallel: it runs several times per iteration over every sample.
+  out = IndicesWhere<std::size_t>(
+    this->Geometry.NumberOfSamples, [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; });
 }
 
 void BandCollector::WithNeighbors(

@@ -347,14 +347,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
 
   // The distances of the touching samples, in parallel (a nearest-point query each near the
   // surface); the sums below are serial, in particle order, so they do not depend on threads.
-  std::vector<std::uint32_t> touchingSamples;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (touching[i])
-    {
-      touchingSamples.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
+  const std::vector<std::uint32_t> touchingSamples = IndicesWhere<std::uint32_t>(
+    geometry.NumberOfSamples, [&](std::size_t i) { return touching[i] != 0; });
   std::vector<double> distances(geometry.NumberOfSamples, 0.0);
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(touchingSamples.size()), 256, [&](vtkIdType begin, vtkIdType end) {

@@ -20,14 +20,11 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
 {
   const std::size_t n = geometry.NumberOfSamples;
   std::vector<char> inside(n, 0);
-  std::vector<std::uint32_t> queue;
-  for (std::size_t i = 0; i < n; ++i)
+  std::vector<std::uint32_t> queue = IndicesWhere<std::uint32_t>(
+    n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0; });
+  for (const std::uint32_t i : queue)
   {
-    if (inSeed[i] && dataOffsets[i] > 0.0)
-    {
-      inside[i] = 1;
-      queue.push_back(static_cast<std::uint32_t>(i));
-    }
+    inside[i] = 1;
   }
   result.SeedSamples = queue.size();
   BreadthFirst(
@@ -117,15 +114,7 @@ std::vector<std::uint32_t> InsideAndNeighbors(
       listed[ids[m]] = 1;
     }
   }
-  std::vector<std::uint32_t> list;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (listed[i])
-    {
-      list.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  return list;
+  return IndicesWhere<std::uint32_t>(n, [&](std::size_t i) { return listed[i] != 0; });
 }
 
 // Computes, a wave at a time in parallel, the neighbour lists that the distance propagation

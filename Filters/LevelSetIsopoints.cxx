@@ -144,14 +144,8 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
 {
   const std::size_t n = geometry.NumberOfSamples;
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  std::vector<std::size_t> front;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (phi[i] > 0.0 && phi[i] < 3.0 * geometry.RadiusOf(i))
-    {
-      front.push_back(i);
-    }
-  }
+  const std::vector<std::size_t> front = IndicesWhere<std::size_t>(
+    n, [&](std::size_t i) { return phi[i] > 0.0 && phi[i] < 3.0 * geometry.RadiusOf(i); });
   {
     // The angle criterion needs gradients on the front and at its negative neighbours.
     std::vector<char> needed(n, 0);

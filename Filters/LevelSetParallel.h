@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace lsi
 {
@@ -77,6 +78,35 @@ bool ParallelForInBlocks(
       });
   }
   return true;
+}
+
+/// The indices i < count for which keep(i) holds, in increasing order: found in fixed chunks
+/// in parallel and joined in order (for scans over every sample, several per run).
+template <typename Index, typename Keep>
+std::vector<Index> IndicesWhere(std::size_t count, Keep&& keep)
+{
+  constexpr std::size_t Chunk = 1 << 16;
+  const std::size_t chunks = (count + Chunk - 1) / Chunk;
+  std::vector<std::vector<Index>> found(chunks);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
+    for (vtkIdType c = first; c < last; ++c)
+    {
+      const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * Chunk);
+      for (std::size_t i = static_cast<std::size_t>(c) * Chunk; i < end; ++i)
+      {
+        if (keep(i))
+        {
+          found[c].push_back(static_cast<Index>(i));
+        }
+      }
+    }
+  });
+  std::vector<Index> all;
+  for (const std::vector<Index>& part : found)
+  {
+    all.insert(all.end(), part.begin(), part.end());
+  }
+  return all;
 }
 
 /// Sorts [first, last) by `less`, a strict total order (so the result is the same as

@@ -12,10 +12,10 @@ namespace lsi
 std::vector<std::uint32_t> OwnedRadiusSample(
   const Neighborhoods& geometry, const Communicator& ranks)
 {
-  double owned = 0.0;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  double owned = static_cast<double>(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples && ranks.Distributed(); ++i)
   {
-    owned += ranks.Owns(i) ? 1.0 : 0.0;
+    owned -= ranks.Owns(i) ? 0.0 : 1.0;
   }
   const std::uint64_t every = RadiusSampleEvery(ranks.Sum(owned));
   return geometry.RadiusSampleWhere(every, [&](std::size_t i) { return ranks.Owns(i); });
