@@ -10,6 +10,7 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -94,8 +95,15 @@ private:
     std::size_t Begin, End;
     Node* Stub;
   };
+  // A subtree of the Morton cuts left for later, to be built on some thread into Stub.
+  struct PieceJob
+  {
+    std::size_t Begin, End;
+    int Bit;
+    Node* Stub;
+  };
   Node* MortonNode(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
-    Box& box, std::vector<MedianJob>& jobs);
+    Box& box, Pool& pool, std::vector<MedianJob>& jobs, std::vector<PieceJob>* pieces);
   void RunMedianJobs(std::vector<MedianJob> jobs, const TaskRunner& run);
   static int MedianAxis(const Box& box);
   std::size_t SplitAtMedian(std::size_t begin, std::size_t end, int axis);
@@ -106,6 +114,9 @@ private:
     const Box& upperBox, Box& box);
   // Crowded cells with more points than this are cut on several threads, a level at a time.
   static constexpr std::size_t ParallelCell = 1 << 16;
+  // Morton subtrees of at most this many points are built as tasks (any size gives the same
+  // tree: it only decides what runs where).
+  static constexpr std::size_t PieceSize = 1 << 15;
 
   // Runs body(begin, end) over [0, count) in `chunks` tasks given to `run`.
   template <typename Body>
@@ -122,7 +133,8 @@ private:
 
   Adaptor Cloud;
   Tree3D Tree;
-  std::vector<std::unique_ptr<Pool>> JobPools; // the nodes built by median jobs
+  std::vector<std::unique_ptr<Pool>> JobPools; // the nodes built by tasks
+  std::atomic<bool> Reordered{ false };        // whether a median cut reordered points
 };
 
 /// Whether the k points gathered as the nearest to a point c are still the k nearest to a point
@@ -145,8 +157,12 @@ inline void PointCloudIndex::MoveIntoLeafOrder(
 {
   std::vector<std::uint32_t>& leafOrder = this->Tree.vAcc;
   const std::size_t count = leafOrder.size();
-  std::vector<double> moved(3 * count);
   oldIndex = leafOrder;
+  if (!this->Reordered)
+  {
+    return; // no median cut: the leaves are in Morton order already
+  }
+  std::vector<double> moved(3 * count);
   InChunks(count, 8, run, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
@@ -176,9 +192,30 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
   this->Tree.m_size_at_index_build = count;
   if (count > 0)
   {
+    // The top cuts here; the subtrees below PieceSize points as tasks, each on a node pool of
+    // its own; then the crowded cells that any of them left.
     std::vector<MedianJob> jobs;
-    this->Tree.root_node =
-      this->MortonNode(mortonWords.data(), 0, count, MortonBits - 1, this->Tree.root_bbox, jobs);
+    std::vector<PieceJob> pieces;
+    this->Tree.root_node = this->MortonNode(mortonWords.data(), 0, count, MortonBits - 1,
+      this->Tree.root_bbox, this->Tree.pool, jobs, &pieces);
+    std::vector<std::vector<MedianJob>> pieceJobs(pieces.size());
+    std::vector<std::function<void()>> tasks;
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      this->JobPools.emplace_back(new Pool);
+      Pool& pool = *this->JobPools.back();
+      tasks.push_back([this, &mortonWords, &pieces, &pieceJobs, &pool, p]() {
+        const PieceJob& piece = pieces[p];
+        Box box;
+        *piece.Stub = *this->MortonNode(
+          mortonWords.data(), piece.Begin, piece.End, piece.Bit, box, pool, pieceJobs[p], nullptr);
+      });
+    }
+    run(tasks);
+    for (const std::vector<MedianJob>& more : pieceJobs)
+    {
+      jobs.insert(jobs.end(), more.begin(), more.end());
+    }
     this->RunMedianJobs(std::move(jobs), run);
   }
   this->MoveIntoLeafOrder(xyz, oldIndex, run);
@@ -186,11 +223,18 @@ inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
 
 // Packed Morton words hold a 30-bit key above the 32-bit id; key bit b splits axis b % 3.
 inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* words,
-  std::size_t begin, std::size_t end, int bit, Box& box, std::vector<MedianJob>& jobs)
+  std::size_t begin, std::size_t end, int bit, Box& box, Pool& pool, std::vector<MedianJob>& jobs,
+  std::vector<PieceJob>* pieces)
 {
   if (end - begin <= LeafSize)
   {
-    return this->Leaf(begin, end, box, this->Tree.pool);
+    return this->Leaf(begin, end, box, pool);
+  }
+  if (pieces && end - begin <= PieceSize) // later, as a task
+  {
+    this->BoxOf(begin, end, box);
+    pieces->push_back({ begin, end, bit, pool.template allocate<Node>() });
+    return pieces->back().Stub;
   }
   // The words of [begin, end) share their key bits above `bit`: the next bit that differs
   // within the range splits it in two contiguous parts.
@@ -207,17 +251,17 @@ inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* w
   if (bit < 0 && end - begin > ParallelCell) // one crowded Morton cell: later, in parallel
   {
     this->BoxOf(begin, end, box);
-    jobs.push_back({ begin, end, this->Tree.pool.template allocate<Node>() });
+    jobs.push_back({ begin, end, pool.template allocate<Node>() });
     return jobs.back().Stub;
   }
   if (bit < 0)
   {
-    return this->MedianNode(begin, end, box, this->Tree.pool); // one Morton cell
+    return this->MedianNode(begin, end, box, pool); // one Morton cell
   }
   Box lower, upper;
-  Node* below = this->MortonNode(words, begin, split, bit - 1, lower, jobs);
-  Node* above = this->MortonNode(words, split, end, bit - 1, upper, jobs);
-  Node* node = this->Tree.pool.template allocate<Node>();
+  Node* below = this->MortonNode(words, begin, split, bit - 1, lower, pool, jobs, pieces);
+  Node* above = this->MortonNode(words, split, end, bit - 1, upper, pool, jobs, pieces);
+  Node* node = pool.template allocate<Node>();
   MakeParent(node, below, above, bit % 3, lower, upper, box);
   return node;
 }
@@ -278,6 +322,7 @@ inline int PointCloudIndex::MedianAxis(const Box& box)
 // Puts the lower half of [begin, end) along `axis` first (ties by index); returns the middle.
 inline std::size_t PointCloudIndex::SplitAtMedian(std::size_t begin, std::size_t end, int axis)
 {
+  this->Reordered = true;
   std::vector<std::uint32_t>& order = this->Tree.vAcc;
   const std::size_t middle = begin + (end - begin) / 2;
   const double* xyz = this->Cloud.Points;
