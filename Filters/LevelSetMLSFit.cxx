@@ -44,8 +44,8 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
   // order): the last gather's k + 1 samples all lie within its outer radius plus the step from
   // p, so the search can be bounded by that (slightly widened against rounding) and still finds
   // the same samples, ties included (TestNumerics). A long step searches without a bound.
-  const std::size_t wanted = this->Ids.size(); // k + 1, or the whole cloud
-  const double step = (p - this->GatherPoint).norm();
+  const std::size_t wanted = this->Ids.size();        // k + 1, or the whole cloud
+  const double step = (p - this->OuterCenter).norm(); // from where the last search was made
   std::size_t found = 0;
   if (this->FoundCount > 0 && this->OuterRadius < HUGE_VAL && step < this->OuterRadius)
   {

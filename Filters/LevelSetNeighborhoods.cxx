@@ -355,7 +355,7 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
 
 namespace
 {
-// The tree build cannot stop half way (0.07 s at 2M uniform points, more on clustered data): it
+// The tree build cannot stop half way (0.04 s at 2M uniform points, more on clustered data): it
 // runs on a worker thread while this one keeps checking for abort. An abandoned build finishes
 // on its own and frees its memory, which it owns through the shared pointer.
 struct TreeBuild
