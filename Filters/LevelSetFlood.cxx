@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdint>
 #include <queue>
+#include <chrono>
+#include <cstdio>
+static double T0(){return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();}
 
 namespace lsi
 {
@@ -178,10 +181,11 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   }
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
-  // carries the crossing nearest to it found so far and offers it to its neighbours.
+  // carries the crossing nearest to it found so far and offers it to its neighbours. Squared
+  // distances throughout (the same order, no square roots in the inner loop).
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
-  std::vector<double> distance(n, HUGE_VAL);
+  std::vector<double> distance(n, HUGE_VAL); // squared
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
@@ -218,7 +222,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
         t = 0.5;
       }
       const Eigen::Vector3d crossing = xi + t * (Eigen::Vector3d(geometry.Position(j)) - xi);
-      const double d = (crossing - xi).norm();
+      const double d = (crossing - xi).squaredNorm();
       if (d < distance[i])
       {
         distance[i] = d;
@@ -227,38 +231,49 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
     }
     if (distance[i] < HUGE_VAL)
     {
-      heap.push({ distance[i], static_cast<std::uint32_t>(i) });
+      if (distance[i] <= halfWidth * halfWidth)
+      {
+        heap.push({ distance[i], static_cast<std::uint32_t>(i) });
+      }
       holders.push_back(static_cast<std::uint32_t>(i));
     }
   }
   PrefetchBand(geometry, holders, halfWidth, stop);
+  // A sample farther than halfWidth takes an offer (phi clamps it to halfWidth either way) but
+  // passes nothing on: it never enters the heap.
+  const double reach = halfWidth * halfWidth; double t5=T0(); std::size_t pops=0, pushes=0;
   while (!heap.empty() && !stop.Stop())
   {
-    const Entry top = heap.top();
+    const Entry top = heap.top(); ++pops;
     heap.pop();
     const std::uint32_t i = top.second;
-    if (top.first > distance[i] || top.first > halfWidth || geometry.IsTruncated(i))
+    if (top.first > distance[i] || geometry.IsTruncated(i))
     {
       continue;
     }
     const std::uint32_t* ids = geometry.NeighborsOf(i);
+    const Eigen::Vector3d from = closest[i];
     for (int m = 1; m < stride; ++m)
     {
       const std::uint32_t j = ids[m];
-      const double d = (Eigen::Vector3d(geometry.Position(j)) - closest[i]).norm();
+      const double d = (Eigen::Vector3d(geometry.Position(j)) - from).squaredNorm();
       if (d < distance[j])
       {
         distance[j] = d;
-        closest[j] = closest[i];
-        heap.push({ d, j });
+        closest[j] = from;
+        if (d <= reach)
+        {
+          heap.push({ d, j }); ++pushes;
+        }
       }
     }
   }
+  fprintf(stderr,"dijkstra %.3f pops %zu pushes %zu\n",T0()-t5,pops,pushes);
   result.Aborted = result.Aborted || stop.WasStopped();
   phi.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    const double d = std::min(distance[i], halfWidth);
+    const double d = std::min(std::sqrt(distance[i]), halfWidth);
     phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
   }
   return result;
