@@ -544,12 +544,16 @@ Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
     const std::size_t stride = static_cast<std::size_t>(this->Stride);
     this->SampleIds.resize(this->Sample.size() * stride);
     this->SampleRadii.resize(this->Sample.size());
+    // Each search bounded first by the radius of the one before it (SearchRow: the lists are
+    // exact either way).
     vtkSMPTools::For(
       0, static_cast<vtkIdType>(this->Sample.size()), [&](vtkIdType begin, vtkIdType end) {
+        double nearby = 0.0;
         for (vtkIdType m = begin; m < end; ++m)
         {
           this->SampleRadii[m] =
-            this->SearchRow(this->Sample[m], 0.0, &this->SampleIds[m * stride]);
+            this->SearchRow(this->Sample[m], nearby, &this->SampleIds[m * stride]);
+          nearby = this->SampleRadii[m];
         }
       });
     this->SampleRowsEvery = this->SampleEvery;
