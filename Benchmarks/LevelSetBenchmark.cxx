@@ -171,7 +171,7 @@ int main(int argc, char* argv[])
             << filter->GetEffectiveCurvatureEpsilon() << ", " << filter->GetEffectiveTimeStep()
             << "\niterations: " << iterations
             << (filter->GetConverged() ? " (converged)" : " (limit)")
-            << "\nseconds total: " << total
+            << "\nseconds total: " << total << "\nseconds input: " << filter->GetInputSeconds()
             << "\nseconds neighbours: " << filter->GetNeighborSearchSeconds() << " (sort "
             << filter->GetSpatialSortSeconds() << ", nearest "
             << filter->GetNearestNeighborSeconds() << " of which tree "
@@ -184,6 +184,7 @@ int main(int argc, char* argv[])
             << filter->GetCompletionSeconds() << ", refinement on the data "
             << filter->GetDataRefinementSeconds()
             << ")\nseconds outputs: " << filter->GetOutputSeconds()
+            << "\nseconds particle outputs: " << filter->GetParticleOutputSeconds()
             << "\nisopoints: " << m.Isopoints << "\nmean distance L: " << m.MeanDistance
             << "\n99th percentile distance: " << m.Percentile99Distance
             << "\nmean normal angle error (deg): " << m.MeanNormalAngleDegrees

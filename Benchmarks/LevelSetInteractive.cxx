@@ -10,12 +10,15 @@
 //     its kept grid (isovalue) or only re-connects (seed);
 //   - the whole filter with 1 and with 2 threads;
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
-//     its peak resident memory per particle (the particles themselves included).
+//     its peak resident memory per particle (the particles themselves included), and the
+//     profile, per stage, of that first run and of a re-run after the small isovalue change.
+// Every profile names the filter's stages (input, neighbours, initialisation, evolution,
+// isopoints, outputs, particle_outputs) and what the run's time leaves (unattributed).
 // Prints a table and writes everything as JSON (--json FILE). Asserts nothing: the targets are
 // printed beside the measurements.
 //
 //   LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] [--json FILE]
-//   LevelSetInteractive --first-run-only N   (the child: prints "seconds bytes")
+//   LevelSetInteractive --first-run-only N   (the child: prints its measurements on one line)
 #include "CaseRuns.h"
 #include "GridRoute.h"
 #include "PeakMemory.h"
@@ -112,14 +115,28 @@ void Configure(vtkLevelSetIsosurface* filter, const Case& c, int threads)
   filter->SetOutputTypeToIsopoints(); // accuracy is measured on the isopoints
 }
 
-// The filter's own stage times of its last run.
-void AddStages(Report& report, const std::string& prefix, vtkLevelSetIsosurface* filter)
+// The filter's own stage times of its last run, in the order StageNames lists them, and what
+// the run's `total` seconds leave (the pipeline, the last run's bookkeeping).
+const std::array<const char*, 8> StageNames = { "input", "neighbours", "initialisation",
+  "evolution", "isopoints", "outputs", "particle_outputs", "unattributed" };
+std::array<double, 8> Stages(vtkLevelSetIsosurface* filter, double total)
 {
-  report.Add(prefix + "neighbours_s", filter->GetNeighborSearchSeconds());
-  report.Add(prefix + "initialisation_s", filter->GetInitializationSeconds());
-  report.Add(prefix + "evolution_s", filter->GetEvolutionSeconds());
-  report.Add(prefix + "isopoints_s", filter->GetIsopointSeconds());
-  report.Add(prefix + "outputs_s", filter->GetOutputSeconds());
+  std::array<double, 8> s = { filter->GetInputSeconds(), filter->GetNeighborSearchSeconds(),
+    filter->GetInitializationSeconds(), filter->GetEvolutionSeconds(), filter->GetIsopointSeconds(),
+    filter->GetOutputSeconds(), filter->GetParticleOutputSeconds(), 0.0 };
+  s[7] = total;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k)
+  {
+    s[7] -= s[k];
+  }
+  return s;
+}
+void AddStages(Report& report, const std::string& prefix, const std::array<double, 8>& stages)
+{
+  for (std::size_t k = 0; k < stages.size(); ++k)
+  {
+    report.Add(prefix + StageNames[k] + "_s", stages[k]);
+  }
 }
 
 double TimedUpdate(vtkLevelSetIsosurface* filter)
@@ -152,7 +169,17 @@ std::vector<double> IsoValuesAbove(
   return values;
 }
 
-// Child mode: one first run at `samples`, the particle arrays freed of everything else.
+// What a child process measures at one size.
+struct ChildRun
+{
+  double Seconds = 0.0, Bytes = 0.0, Points = 0.0; // first run; peak memory after it
+  std::array<double, 8> Stages{};                  // of the first run
+  double ReRunSeconds = 0.0;                       // after the small isovalue change
+  std::array<double, 8> ReRunStages{};
+};
+
+// Child mode: a first run at `samples`, the particle arrays freed of everything else, its peak
+// memory, then a re-run after the small isovalue change; prints them on one line.
 int FirstRunOnly(std::size_t samples, int threads)
 {
   OneComponentCase c;
@@ -165,13 +192,28 @@ int FirstRunOnly(std::size_t samples, int threads)
   filter->SetInputData(particles);
   Configure(filter, c, threads);
   const double seconds = TimedUpdate(filter);
-  std::cout << seconds << " " << lsi::PeakMemoryBytes() << " "
-            << filter->GetOutput(0)->GetNumberOfPoints() << "\n";
-  return filter->GetOutput(0)->GetNumberOfPoints() > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  const double bytes = static_cast<double>(lsi::PeakMemoryBytes());
+  const vtkIdType points = filter->GetOutput(0)->GetNumberOfPoints();
+  const std::array<double, 8> stages = Stages(filter, seconds);
+  filter->SetIsoValue(IsoValuesAbove(particles, c.IsoValue, { 0.02 })[0]);
+  const double reRun = TimedUpdate(filter);
+  const std::array<double, 8> reRunStages = Stages(filter, reRun);
+  std::cout << seconds << " " << bytes << " " << points;
+  for (double v : stages)
+  {
+    std::cout << " " << v;
+  }
+  std::cout << " " << reRun;
+  for (double v : reRunStages)
+  {
+    std::cout << " " << v;
+  }
+  std::cout << "\n";
+  return points > 0 && filter->GetOutput(0)->GetNumberOfPoints() > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 // Runs this program in child mode; false if it failed.
-bool RunChild(const char* self, std::size_t samples, int threads, double& seconds, double& bytes)
+bool RunChild(const char* self, std::size_t samples, int threads, ChildRun& run)
 {
   std::ostringstream command;
   command << "'" << self << "' --first-run-only " << samples << " --threads " << threads;
@@ -180,8 +222,16 @@ bool RunChild(const char* self, std::size_t samples, int threads, double& second
   {
     return false;
   }
-  double points = 0.0;
-  const bool read = std::fscanf(pipe, "%lf %lf %lf", &seconds, &bytes, &points) == 3;
+  bool read = std::fscanf(pipe, "%lf %lf %lf", &run.Seconds, &run.Bytes, &run.Points) == 3;
+  for (double& v : run.Stages)
+  {
+    read = read && std::fscanf(pipe, "%lf", &v) == 1;
+  }
+  read = read && std::fscanf(pipe, "%lf", &run.ReRunSeconds) == 1;
+  for (double& v : run.ReRunStages)
+  {
+    read = read && std::fscanf(pipe, "%lf", &v) == 1;
+  }
   return pclose(pipe) == 0 && read;
 }
 
@@ -247,23 +297,20 @@ int main(int argc, char* argv[])
   double first = 0.0;
   const SurfaceMetrics metrics = RunAndMeasure(filter, c, samples, surfaceSpacing, first);
   report.Add("level_set.first_run_s", first);
-  AddStages(report, "level_set.first_run.", filter);
-  report.Add("level_set.first_run.unattributed_s",
-    first - filter->GetNeighborSearchSeconds() - filter->GetInitializationSeconds() -
-      filter->GetEvolutionSeconds() - filter->GetIsopointSeconds() - filter->GetOutputSeconds());
+  AddStages(report, "level_set.first_run.", Stages(filter, first));
   report.Add("level_set.mean_distance_spacings", metrics.MeanDistance);
   report.Add("level_set.isopoints", static_cast<double>(metrics.Isopoints));
 
   filter->SetIsoValue(isoValues[0]);
   const double isoSmall = TimedUpdate(filter);
-  AddStages(report, "level_set.isovalue_change_small.", filter);
+  AddStages(report, "level_set.isovalue_change_small.", Stages(filter, isoSmall));
   filter->SetIsoValue(isoValues[1]);
   const double isoLarge = TimedUpdate(filter);
   filter->SetIsoValue(c.IsoValue);
   TimedUpdate(filter);
   filter->SetSeedCenter(movedSeeds[0].data());
   const double seed = TimedUpdate(filter);
-  AddStages(report, "level_set.seed_move.", filter);
+  AddStages(report, "level_set.seed_move.", Stages(filter, seed));
   filter->SetSeedCenter(seeds[0].data());
   TimedUpdate(filter);
   filter->SetCurvatureWeight(2.0 * filter->GetCurvatureWeight() + 0.05);
@@ -279,20 +326,28 @@ int main(int argc, char* argv[])
   report.Add("level_set.one_thread_s", threads[0]);
   report.Add("level_set.two_threads_s", threads[1]);
 
-  // Scaling, each size in a process of its own (peak memory is per process).
-  double smallSeconds = 0, smallBytes = 0, largeSeconds = 0, largeBytes = 0;
-  const bool scaled = o.ScalingSamples > 0 &&
-    RunChild(argv[0], o.Samples, o.Threads, smallSeconds, smallBytes) &&
-    RunChild(argv[0], o.ScalingSamples, o.Threads, largeSeconds, largeBytes);
+  // Scaling, each size in a process of its own (peak memory is per process), with the profile
+  // of its first run and of a re-run after the small isovalue change.
+  ChildRun small, large;
+  const bool scaled = o.ScalingSamples > 0 && RunChild(argv[0], o.Samples, o.Threads, small) &&
+    RunChild(argv[0], o.ScalingSamples, o.Threads, large);
   if (scaled)
   {
-    report.Add("scaling.small_samples", static_cast<double>(o.Samples));
-    report.Add("scaling.small_first_run_s", smallSeconds);
-    report.Add("scaling.small_bytes_per_particle", smallBytes / o.Samples);
-    report.Add("scaling.large_samples", static_cast<double>(o.ScalingSamples));
-    report.Add("scaling.large_first_run_s", largeSeconds);
-    report.Add("scaling.large_bytes_per_particle", largeBytes / o.ScalingSamples);
+    for (const auto& size : { std::make_pair("small", &small), std::make_pair("large", &large) })
+    {
+      const std::string prefix = std::string("scaling.") + size.first;
+      const ChildRun& run = *size.second;
+      const double samples =
+        static_cast<double>(size.second == &small ? o.Samples : o.ScalingSamples);
+      report.Add(prefix + "_samples", samples);
+      report.Add(prefix + "_first_run_s", run.Seconds);
+      report.Add(prefix + "_bytes_per_particle", run.Bytes / samples);
+      AddStages(report, prefix + "_first_run.", run.Stages);
+      report.Add(prefix + "_isovalue_change_small_s", run.ReRunSeconds);
+      AddStages(report, prefix + "_isovalue_change_small.", run.ReRunStages);
+    }
   }
+  const double smallSeconds = small.Seconds, largeSeconds = large.Seconds, largeBytes = large.Bytes;
 
   // The targets, as ratios.
   report.Add("target.first_run_speedup (>= 10)", gridFirst / first);

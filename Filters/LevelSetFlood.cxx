@@ -5,15 +5,9 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <queue>
-static double T0()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 namespace lsi
 {
@@ -245,12 +239,9 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   // A sample farther than halfWidth takes an offer (phi clamps it to halfWidth either way) but
   // passes nothing on: it never enters the heap.
   const double reach = halfWidth * halfWidth;
-  double t5 = T0();
-  std::size_t pops = 0, pushes = 0;
   while (!heap.empty() && !stop.Stop())
   {
     const Entry top = heap.top();
-    ++pops;
     heap.pop();
     const std::uint32_t i = top.second;
     if (top.first > distance[i] || geometry.IsTruncated(i))
@@ -270,12 +261,10 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
         if (d <= reach)
         {
           heap.push({ d, j });
-          ++pushes;
         }
       }
     }
   }
-  fprintf(stderr, "dijkstra %.3f pops %zu pushes %zu\n", T0() - t5, pops, pushes);
   result.Aborted = result.Aborted || stop.WasStopped();
   phi.resize(n);
   for (std::size_t i = 0; i < n; ++i)

@@ -162,7 +162,7 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* 
   this->ReusedLastOutputs = true;
   this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
     this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
-      this->OutputSeconds = 0.0;
+      this->OutputSeconds = this->InputSeconds = this->ParticleOutputSeconds = 0.0;
   this->LastRunTime = this->GetMTime();
   return true;
 }
@@ -312,12 +312,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return true;
   }
-  last.Valid = false;         // until this run succeeds
+  last.Valid = false; // until this run succeeds
+  this->InputSeconds = this->ParticleOutputSeconds = 0.0;
+  auto inputStart = lsi::Clock::now();
   std::vector<double> values; // f, in input order
   if (!this->ValidateInput(input, values))
   {
     return false;
   }
+  this->InputSeconds = SecondsSince(inputStart);
   vtkSmartPointer<vtkPointSet> original = input;
   if (ranks.Distributed())
   {
@@ -363,6 +366,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     this->GhostFraction = counts[0] / counts[1];
   }
   input = work; // from here on: the distinct particles, their ghost images and MPI ghosts
+  inputStart = lsi::Clock::now();
   std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples
   if (!ranks.All(this->BuildSPHField(input, *geometry, values, field)))
   {
@@ -389,6 +393,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   ranks.RefreshGhosts(dataSign);
   const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign, ranks);
   const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
+  this->InputSeconds += SecondsSince(inputStart);
   std::vector<double> phi;
   if (!this->Initialize(input, *geometry, dataOffsets, settings, phi))
   {
@@ -420,6 +425,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
+  const auto particleStart = lsi::Clock::now();
   lsi::MakeParticleOutput(original, *geometry, phi, mergedId, particleOutput);
   if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
   {
@@ -447,6 +453,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   inside.SurfaceNormals = &isopoints.Normals;
   inside.Ranks = &ranks;
   vtkSmartPointer<vtkTable> table = lsi::EnclosedTable(inside);
+  this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
     enclosed->ShallowCopy(table);

@@ -439,6 +439,9 @@ public:
   vtkGetMacro(CompletionSeconds, double);
   vtkGetMacro(DataRefinementSeconds, double); // included in IsopointSeconds
   vtkGetMacro(OutputSeconds, double);         // splat radii, interpolated arrays, polygons
+  // checking the input, f - f_iso at the samples (or the SPH field there) and the global scales
+  vtkGetMacro(InputSeconds, double);
+  vtkGetMacro(ParticleOutputSeconds, double); // the Particles and Enclosed outputs
   ///@}
 
   ///@{
@@ -501,7 +504,8 @@ protected:
   double NeighborSearchSeconds = 0.0, SpatialSortSeconds = 0.0, NearestNeighborSeconds = 0.0,
          TreeBuildSeconds = 0.0, StencilSeconds = 0.0, InitializationSeconds = 0.0,
          EvolutionSeconds = 0.0, IsopointSeconds = 0.0, CompletionSeconds = 0.0,
-         DataRefinementSeconds = 0.0, OutputSeconds = 0.0;
+         DataRefinementSeconds = 0.0, OutputSeconds = 0.0, InputSeconds = 0.0,
+         ParticleOutputSeconds = 0.0;
 
 private:
   // Seed changes mark the filter modified through this: when nothing else changed since the

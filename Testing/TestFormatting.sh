@@ -18,5 +18,13 @@ if [ -n "$missing" ]; then
   echo "$missing"
   status=1
 fi
+# The filter, readers and plugin speak through VTK's messages (vtkWarningMacro, vtkErrorMacro),
+# never to the terminal: a print left in them (a timer, say) is a leftover.
+prints=$(git grep -nE 'std::(cout|cerr)|[^n]printf\(|puts\(' -- Filters IO Plugin 2>/dev/null)
+if [ -n "$prints" ]; then
+  echo "FAILED: direct prints in the library (use VTK's messages):"
+  echo "$prints"
+  status=1
+fi
 [ $status -eq 0 ] && echo "$(echo $cxx | wc -w) C++ files formatted; $(echo $sources | wc -w) files with SPDX lines"
 exit $status

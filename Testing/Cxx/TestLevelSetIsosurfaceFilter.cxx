@@ -19,6 +19,7 @@
 #include "vtkVariant.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -390,6 +391,32 @@ void TestReuseOfNeighbours()
   Check(table && table->GetNumberOfRows() == filter->GetNumberOfIterationsPerformed() &&
       table->GetColumnByName("SignMismatch") && table->GetColumnByName("BandSize"),
     "convergence table");
+}
+
+// The stage timers (the benchmarks' profiles) cover the run: disjoint parts of it, together
+// nearly all of it, so that no stage goes untimed or is counted twice.
+void TestStageTimesCoverTheRun()
+{
+  vtkNew<vtkPolyData> data = Ball(200000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  const double wall =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double stages[7] = { filter->GetInputSeconds(), filter->GetNeighborSearchSeconds(),
+    filter->GetInitializationSeconds(), filter->GetEvolutionSeconds(), filter->GetIsopointSeconds(),
+    filter->GetOutputSeconds(), filter->GetParticleOutputSeconds() };
+  double sum = 0.0;
+  bool positive = true;
+  for (double s : stages)
+  {
+    sum += s;
+    positive = positive && s > 0.0;
+  }
+  Check(positive, "every stage timed");
+  Check(sum <= wall && sum >= 0.8 * wall,
+    "the stages cover the run: " + std::to_string(sum) + " s of " + std::to_string(wall) + " s");
 }
 
 // Progress rises from 0 to 1 and moves within each stage, not only between them (ranges of
@@ -791,6 +818,7 @@ int main()
   TestReuseOfNeighbours();
   TestReuseAfterSeedMove();
   TestProgressThroughStages();
+  TestStageTimesCoverTheRun();
   TestSeedRadiusMeanings();
   TestBadInput();
   std::cout << (lsi::test::Failures() ? "filter tests FAILED\n" : "filter tests passed\n");
