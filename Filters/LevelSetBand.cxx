@@ -11,8 +11,12 @@ namespace lsi
 
 BandCollector::BandCollector(const Neighborhoods& geometry)
   : Geometry(geometry)
-  , Stamp(geometry.NumberOfSamples, 0)
+  , Stamp(new std::atomic<std::uint32_t>[geometry.NumberOfSamples])
 {
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    this->Stamp[i].store(0, std::memory_order_relaxed);
+  }
 }
 
 void BandCollector::Where(
@@ -26,22 +30,18 @@ void BandCollector::Where(
 void BandCollector::WithNeighbors(
   const std::vector<std::size_t>& core, std::vector<std::size_t>& out)
 {
-  ++this->CurrentStamp;
-  out.clear();
+  const std::uint32_t stamp = ++this->CurrentStamp;
   const int stride = this->Geometry.Stride;
   this->Geometry.EnsureNeighbors(core);
-  for (std::size_t i : core)
-  {
+  ForEachIn(core, [&](std::size_t, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
     for (int k = 0; k < stride; ++k)
     {
-      if (this->Stamp[ids[k]] != this->CurrentStamp)
-      {
-        this->Stamp[ids[k]] = this->CurrentStamp;
-        out.push_back(ids[k]);
-      }
+      this->Stamp[ids[k]].store(stamp, std::memory_order_relaxed);
     }
-  }
+  });
+  out = IndicesWhere<std::size_t>(this->Geometry.NumberOfSamples,
+    [&](std::size_t i) { return this->Stamp[i].load(std::memory_order_relaxed) == stamp; });
 }
 
 } // namespace lsi

@@ -9,8 +9,10 @@
 
 #include "vtkSMPTools.h"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace lsi
@@ -25,12 +27,14 @@ public:
   /// traffic, and a deterministic order).
   void Where(const std::vector<double>& phi, double halfWidth, std::vector<std::size_t>& out) const;
 
-  /// `core` and all their neighbours, each once.
+  /// `core` and all their neighbours, each once, in storage order (marked in parallel, then
+  /// collected by a scan).
   void WithNeighbors(const std::vector<std::size_t>& core, std::vector<std::size_t>& out);
 
 private:
   const Neighborhoods& Geometry;
-  std::vector<std::uint32_t> Stamp; // marks for neighbourhood collection
+  // Marks for neighbourhood collection, set by several threads at once (all the same value).
+  std::unique_ptr<std::atomic<std::uint32_t>[]> Stamp;
   std::uint32_t CurrentStamp = 0;
 };
 

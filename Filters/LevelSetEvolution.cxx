@@ -111,10 +111,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
     });
   }
 
-  for (std::size_t k = 0; k < this->Band.size(); ++k)
-  {
-    this->Phi[this->Band[k]] = this->NewValues[k];
-  }
+  ForEachIn(this->Band, [&](std::size_t k, std::size_t i) { this->Phi[i] = this->NewValues[k]; });
   this->Ranks->RefreshGhosts(this->Phi);
 }
 
@@ -252,14 +249,19 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
     const std::vector<std::size_t>& band = this->Band;
     for (const std::vector<std::size_t>* touched : { &band, &region })
     {
-      for (std::size_t i : *touched)
-      {
+      // Each list names a sample once, so the threads write distinct flags; counts add exactly.
+      vtkSMPThreadLocal<std::size_t> changes(0);
+      ForEachIn(*touched, [&](std::size_t, std::size_t i) {
         if (!this->HasChangedSign[i] && Positive(this->Phi[i]) != this->InitiallyPositive[i] &&
           ranks.Owns(i))
         {
           this->HasChangedSign[i] = 1;
-          ++record.FirstSignChanges;
+          ++changes.Local();
         }
+      });
+      for (std::size_t count : changes)
+      {
+        record.FirstSignChanges += count;
       }
     }
     record.Seconds = SecondsSince(start);

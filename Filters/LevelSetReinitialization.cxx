@@ -36,10 +36,7 @@ void Reinitialization::Run(
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
   this->NewValues.resize(region.size());
   std::vector<double> initial(region.size());
-  for (std::size_t k = 0; k < region.size(); ++k)
-  {
-    initial[k] = phi[region[k]];
-  }
+  ForEachIn(region, [&](std::size_t k, std::size_t i) { initial[k] = phi[i]; });
   auto distance = [&](std::size_t i, std::uint32_t j) {
     return (
       Eigen::Vector3d(this->Geometry.Position(i)) - Eigen::Vector3d(this->Geometry.Position(j)))
@@ -67,13 +64,12 @@ void Reinitialization::Run(
       this->NewValues[k] = InterfaceDistance(phi[i], norm, opposite);
     }
   });
-  for (std::size_t k = 0; k < region.size(); ++k)
-  {
+  ForEachIn(region, [&](std::size_t k, std::size_t i) {
     if (atInterface[k])
     {
-      phi[region[k]] = this->NewValues[k];
+      phi[i] = this->NewValues[k];
     }
-  }
+  });
   ranks.RefreshGhosts(phi);
   for (int step = 0; step < settings.ReinitializationSteps; ++step)
   {
@@ -90,10 +86,7 @@ void Reinitialization::Run(
       this->NewValues[k] = ReinitializedValue(
         phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
     });
-    for (std::size_t k = 0; k < region.size(); ++k)
-    {
-      phi[region[k]] = this->NewValues[k];
-    }
+    ForEachIn(region, [&](std::size_t k, std::size_t i) { phi[i] = this->NewValues[k]; });
     ranks.RefreshGhosts(phi);
   }
 }

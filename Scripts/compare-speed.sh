@@ -18,7 +18,7 @@ shift $(($# < 2 ? $# : 2))
 [ $# -gt 0 ] || set -- --samples 2000000
 tree=/tmp/levelset-compare-$base
 if [ ! -d "$tree" ]; then
-  git -C "$here" worktree add --detach "$tree" "$base" >/dev/null
+  git -C "$here" worktree add --detach "$tree" "$base" >/dev/null 2>&1
 fi
 log=$tree.log
 build() { # quiet unless it fails
