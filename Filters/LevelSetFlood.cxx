@@ -2,11 +2,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetFlood.h"
 
+#include "LevelSetParallel.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <queue>
 
 namespace lsi
@@ -95,60 +102,123 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
   }
 }
 
+// Sample i's nearest crossing on its links to samples of the other class (inside or not), as
+// a squared distance and a point; left as they are if it has none. A crossing is where f - f_iso
+// interpolates to zero along the link, the midpoint if the offsets disagree with the classes (a
+// filled bubble).
+void NearestCrossing(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inside, std::size_t i, double& squaredDistance, Eigen::Vector3d& closest)
+{
+  const Eigen::Vector3d xi(geometry.Position(i));
+  const std::uint32_t* ids = geometry.NeighborsOf(i);
+  for (int m = 1; m < geometry.Stride; ++m)
+  {
+    const std::uint32_t j = ids[m];
+    if (inside[j] == inside[i])
+    {
+      continue;
+    }
+    const double vi = dataOffsets[i], vj = dataOffsets[j];
+    double t = vi != vj ? vi / (vi - vj) : 0.5;
+    if (!(t >= 0.0 && t <= 1.0))
+    {
+      t = 0.5;
+    }
+    const Eigen::Vector3d crossing = xi + t * (Eigen::Vector3d(geometry.Position(j)) - xi);
+    const double d = (crossing - xi).squaredNorm();
+    if (d < squaredDistance)
+    {
+      squaredDistance = d;
+      closest = crossing;
+    }
+  }
+}
+
 // The inside samples and their neighbours, in storage order (the lists of the inside samples
 // are computed by the flood).
 std::vector<std::uint32_t> InsideAndNeighbors(
   const Neighborhoods& geometry, const std::vector<char>& inside)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  std::vector<char> listed(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (!inside[i] || geometry.IsTruncated(i))
+  // Marked by several threads at once (all the same value).
+  std::unique_ptr<std::atomic<unsigned char>[]> listed(new std::atomic<unsigned char>[n]);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      continue;
+      listed[i].store(0, std::memory_order_relaxed);
     }
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 0; m < geometry.Stride; ++m)
+  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      listed[ids[m]] = 1;
+      if (!inside[i] || geometry.IsTruncated(static_cast<std::size_t>(i)))
+      {
+        continue;
+      }
+      const std::uint32_t* ids = geometry.NeighborsOf(static_cast<std::size_t>(i));
+      for (int m = 0; m < geometry.Stride; ++m)
+      {
+        listed[ids[m]].store(1, std::memory_order_relaxed);
+      }
     }
-  }
-  return IndicesWhere<std::uint32_t>(n, [&](std::size_t i) { return listed[i] != 0; });
+  });
+  return IndicesWhere<std::uint32_t>(
+    n, [&](std::size_t i) { return listed[i].load(std::memory_order_relaxed) != 0; });
 }
 
 // Computes, a wave at a time in parallel, the neighbour lists that the distance propagation
 // below will read (most of them): of the samples within halfWidth of a sample that holds a
 // crossing, reached through the neighbour graph. Results do not depend on it, only speed (the
 // propagation is serial, and computes any list still missing as it goes).
+// Each wave is spread in parallel: a sample reached by several threads at once takes the origin
+// of whichever claims it first, which can only change which lists are fetched ahead.
 void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t>& holders,
   double halfWidth, SerialAbortCheck& stop)
 {
   constexpr std::uint32_t None = ~std::uint32_t(0);
-  std::vector<std::uint32_t> origin(geometry.NumberOfSamples, None), wave(holders), next;
+  const std::size_t n = geometry.NumberOfSamples;
+  std::unique_ptr<std::atomic<std::uint32_t>[]> origin(new std::atomic<std::uint32_t>[n]);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      origin[i].store(None, std::memory_order_relaxed);
+    }
+  });
   for (const std::uint32_t i : holders)
   {
-    origin[i] = i;
+    origin[i].store(i, std::memory_order_relaxed);
   }
+  std::vector<std::uint32_t> wave(holders);
   while (!wave.empty() && !stop.Stop())
   {
     geometry.EnsureNeighbors(wave);
-    next.clear();
-    for (const std::uint32_t i : wave)
-    {
-      const Eigen::Vector3d from(geometry.Position(origin[i]));
-      const std::uint32_t* ids = geometry.NeighborsOf(i);
-      for (int m = 1; m < geometry.Stride; ++m)
+    vtkSMPThreadLocal<std::vector<std::uint32_t>> reached;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), [&](vtkIdType begin, vtkIdType end) {
+      std::vector<std::uint32_t>& next = reached.Local();
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        const std::uint32_t j = ids[m];
-        if (origin[j] == None && (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= halfWidth)
+        const std::uint32_t i = wave[static_cast<std::size_t>(k)];
+        const std::uint32_t source = origin[i].load(std::memory_order_relaxed);
+        const Eigen::Vector3d from(geometry.Position(source));
+        const std::uint32_t* ids = geometry.NeighborsOf(i);
+        for (int m = 1; m < geometry.Stride; ++m)
         {
-          origin[j] = origin[i];
-          next.push_back(j);
+          const std::uint32_t j = ids[m];
+          std::uint32_t unclaimed = None;
+          if (origin[j].load(std::memory_order_relaxed) == None &&
+            (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= halfWidth &&
+            origin[j].compare_exchange_strong(unclaimed, source, std::memory_order_relaxed))
+          {
+            next.push_back(j);
+          }
         }
       }
+    });
+    wave.clear();
+    for (const std::vector<std::uint32_t>& part : reached)
+    {
+      wave.insert(wave.end(), part.begin(), part.end());
     }
-    wave.swap(next);
   }
 }
 } // namespace
@@ -190,42 +260,22 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   // (not of every sample: most lists are never computed).
   const std::vector<std::uint32_t> nearFront = InsideAndNeighbors(geometry, inside);
   geometry.EnsureNeighbors(nearFront);
+  // Each sample's nearest crossing, in parallel (each writes its own entries).
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(nearFront.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        const std::size_t i = nearFront[static_cast<std::size_t>(k)];
+        if (geometry.IsTruncated(i)) // its list may pair it with a stand-in: no true crossing
+        {
+          continue;
+        }
+        NearestCrossing(geometry, dataOffsets, inside, i, distance[i], closest[i]);
+      }
+    });
   std::vector<std::uint32_t> holders; // the samples that hold a crossing
   for (const std::size_t i : nearFront)
   {
-    if (stop.Stop())
-    {
-      break;
-    }
-    if (geometry.IsTruncated(i)) // its list may pair it with a stand-in: no true crossing
-    {
-      continue;
-    }
-    const Eigen::Vector3d xi(geometry.Position(i));
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 1; m < stride; ++m)
-    {
-      const std::uint32_t j = ids[m];
-      if (inside[j] == inside[i])
-      {
-        continue;
-      }
-      // Where f - f_iso interpolates to zero; the midpoint if the offsets disagree with the
-      // classes (a filled bubble).
-      const double vi = dataOffsets[i], vj = dataOffsets[j];
-      double t = vi != vj ? vi / (vi - vj) : 0.5;
-      if (!(t >= 0.0 && t <= 1.0))
-      {
-        t = 0.5;
-      }
-      const Eigen::Vector3d crossing = xi + t * (Eigen::Vector3d(geometry.Position(j)) - xi);
-      const double d = (crossing - xi).squaredNorm();
-      if (d < distance[i])
-      {
-        distance[i] = d;
-        closest[i] = crossing;
-      }
-    }
     if (distance[i] < HUGE_VAL)
     {
       if (distance[i] <= halfWidth * halfWidth)
