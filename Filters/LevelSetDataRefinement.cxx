@@ -21,6 +21,8 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
   const std::size_t count = out.Points.size() / 3;
   const std::size_t fitCount = std::min<std::size_t>(
     geometry.NumberOfSamples, static_cast<std::size_t>(settings.DataFitScale) * geometry.Stride);
+  out.FitSize = fitCount;
+  out.FitSamples.resize(fitCount * count);
   vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
   vtkSMPThreadLocal<std::size_t> moved(0);
   auto slide = [&](std::size_t begin, std::size_t end) {
@@ -51,10 +53,19 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
         }
         ++moved.Local();
       }
+      // The samples nearest the final point, kept for the arrays interpolated there: usually
+      // still the gathered ones (checked, not assumed), else searched again.
+      evaluator->Gather(p);
+      const MLSStencil& gathered = evaluator->Gathered();
+      for (std::size_t j = 0; j < fitCount; ++j)
+      {
+        out.FitSamples[fitCount * i + j] = j < gathered.Found() ? gathered.Sample(j) : NoSample;
+      }
     }
   };
   if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
   {
+    out.FitSamples.clear();
     return false;
   }
   out.DataRefinedCount = 0;

@@ -13,6 +13,7 @@
 #include "LevelSetParallel.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace lsi
@@ -43,6 +44,9 @@ struct IsopointSettings
   int SPHIterations = 12;
 };
 
+/// An empty slot in IsopointSet::FitSamples (a cloud smaller than the fit).
+constexpr std::uint32_t NoSample = ~std::uint32_t(0);
+
 struct IsopointSet
 {
   std::vector<double> Points;        // 3 per isopoint
@@ -52,6 +56,12 @@ struct IsopointSet
   std::size_t DataRefinedCount = 0;  // points the data refinement moved
   std::size_t DroppedCount = 0;      // points the SPH refinement found no level near, dropped
   std::size_t FreeBoundaryCount = 0; // points added where the cloud ends above the isovalue
+  // The data refinement's samples nearest to each final point (FitSize storage indices per
+  // point), for the arrays interpolated onto the surface over as many samples: their gather
+  // is then not repeated. Empty unless they match Points; whatever moves or drops points after
+  // the refinement must clear them.
+  std::vector<std::uint32_t> FitSamples;
+  std::size_t FitSize = 0;
 };
 
 /// Isopoints per block of the parallel loops, between two abort checks: a block of Newton

@@ -74,6 +74,20 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
   this->GatherPoint = p;
 }
 
+void MLSStencil::UseGathered(const Eigen::Vector3d& p, const std::uint32_t* ids, std::size_t count)
+{
+  this->FoundCount = std::min(count, this->Count);
+  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  {
+    this->Ids[j] = ids[j];
+    this->D2[j] = SquaredDistance(p, this->Geometry.Position(ids[j]));
+  }
+  this->OuterRadius = 0.0; // nothing known beyond them: the next gather searches
+  this->OuterCenter = p;
+  this->SortGathered();
+  this->GatherPoint = p;
+}
+
 bool MLSStencil::Regather(const Eigen::Vector3d& p)
 {
   // The gathered samples are still p's nearest (StillNearest) across the short last steps of a

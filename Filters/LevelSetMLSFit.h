@@ -29,6 +29,10 @@ public:
   MLSStencil(const Neighborhoods& geometry, std::size_t count);
   /// Gathers the samples nearest to p.
   void Gather(const Eigen::Vector3d& p);
+  /// Takes `ids` (count storage indices, at most the fit's count) as what Gather(p) found: the
+  /// caller vouches that they are the samples nearest to p (kept from an earlier gather at p).
+  /// The state is then Gather(p)'s, except that the next Gather searches the tree.
+  void UseGathered(const Eigen::Vector3d& p, const std::uint32_t* ids, std::size_t count);
   /// Builds the weights at p (near where the samples were gathered), with the smallest support
   /// that reaches them all. False if the fit is singular.
   bool Build(const Eigen::Vector3d& p);

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSurfaceOutput.h"
 
+#include "LevelSetIsopoints.h"
+
 #include "LevelSetMLSFit.h"
 #include "LevelSetSPHField.h"
 #include "NearestNeighbors.h"
@@ -52,7 +54,8 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
 
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
-  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted)
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
+  const std::uint32_t* nearest)
 {
   const std::size_t count = points.size() / 3;
   vtkSMPThreadLocal<std::shared_ptr<MLSStencil>> stencils;
@@ -67,7 +70,16 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
       for (std::size_t i = begin; i < end; ++i)
       {
         const Eigen::Vector3d p(&points[3 * i]);
-        stencil->Gather(p);
+        if (nearest)
+        {
+          const std::uint32_t* row = nearest + fitCount * i;
+          stencil->UseGathered(
+            p, row, static_cast<std::size_t>(std::find(row, row + fitCount, NoSample) - row));
+        }
+        else
+        {
+          stencil->Gather(p);
+        }
         // A singular fit (samples on a plane or line) takes the nearest sample's value.
         const bool fitted = stencil->Build(p);
         const std::size_t used = fitted ? stencil->Found() : 1;
@@ -198,11 +210,15 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   }
   std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
   std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
-  const std::size_t fitCount = 2 * static_cast<std::size_t>(geometry.Stride);
+  const std::size_t fitCount =
+    std::min(geometry.NumberOfSamples, 2 * static_cast<std::size_t>(geometry.Stride));
+  // The data refinement's nearest samples at each point, when it kept them for this many.
+  const bool kept = isopoints.FitSize == fitCount &&
+    isopoints.FitSamples.size() == fitCount * static_cast<std::size_t>(m);
   if (field ? !InterpolatePointArraysSPH(
                 geometry, *field, isopoints.Points, sourceList, targetList, aborted)
-            : !InterpolatePointArrays(
-                geometry, isopoints.Points, fitCount, sourceList, targetList, aborted))
+            : !InterpolatePointArrays(geometry, isopoints.Points, fitCount, sourceList, targetList,
+                aborted, kept ? isopoints.FitSamples.data() : nullptr))
   {
     return false;
   }

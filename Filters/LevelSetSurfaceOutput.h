@@ -11,6 +11,7 @@
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
+#include <cstdint>
 #include <vector>
 
 class vtkDataArray;
@@ -42,10 +43,13 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
 /// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and
 /// writes the fit's value at the point into the matching array of `targets` (same components,
 /// one tuple per point, already sized). A linear field is reproduced exactly. Where the fit is
-/// singular the nearest sample's value is copied. Returns false only when aborted.
+/// singular the nearest sample's value is copied. `nearest`, if not null, holds each point's
+/// fitCount nearest samples (IsopointSet::FitSamples), which spares their search. Returns false
+/// only when aborted.
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
-  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted);
+  const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
+  const std::uint32_t* nearest = nullptr);
 
 /// Like InterpolatePointArrays, with the SPH field's interpolant: A(x) = sum_j (m_j / rho_j)
 /// A_j W(|x - x_j|, H_j) (LevelSetSPHField.h). Returns false only when aborted.

@@ -739,6 +739,7 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), inCell);
   isopoints.Points.swap(inCell.Points);
   isopoints.Normals.swap(inCell.Normals);
+  isopoints.FitSamples.clear(); // dropped and moved points: their nearest samples are others
   if (this->PeriodicOutput == AROUND_SEED)
   {
     lsi::IntoCellAround(isopoints.Points, internal.Box, internal.SeedCenter);
@@ -1155,6 +1156,7 @@ void vtkLevelSetIsosurface::KeepOwnedIsopoints(
   lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), owned);
   isopoints.Points.swap(owned.Points);
   isopoints.Normals.swap(owned.Normals);
+  isopoints.FitSamples.clear(); // no longer one row per point
 }
 
 void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,
