@@ -29,8 +29,8 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
     std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
     if (!evaluator)
     {
-      evaluator.reset(
-        new MLSEvaluator(geometry, dataOffsets, fitCount, settings.DataFitOrder == 2));
+      evaluator.reset(new MLSEvaluator(
+        geometry, dataOffsets, fitCount, settings.DataFitOrder == 2, fitCount / DataSpareFraction));
     }
     for (std::size_t i = begin; i < end; ++i)
     {
@@ -39,11 +39,12 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
       Eigen::Vector3d gradient;
       // The point moves less than a spacing: the samples nearest its start serve every step.
       evaluator->Gather(p);
-      auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
-        return evaluator->FitGathered(x, value, g);
+      auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g,
+                        Eigen::Matrix3d& hessian) {
+        return evaluator->FitGathered(x, value, g, hessian);
       };
-      if (SlideOntoDataLevel(
-            p, n, evaluate, settings.DataMaximumMove, settings.DataIterations, gradient))
+      if (SlideOntoDataLevel(p, n, evaluate, settings.DataMaximumMove, settings.DataIterations,
+            gradient, DataConvergedStep * settings.DataMaximumMove))
       {
         const Eigen::Vector3d dataNormal = -gradient.normalized();
         for (int d = 0; d < 3; ++d)
@@ -54,7 +55,7 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
         ++moved.Local();
       }
       // The samples nearest the final point, kept for the arrays interpolated there: usually
-      // still the gathered ones (checked, not assumed), else searched again.
+      // found among the gathered ones and their spares (checked, not assumed), else searched.
       evaluator->Gather(p);
       const MLSStencil& gathered = evaluator->Gathered();
       for (std::size_t j = 0; j < fitCount; ++j)

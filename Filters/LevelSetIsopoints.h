@@ -37,12 +37,20 @@ struct IsopointSettings
   int DataFitScale = 2;
   int DataFitOrder = 2; // 2: a quadratic fit (linear where ill-posed), unbiased by curvature
   double DataMaximumMove = 0.5;
-  int DataIterations = 3;
+  int DataIterations = 3; // at most; fewer once a step is below DataConvergedStep of the move
   // On the SPH field (exact, smooth): reach in kernel supports of the nearest particle, and
   // Newton steps.
   double SPHMaximumMove = 1.0;
   int SPHIterations = 12;
 };
+
+/// The data refinement stops once a step is shorter than this fraction of DataMaximumMove
+/// (about 1e-4 of a spacing: the steps then shrink quadratically, far below the accuracy).
+constexpr double DataConvergedStep = 2e-3;
+
+/// The data refinement gathers a quarter more samples than its fit uses: the fit's samples at
+/// the point's end, a fraction of a spacing on, are then still known without a tree search.
+constexpr std::size_t DataSpareFraction = 4;
 
 /// An empty slot in IsopointSet::FitSamples (a cloud smaller than the fit).
 constexpr std::uint32_t NoSample = ~std::uint32_t(0);

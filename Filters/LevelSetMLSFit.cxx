@@ -24,10 +24,12 @@ double SquaredDistance(const Eigen::Vector3d& p, const double* x)
 }
 } // namespace
 
-MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count)
+MLSStencil::MLSStencil(const Neighborhoods& geometry, std::size_t count, std::size_t spare)
   : Geometry(geometry)
   , Count(std::min(count, geometry.NumberOfSamples))
-  , Ids(std::min(count + 1, geometry.NumberOfSamples)) // one more: how far the next one is
+  , Spare(spare)
+  // The spares, then one more: how far the next one is.
+  , Ids(std::min(count + spare + 1, geometry.NumberOfSamples))
   , D2(Ids.size())
   , GradientWeightData(3 * Count)
   , ValueWeights(Count)
@@ -46,7 +48,7 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
   // the same samples, ties included (TestNumerics). A bounded search that finds k + 1 samples
   // has found the nearest, so a tighter bound is tried first: the density rarely changes by
   // 1.2^3 between neighbouring gathers. A long step searches without a bound.
-  const std::size_t wanted = this->Ids.size();        // k + 1, or the whole cloud
+  const std::size_t wanted = this->Ids.size();        // k + spares + 1, or the whole cloud
   const double step = (p - this->OuterCenter).norm(); // from where the last search was made
   std::size_t found = 0;
   if (this->FoundCount > 0 && this->OuterRadius < HUGE_VAL && step < this->OuterRadius)
@@ -67,8 +69,10 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
   {
     found = this->Geometry.Index->Nearest(p.data(), wanted, this->Ids.data(), this->D2.data());
   }
-  this->FoundCount = std::min(found, this->Count);
-  this->OuterRadius = found > this->Count ? std::sqrt(this->D2[this->Count]) : HUGE_VAL;
+  const std::size_t holdable = this->Count + this->Spare;
+  this->Held = std::min(found, holdable);
+  this->FoundCount = std::min(this->Held, this->Count);
+  this->OuterRadius = found > holdable ? std::sqrt(this->D2[holdable]) : HUGE_VAL;
   this->OuterCenter = p;
   this->SortGathered();
   this->GatherPoint = p;
@@ -76,7 +80,7 @@ void MLSStencil::Gather(const Eigen::Vector3d& p)
 
 void MLSStencil::UseGathered(const Eigen::Vector3d& p, const std::uint32_t* ids, std::size_t count)
 {
-  this->FoundCount = std::min(count, this->Count);
+  this->FoundCount = this->Held = std::min(count, this->Count);
   for (std::size_t j = 0; j < this->FoundCount; ++j)
   {
     this->Ids[j] = ids[j];
@@ -90,20 +94,23 @@ void MLSStencil::UseGathered(const Eigen::Vector3d& p, const std::uint32_t* ids,
 
 bool MLSStencil::Regather(const Eigen::Vector3d& p)
 {
-  // The gathered samples are still p's nearest (StillNearest) across the short last steps of a
-  // projection: the fit there needs no tree search.
+  // The k nearest to p among the samples held (the gathered ones and the spares) are still p's
+  // k nearest (StillNearest) across the short last steps of a projection, or a short slide:
+  // the fit there needs no tree search.
   const double step = (p - this->OuterCenter).norm();
-  double farthest = 0.0;
-  for (std::size_t j = 0; j < this->FoundCount; ++j)
-  {
-    this->D2[j] = SquaredDistance(p, this->Geometry.Position(this->Ids[j]));
-    farthest = std::max(farthest, this->D2[j]);
-  }
-  if (!StillNearest(std::sqrt(farthest), step, this->OuterRadius))
+  if (!(step < this->OuterRadius - this->GatherRadius)) // a long step: no hope, spare the sort
   {
     return false;
   }
+  for (std::size_t j = 0; j < this->Held; ++j)
+  {
+    this->D2[j] = SquaredDistance(p, this->Geometry.Position(this->Ids[j]));
+  }
   this->SortGathered();
+  if (!StillNearest(this->GatherRadius, step, this->OuterRadius))
+  {
+    return false;
+  }
   this->GatherPoint = p;
   return true;
 }
@@ -113,12 +120,12 @@ void MLSStencil::SortGathered()
   // By distance, then by index: the order (and so the fit's rounding) does not depend on
   // whether the samples came from the tree or from the last gather.
   this->Sorted.clear();
-  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  for (std::size_t j = 0; j < this->Held; ++j)
   {
     this->Sorted.emplace_back(this->D2[j], this->Ids[j]);
   }
   std::sort(this->Sorted.begin(), this->Sorted.end());
-  for (std::size_t j = 0; j < this->FoundCount; ++j)
+  for (std::size_t j = 0; j < this->Held; ++j)
   {
     this->D2[j] = this->Sorted[j].first;
     this->Ids[j] = this->Sorted[j].second;
@@ -152,8 +159,8 @@ bool MLSStencil::Build(const Eigen::Vector3d& p)
 }
 
 MLSEvaluator::MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values,
-  std::size_t count, bool quadratic)
-  : Stencil(geometry, count ? count : static_cast<std::size_t>(geometry.Stride))
+  std::size_t count, bool quadratic, std::size_t spare)
+  : Stencil(geometry, count ? count : static_cast<std::size_t>(geometry.Stride), spare)
   , Values(values)
   , Quadratic(quadratic)
 {
@@ -167,6 +174,14 @@ bool MLSEvaluator::operator()(const Eigen::Vector3d& p, double& value, Eigen::Ve
 
 bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient)
 {
+  Eigen::Matrix3d hessian;
+  return this->FitGathered(p, value, gradient, hessian);
+}
+
+bool MLSEvaluator::FitGathered(
+  const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient, Eigen::Matrix3d& hessian)
+{
+  hessian.setZero();
   if (this->Quadratic)
   {
     // The 1% point of F(6, 30): the curvature terms are kept where the data show them.
@@ -176,7 +191,7 @@ bool MLSEvaluator::FitGathered(const Eigen::Vector3d& p, double& value, Eigen::V
     const bool ok = FitLinearOrQuadratic(
       p.data(), s.Found(), [&](std::size_t j) { return s.Position(j); },
       [&](std::size_t j) { return this->Values[s.Sample(j)]; }, s.SupportAt(p), CriticalF, value,
-      gradient, quadratic);
+      gradient, quadratic, &hessian);
     this->Fits += ok ? 1 : 0;
     this->QuadraticFits += quadratic ? 1 : 0;
     return ok;

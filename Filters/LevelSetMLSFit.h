@@ -25,8 +25,10 @@ namespace lsi
 class MLSStencil
 {
 public:
-  /// `count`: how many nearest samples enter the fit.
-  MLSStencil(const Neighborhoods& geometry, std::size_t count);
+  /// `count`: how many nearest samples enter the fit. `spare`: how many more to gather and
+  /// hold, so that the count nearest to a point a short way off are still known among them
+  /// (Gather then needs no tree search there).
+  MLSStencil(const Neighborhoods& geometry, std::size_t count, std::size_t spare = 0);
   /// Gathers the samples nearest to p.
   void Gather(const Eigen::Vector3d& p);
   /// Takes `ids` (count storage indices, at most the fit's count) as what Gather(p) found: the
@@ -50,15 +52,17 @@ private:
   void SortGathered();
 
   const Neighborhoods& Geometry;
-  const std::size_t Count;
-  std::size_t FoundCount = 0;
+  const std::size_t Count, Spare;
+  std::size_t FoundCount = 0; // the fit's samples: the first FoundCount of the Held
+  std::size_t Held = 0;
   double GatherRadius = 0.0; // of the last gather (0 before the first)
   Eigen::Vector3d GatherPoint = Eigen::Vector3d::Zero();
   // The last tree search: every sample it did not gather is at least OuterRadius from its
   // centre (the distance of the first one left out).
   double OuterRadius = 0.0;
   Eigen::Vector3d OuterCenter = Eigen::Vector3d::Zero();
-  std::vector<std::uint32_t> Ids; // the gathered samples, then the nearest one left out
+  // The gathered samples (Held of them, nearest first), then the nearest one left out.
+  std::vector<std::uint32_t> Ids;
   std::vector<double> D2, GradientWeightData, ValueWeights;
   std::vector<std::pair<double, std::uint32_t>> Sorted;
 };
@@ -69,15 +73,19 @@ class MLSEvaluator
 {
 public:
   /// `count`: how many nearest samples enter the fit (0: the neighbourhood size, n + 1);
-  /// `quadratic`: fit a quadratic where the data support one (FitLinearOrQuadratic).
+  /// `quadratic`: fit a quadratic where the data support one (FitLinearOrQuadratic); `spare`:
+  /// see MLSStencil.
   MLSEvaluator(const Neighborhoods& geometry, const std::vector<double>& values,
-    std::size_t count = 0, bool quadratic = false);
+    std::size_t count = 0, bool quadratic = false, std::size_t spare = 0);
   bool operator()(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
   /// The same in two parts: gather the samples nearest to p, then fit them at any point near p
   /// (for several evaluations along a short path).
   void Gather(const Eigen::Vector3d& p) { this->Stencil.Gather(p); }
   const MLSStencil& Gathered() const { return this->Stencil; }
   bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
+  /// The same with the fit's Hessian (zero where the fit is linear).
+  bool FitGathered(
+    const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient, Eigen::Matrix3d& hessian);
 
   /// Evaluations so far that used the quadratic fit, and all evaluations.
   std::size_t QuadraticFits = 0, Fits = 0;

@@ -80,21 +80,25 @@ bool ProjectOntoZeroLevel(
 }
 
 /// Moves p along the fixed direction `normal` (unit, pointing out of f > f_iso) to where the
-/// data's approximation `evaluate(p, value, gradient)` of f - f_iso vanishes, by Newton steps
-/// on the line, but never further than `maximumMove` from where it started: the level set
-/// already located the surface to a fraction of the spacing, and the data only sharpen it.
-/// Returns false (p unchanged) when the data's gradient does not point across the surface
-/// the way the level set says.
+/// data's approximation `evaluate(p, value, gradient, hessian)` of f - f_iso vanishes, but never
+/// further than `maximumMove` from where it started: the level set already located the surface
+/// to a fraction of the spacing, and the data only sharpen it. Each step solves the local
+/// quadratic model along the line (value, slope and the Hessian's curvature along it; Newton's
+/// step where the Hessian is zero or the model has no zero), so a curved field costs no extra
+/// step. Stops after `iterations` steps, or after a step no longer than `tolerance`. `gradient`
+/// is the approximation's at the last point it was evaluated. Returns false (p unchanged) when
+/// the data's gradient does not point across the surface the way the level set says.
 template <typename EvaluateFn>
 bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn evaluate,
-  double maximumMove, int iterations, Eigen::Vector3d& dataGradient)
+  double maximumMove, int iterations, Eigen::Vector3d& dataGradient, double tolerance = 0.0)
 {
   const Eigen::Vector3d start = p;
   double offset = 0.0; // signed distance moved along -normal (into f > f_iso)
   for (int k = 0; k < iterations; ++k)
   {
     double value;
-    if (!evaluate(start - offset * normal, value, dataGradient))
+    Eigen::Matrix3d hessian;
+    if (!evaluate(start - offset * normal, value, dataGradient, hessian))
     {
       return false;
     }
@@ -103,7 +107,20 @@ bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, Evalu
     {
       return false;
     }
-    offset = std::max(-maximumMove, std::min(maximumMove, offset - value / slope));
+    // The zero nearest to the point of value + slope s + curvature s^2 / 2 (the stable form of
+    // the quadratic's root; Newton's step when the curvature vanishes).
+    const double curvature = normal.dot(hessian * normal); // d2 f / d offset2
+    const double discriminant = slope * slope - 2.0 * curvature * value;
+    const double step = std::isfinite(curvature) && discriminant >= 0.0
+      ? -2.0 * value / (slope + std::sqrt(discriminant))
+      : -value / slope;
+    const double next = std::max(-maximumMove, std::min(maximumMove, offset + step));
+    const bool converged = std::abs(next - offset) <= tolerance;
+    offset = next;
+    if (converged)
+    {
+      break;
+    }
   }
   p = start - offset * normal;
   return true;

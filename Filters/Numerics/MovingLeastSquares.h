@@ -142,12 +142,12 @@ bool FitLinear(const double centre[3], std::size_t count, PositionFn position, V
 /// where the quadratic is ill-posed (fewer than 16 effective samples, or a normal matrix whose
 /// smallest LDL^T pivot is below 1e-7 of its largest). A quadratic fit is exact for quadratic
 /// fields, so the zero it places carries no bias from the field's curvature. Gives the value and
-/// gradient at the centre, and whether the quadratic was used. False if even the linear fit is
-/// singular.
+/// gradient at the centre, and whether the quadratic was used; and the Hessian, if asked for
+/// (zero for the linear fit). False if even the linear fit is singular.
 template <typename PositionFn, typename ValueFn>
 bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn position,
   ValueFn value, double h, double criticalF, double& fitted, Eigen::Vector3d& gradient,
-  bool& quadratic)
+  bool& quadratic, Eigen::Matrix3d* hessian = nullptr)
 {
   using Vector10 = Eigen::Matrix<double, 10, 1>;
   using Matrix10 = Eigen::Matrix<double, 10, 10>;
@@ -236,6 +236,12 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   }
   fitted = coefficients[0];
   gradient = coefficients.segment<3>(1) * invH;
+  if (hessian) // of c4 u^2 + c5 v^2 + c6 w^2 + c7 uv + c8 uw + c9 vw, in x = centre + h u
+  {
+    const Eigen::Matrix<double, 10, 1>& c = coefficients;
+    *hessian << 2.0 * c[4], c[7], c[8], c[7], 2.0 * c[5], c[9], c[8], c[9], 2.0 * c[6];
+    *hessian *= invH * invH;
+  }
   return true;
 }
 

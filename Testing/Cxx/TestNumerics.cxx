@@ -733,9 +733,11 @@ void TestSlideOntoDataLevel()
 {
   // f - f_iso = 0.3 - x (a plane at x = 0.3, f larger at smaller x): the outward normal is +x.
   // From the origin the point must slide to x = 0.3 along the normal, wherever the line starts.
-  auto plane = [](const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient) {
+  auto plane = [](const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient,
+                 Eigen::Matrix3d& hessian) {
     value = 0.3 - p.x();
     gradient = Eigen::Vector3d(-1, 0, 0);
+    hessian.setZero();
     return true;
   };
   Eigen::Vector3d p(0.0, 0.2, -0.1), g;
@@ -752,15 +754,37 @@ void TestSlideOntoDataLevel()
   Check(lsi::SlideOntoDataLevel(p, tilted, plane, 1.0, 3, g) && std::abs(p.x() - 0.3) < 1e-12,
     "slides along the given normal");
   // A sphere, f - f_iso = 1 - |x|: from 1.2 along the radial normal, converges to radius 1.
-  auto sphere = [](const Eigen::Vector3d& q, double& value, Eigen::Vector3d& gradient) {
+  auto sphere = [](const Eigen::Vector3d& q, double& value, Eigen::Vector3d& gradient,
+                  Eigen::Matrix3d& hessian) {
     value = 1.0 - q.norm();
     gradient = -q.normalized();
+    hessian = -(Eigen::Matrix3d::Identity() - gradient * gradient.transpose()) / q.norm();
     return true;
   };
   p = Eigen::Vector3d(1.2, 0, 0);
   Check(lsi::SlideOntoDataLevel(p, Eigen::Vector3d(1, 0, 0), sphere, 0.5, 3, g) &&
       std::abs(p.norm() - 1.0) < 1e-12,
     "slides onto a sphere");
+  // A field quadratic along the line, f - f_iso = 1 - |x|^2, from 1.4 off the radial line: each
+  // step solves the quadratic model, so the first lands on the zero; the second is then below
+  // the tolerance and ends the slide. Newton's step alone (curvature ignored) would stop about
+  // 0.1 short of it.
+  int evaluations = 0;
+  auto paraboloid = [&](const Eigen::Vector3d& q, double& value, Eigen::Vector3d& gradient,
+                      Eigen::Matrix3d& hessian) {
+    ++evaluations;
+    value = 1.0 - q.squaredNorm();
+    gradient = -2.0 * q;
+    hessian = -2.0 * Eigen::Matrix3d::Identity();
+    return true;
+  };
+  const Eigen::Vector3d along = Eigen::Vector3d(1, 0.5, 0).normalized();
+  const Eigen::Vector3d from(0.2, -0.1, 0.0);
+  p = from + 1.4 * along;
+  Check(lsi::SlideOntoDataLevel(p, along, paraboloid, 1.0, 3, g, 1e-9) &&
+      std::abs(p.squaredNorm() - 1.0) < 1e-12 && evaluations == 2 &&
+      ((p - from).normalized() - along).norm() < 1e-12,
+    "a quadratic field: on the zero after one step, and stops after the next");
   // Data whose gradient contradicts the normal: refused, point unchanged.
   p = Eigen::Vector3d(0, 0, 0);
   Check(!lsi::SlideOntoDataLevel(p, Eigen::Vector3d(-1, 0, 0), plane, 1.0, 3, g) && p.norm() == 0.0,
