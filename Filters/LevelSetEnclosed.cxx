@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetEnclosed.h"
 
+#include "LevelSetParallel.h"
 #include "NearestNeighbors.h"
 
 #include "vtkDataArray.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -210,7 +212,13 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   const vtkIdType n = in.ParticleCount;
 
   // Each real particle's own sample (not an image's), and its shell width: one local spacing.
-  std::vector<std::size_t> sampleOf(static_cast<std::size_t>(n), 0);
+  // (0 for a particle merged into another.) Filled in parallel: at 20M particles these arrays
+  // are 160 MB each.
+  std::vector<std::size_t, UninitializedAllocator<std::size_t>> sampleOf(
+    static_cast<std::size_t>(n));
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    std::fill(sampleOf.begin() + begin, sampleOf.begin() + end, std::size_t(0));
+  });
   const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
   vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
@@ -245,15 +253,51 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   // (through the images too, so a component cut by a periodic face is one).
   // Under MPI the other ranks' ghosts have slots of their own, after the particles.
   const Communicator& ranks = *in.Ranks;
-  std::vector<vtkIdType> slot(in.OriginalIds);
+  const vtkIdType sampleCount = static_cast<vtkIdType>(geometry.NumberOfSamples);
+  std::vector<vtkIdType> slot(in.OriginalIds.size());
+  vtkSMPThreadLocal<char> foreign(0); // samples that are no particle here (MPI ghosts)
+  vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
+    char& any = foreign.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      slot[i] = in.OriginalIds[i];
+      any = static_cast<char>(any || slot[i] < 0);
+    }
+  });
   vtkIdType slots = n;
-  for (vtkIdType& s : slot)
+  if (std::any_of(foreign.begin(), foreign.end(), [](char f) { return f != 0; }))
   {
-    s = s >= 0 ? s : slots++;
+    for (vtkIdType& s : slot)
+    {
+      s = s >= 0 ? s : slots++;
+    }
   }
-  // Serial: a parallel union-find (compare-and-swap links) measured no faster here.
-  std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
-  std::iota(parent.begin(), parent.end(), vtkIdType(0));
+  // The components over the samples first, linked towards lower storage indices (neighbours
+  // are near in memory there, where slots are in input order); with periodic images, each
+  // sample is also linked to the first touching one of its slot. Serial: a parallel union-find
+  // (compare-and-swap links) measured no faster.
+  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> link(geometry.NumberOfSamples);
+  vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      link[i] = static_cast<std::uint32_t>(i);
+    }
+  });
+  auto find = [&](std::uint32_t i) {
+    while (link[i] != i)
+    {
+      link[i] = link[link[i]];
+      i = link[i];
+    }
+    return i;
+  };
+  auto join = [&](std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t a = find(i), b = find(j);
+    if (a != b)
+    {
+      link[std::max(a, b)] = std::min(a, b);
+    }
+  };
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
     if (!touches(i) || geometry.IsTruncated(i))
@@ -265,20 +309,61 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
     {
       if (touches(ids[m]))
       {
-        const vtkIdType a = Root(parent, slot[i]);
-        const vtkIdType b = Root(parent, slot[ids[m]]);
-        if (a != b)
-        {
-          parent[std::max(a, b)] = std::min(a, b);
-        }
+        join(static_cast<std::uint32_t>(i), ids[m]);
       }
     }
   }
-  // Every slot's root, so that the parallel sums below only read: links only go to smaller
-  // slots, so in increasing order each slot's parent already holds its root.
-  for (vtkIdType p = 0; p < slots; ++p)
+  if (in.Box.Enabled)
   {
-    parent[p] = parent[parent[p]];
+    std::vector<std::int64_t> firstOfSlot(static_cast<std::size_t>(slots), -1);
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      if (touches(i))
+      {
+        std::int64_t& first = firstOfSlot[static_cast<std::size_t>(slot[i])];
+        first < 0 ? void(first = static_cast<std::int64_t>(i))
+                  : join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(first));
+      }
+    }
+  }
+  // Each component is named by its lowest slot, as a union-find over the slots names it: its
+  // root sample (the lowest index, so met first below) takes the lowest slot of its members.
+  std::vector<vtkIdType, UninitializedAllocator<vtkIdType>> lowest(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (touches(i))
+    {
+      const std::uint32_t root = find(static_cast<std::uint32_t>(i));
+      link[i] = root; // flattened: read in parallel below
+      lowest[root] = root == i ? slot[i] : std::min(lowest[root], slot[i]);
+    }
+  }
+  // Every slot's root: its own slot, or its component's lowest.
+  std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
+  vtkSMPTools::For(0, slots, [&](vtkIdType begin, vtkIdType end) {
+    std::iota(parent.begin() + begin, parent.begin() + end, begin);
+  });
+  auto nameSlot = [&](std::size_t i) {
+    if (touches(i))
+    {
+      parent[static_cast<std::size_t>(slot[i])] = lowest[link[i]];
+    }
+  };
+  if (in.Box.Enabled) // images share slots: in turn (they write the same value)
+  {
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      nameSlot(i);
+    }
+  }
+  else
+  {
+    vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        nameSlot(static_cast<std::size_t>(i));
+      }
+    });
   }
 
   // The arrays to average: every numeric point array, all components.
@@ -349,7 +434,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   // surface); the sums below are serial, in particle order, so they do not depend on threads.
   const std::vector<std::uint32_t> touchingSamples = IndicesWhere<std::uint32_t>(
     geometry.NumberOfSamples, [&](std::size_t i) { return touching[i] != 0; });
-  std::vector<double> distances(geometry.NumberOfSamples, 0.0);
+  std::vector<double, UninitializedAllocator<double>> distances(geometry.NumberOfSamples);
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(touchingSamples.size()), 256, [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)

@@ -10,6 +10,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkVariant.h"
 
 #include <algorithm>
@@ -155,12 +156,15 @@ std::vector<vtkIdType> OriginalIds(
   const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf)
 {
   std::vector<vtkIdType> original(geometry.NumberOfSamples);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    const vtkIdType id = geometry.Order[i];
-    const std::size_t image = static_cast<std::size_t>(id - originalCount);
-    original[i] = id < originalCount ? id : (image < imageOf.size() ? imageOf[image] : -1);
-  }
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const vtkIdType id = geometry.Order[i];
+        const std::size_t image = static_cast<std::size_t>(id - originalCount);
+        original[i] = id < originalCount ? id : (image < imageOf.size() ? imageOf[image] : -1);
+      }
+    });
   return original;
 }
 
