@@ -98,7 +98,9 @@ bool MLSStencil::Regather(const Eigen::Vector3d& p)
   // k nearest (StillNearest) across the short last steps of a projection, or a short slide:
   // the fit there needs no tree search.
   const double step = (p - this->OuterCenter).norm();
-  if (!(step < this->OuterRadius - this->GatherRadius)) // a long step: no hope, spare the sort
+  // A step beyond the margin between the held samples and the first one left out seldom keeps
+  // them the nearest: search instead (exact either way), sparing the sort.
+  if (!(step < this->OuterRadius - this->GatherRadius))
   {
     return false;
   }
