@@ -61,17 +61,43 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
   std::vector<char> visited(n, 0);
   // A ghost whose neighbour list is cut short (MPI, Neighborhoods::Truncated) cannot tell how far
   // its pocket goes: it counts as part of a large pocket.
-  for (std::size_t i = 0; i < n && !stop.Stop(); ++i)
+  // The outside neighbours of the inside samples, in the order of the loop that visits them
+  // (collected in parallel, in fixed chunks joined in order). A pocket filled below never
+  // brings new ones: its search went through all its samples' neighbours, and found only
+  // inside samples and its own.
+  constexpr std::size_t Chunk = 1 << 16;
+  std::vector<std::vector<std::uint32_t>> found((n + Chunk - 1) / Chunk);
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(found.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        for (std::size_t i = static_cast<std::size_t>(c) * Chunk;
+             i < std::min(n, (static_cast<std::size_t>(c) + 1) * Chunk); ++i)
+        {
+          if (!inside[i] || geometry.IsTruncated(i))
+          {
+            continue;
+          }
+          const std::uint32_t* around = geometry.NeighborsOf(i);
+          for (int a = 1; a < stride; ++a)
+          {
+            if (!inside[around[a]] && !geometry.IsTruncated(around[a]))
+            {
+              found[static_cast<std::size_t>(c)].push_back(around[a]);
+            }
+          }
+        }
+      }
+    });
+  for (const std::vector<std::uint32_t>& starts : found)
   {
-    if (!inside[i] || geometry.IsTruncated(i))
+    for (const std::uint32_t start : starts)
     {
-      continue;
-    }
-    const std::uint32_t* around = geometry.NeighborsOf(i);
-    for (int a = 1; a < stride; ++a)
-    {
-      const std::uint32_t start = around[a];
-      if (inside[start] || large[start] || visited[start] || geometry.IsTruncated(start))
+      if (stop.Stop())
+      {
+        return;
+      }
+      if (inside[start] || large[start] || visited[start])
       {
         continue;
       }
