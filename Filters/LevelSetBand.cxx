@@ -11,12 +11,8 @@ namespace lsi
 
 BandCollector::BandCollector(const Neighborhoods& geometry)
   : Geometry(geometry)
-  , Stamp(new std::atomic<std::uint32_t>[geometry.NumberOfSamples])
+  , Stamp(FilledAtomics<std::uint32_t>(geometry.NumberOfSamples, 0))
 {
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    this->Stamp[i].store(0, std::memory_order_relaxed);
-  }
 }
 
 void BandCollector::Where(

@@ -167,13 +167,7 @@ std::vector<std::uint32_t> InsideAndNeighbors(
 {
   const std::size_t n = geometry.NumberOfSamples;
   // Marked by several threads at once (all the same value).
-  std::unique_ptr<std::atomic<unsigned char>[]> listed(new std::atomic<unsigned char>[n]);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      listed[i].store(0, std::memory_order_relaxed);
-    }
-  });
+  const std::unique_ptr<std::atomic<unsigned char>[]> listed = FilledAtomics<unsigned char>(n, 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -203,13 +197,7 @@ void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t
 {
   constexpr std::uint32_t None = ~std::uint32_t(0);
   const std::size_t n = geometry.NumberOfSamples;
-  std::unique_ptr<std::atomic<std::uint32_t>[]> origin(new std::atomic<std::uint32_t>[n]);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      origin[i].store(None, std::memory_order_relaxed);
-    }
-  });
+  const std::unique_ptr<std::atomic<std::uint32_t>[]> origin = FilledAtomics(n, None);
   for (const std::uint32_t i : holders)
   {
     origin[i].store(i, std::memory_order_relaxed);

@@ -8,8 +8,10 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace lsi
@@ -78,6 +80,19 @@ bool ParallelForInBlocks(
       });
   }
   return true;
+}
+
+/// `count` atomics set to `value` in parallel: marks that several threads may set at once.
+template <typename T>
+std::unique_ptr<std::atomic<T>[]> FilledAtomics(std::size_t count, T value) {
+  std::unique_ptr<std::atomic<T>[]> marks(new std::atomic<T>[count]);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      marks[i].store(value, std::memory_order_relaxed);
+    }
+  });
+  return marks;
 }
 
 /// The indices i < count for which keep(i) holds, in increasing order: found in fixed chunks
