@@ -169,6 +169,21 @@ std::vector<double> IsoValuesAbove(
   return values;
 }
 
+// The mean distance of the points of `surface` to the exact level {f = isoValue} of `c`, to
+// first order (|f - f_iso| / |grad f|).
+double MeanLevelDistance(const Case& c, vtkPolyData* surface, double isoValue)
+{
+  const vtkIdType count = surface->GetNumberOfPoints();
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    Eigen::Vector3d p;
+    surface->GetPoint(i, p.data());
+    sum += std::abs(c.Value(p) - isoValue) / c.Gradient(p).norm();
+  }
+  return count ? sum / static_cast<double>(count) : 0.0;
+}
+
 // What a child process measures at one size.
 struct ChildRun
 {
@@ -313,12 +328,50 @@ int main(int argc, char* argv[])
   AddStages(report, "level_set.seed_move.", Stages(filter, seed));
   filter->SetSeedCenter(seeds[0].data());
   TimedUpdate(filter);
+  const double fullDistance = MeanLevelDistance(c, filter->GetOutput(0), c.IsoValue);
+
+  // The same isovalue changes with QuickIsoValueChanges on (the last surface slid onto the new
+  // level when the checks allow), each from a full run at the case's isovalue; the mean
+  // distance of the slid points to the exact new level, and the full method's there.
+  filter->SetQuickIsoValueChanges(true);
+  filter->Modified();
+  TimedUpdate(filter); // the full method, which keeps what a slide needs
+  std::array<double, 2> quick{}, quickDistance{}, methodDistance{};
+  std::array<bool, 2> slid{};
+  std::array<std::array<double, 8>, 2> quickStages{};
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    filter->SetIsoValue(isoValues[k]);
+    quick[k] = TimedUpdate(filter);
+    slid[k] = filter->GetSlidLastSurface();
+    quickStages[k] = Stages(filter, quick[k]);
+    quickDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
+    filter->SetQuickIsoValueChanges(false); // the full method at the new isovalue, to compare
+    TimedUpdate(filter);
+    methodDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
+    filter->SetQuickIsoValueChanges(true);
+    filter->SetIsoValue(c.IsoValue);
+    TimedUpdate(filter); // the full method (the property changed since the last run)
+  }
+  filter->SetQuickIsoValueChanges(false);
+
   filter->SetCurvatureWeight(2.0 * filter->GetCurvatureWeight() + 0.05);
   const double curvature = TimedUpdate(filter);
   report.Add("level_set.isovalue_change_small_s", isoSmall);
   report.Add("level_set.isovalue_change_large_s", isoLarge);
   report.Add("level_set.seed_move_s", seed);
   report.Add("level_set.curvature_weight_change_s", curvature);
+  report.Add("level_set.level_distance_spacings", fullDistance / surfaceSpacing);
+  const char* sizes[2] = { "small", "large" };
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    const std::string prefix = std::string("level_set.quick_isovalue_change_") + sizes[k];
+    report.Add(prefix + "_s", quick[k]);
+    report.Add(prefix + ".slid", slid[k] ? 1.0 : 0.0);
+    AddStages(report, prefix + ".", quickStages[k]);
+    report.Add(prefix + ".level_distance_spacings", quickDistance[k] / surfaceSpacing);
+    report.Add(prefix + ".method_level_distance_spacings", methodDistance[k] / surfaceSpacing);
+  }
 
   // Threads: fresh filters on the same particles, the fastest of 3 runs each.
   const std::array<double, 2> threads = SecondsWithOneAndTwoThreads(
@@ -355,6 +408,8 @@ int main(int argc, char* argv[])
     gridMetrics.MeanDistance / metrics.MeanDistance);
   report.Add("target.isovalue_change_small_over_grid (<= 5)", isoSmall / gridIsoSmall);
   report.Add("target.isovalue_change_large_over_grid (<= 5)", isoLarge / gridIsoLarge);
+  report.Add("target.quick_isovalue_change_small_over_grid (<= 5)", quick[0] / gridIsoSmall);
+  report.Add("target.quick_isovalue_change_large_over_grid (<= 5)", quick[1] / gridIsoLarge);
   report.Add("target.seed_move_over_grid (<= 5)", seed / gridSeed);
   report.Add("target.two_thread_speedup (>= 1.85)", threads[0] / threads[1]);
   if (scaled)

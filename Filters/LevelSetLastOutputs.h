@@ -1,12 +1,16 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The last run's outputs, for a re-run that only moved the seeds. With the flood start, the
-// seeds only choose which components of {f > f_iso} are flooded: a seed dragged inside the same
-// component floods the same samples and gives the same initial level set, so the evolution, the
-// isopoints and every output would come out the same. The filter then hands these on instead
-// of recomputing them (checked by flooding from the new seeds, not assumed).
+// The last run's outputs and state, for the re-runs that reuse them (vtkLevelSetIsosurface
+// ReRuns.cxx). A seed move: with the flood start, the seeds only choose which components of
+// {f > f_iso} are flooded; a seed dragged inside the same component floods the same samples
+// and gives the same initial level set, so the evolution, the isopoints and every output would
+// come out the same. The filter then hands these on instead of recomputing them (checked by
+// flooding from the new seeds, not assumed). A small isovalue change (QuickIsoValueChanges):
+// the last surface slides onto the new level (LevelSetIsoValueSlide.h).
 #ifndef LevelSetLastOutputs_h
 #define LevelSetLastOutputs_h
+
+#include "LevelSetIsopoints.h"
 
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -34,6 +38,19 @@ struct LastOutputs
   std::vector<char> Inside;
   std::vector<double> DataOffsets;
   double Spacing = 0.0;
+  // For the quick re-run after an isovalue change (with QuickCheck, QuickIsoValueChanges and
+  // the refinement on the MLS fit of the data): the level set phi after the evolution, in
+  // storage order, the surface's points with their nearest samples, the isopoint settings and
+  // the band's half width; how far the surface has slid since the method last ran in full.
+  bool SlideReady = false;
+  std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
+  double IsoValue = 0.0;
+  std::vector<double> Phi;
+  IsopointSet Isopoints;
+  std::vector<double> FitCentres; // where FitSamples were gathered (empty: at the points)
+  IsopointSettings Settings;
+  double HalfWidth = 0.0;
+  double Slid = 0.0;
 
   /// Keeps shallow copies of a successful run's outputs.
   void Remember(

@@ -82,6 +82,11 @@ public:
   /// (for several evaluations along a short path).
   void Gather(const Eigen::Vector3d& p) { this->Stencil.Gather(p); }
   const MLSStencil& Gathered() const { return this->Stencil; }
+  /// Takes `ids` as the samples nearest to p (MLSStencil::UseGathered).
+  void UseGathered(const Eigen::Vector3d& p, const std::uint32_t* ids, std::size_t count)
+  {
+    this->Stencil.UseGathered(p, ids, count);
+  }
   bool FitGathered(const Eigen::Vector3d& p, double& value, Eigen::Vector3d& gradient);
   /// The same with the fit's Hessian (zero where the fit is linear).
   bool FitGathered(

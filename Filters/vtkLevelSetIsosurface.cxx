@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLevelSetIsosurface.h"
+#include "vtkLevelSetIsosurfaceInternals.h"
 
 #include "LevelSetConvergenceTable.h"
 #include "LevelSetDistribution.h"
@@ -44,18 +45,16 @@ vtkStandardNewMacro(vtkLevelSetIsosurface);
 
 namespace
 {
+using lsi::AllListsStage;
 using lsi::Clock;
+using lsi::EvolutionStage;
+using lsi::InitializationStage;
+using lsi::IsopointStage;
+using lsi::NeighborStage;
 using lsi::SecondsSince;
-
-// Each stage reports its progress over its own part of [0, 1], in proportion to its time.
-constexpr double NeighborStage[2] = { 0.02, 0.33 };
-constexpr double AllListsStage[2] = { 0.30, 0.33 }; // its end, under MPI or in a periodic box
-constexpr double SPHFieldStage[2] = { 0.33, 0.35 };
-constexpr double InitializationStage[2] = { 0.35, 0.45 };
-constexpr double EvolutionStage[2] = { 0.45, 0.8 };
-constexpr double IsopointStage[2] = { 0.8, 0.92 };
-constexpr double SurfaceStage[2] = { 0.92, 0.98 };
-constexpr double SplatStage[2] = { 0.98, 1.0 };
+using lsi::SPHFieldStage;
+using lsi::SplatStage;
+using lsi::SurfaceStage;
 
 // Under MPI, each rank receives the other ranks' particles within this many of its own
 // particles' neighbourhood radii: enough for the initial signed distance (the reinitialised
@@ -64,18 +63,6 @@ constexpr double HaloRadii = 6.0;
 // Inputs with fewer particles per rank than this are gathered and processed on rank 0.
 constexpr double SmallestSharePerRank = 2000.0;
 } // namespace
-
-struct vtkLevelSetIsosurface::Internals
-{
-  lsi::NeighborCache Cache;
-  // This execution's periodic box: the input's points come first, then their ghost images.
-  lsi::PeriodicBox Box;
-  vtkIdType OriginalCount = 0;
-  std::vector<vtkIdType> ImageOf;
-  double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
-  lsi::Distribution* Ranks = nullptr;       // this execution's MPI ranks
-  lsi::LastOutputs Last;                    // for a re-run that only moved the seeds
-};
 
 vtkLevelSetIsosurface::vtkLevelSetIsosurface()
   : Internal(new Internals)
@@ -96,75 +83,6 @@ vtkCxxSetObjectMacro(vtkLevelSetIsosurface, Controller, vtkMultiProcessControlle
 bool vtkLevelSetIsosurface::ReportsForAll() const
 {
   return !this->Internal->Ranks || this->Internal->Ranks->Rank == 0;
-}
-
-void vtkLevelSetIsosurface::SeedsModified()
-{
-  const vtkMTimeType before = this->GetMTime();
-  const bool onlySeeds = before == this->LastRunTime || before == this->SeedsOnlyTime;
-  this->Modified();
-  this->SeedsOnlyTime = onlySeeds ? this->GetMTime() : 0;
-}
-
-bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
-  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
-{
-  lsi::LastOutputs& last = this->Internal->Last;
-  if (!last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
-    input->GetMTime() != last.InputTime || !input->GetPoints())
-  {
-    return false;
-  }
-  // Seeds the method would refuse go the long way, which reports them.
-  std::vector<std::pair<const char*, double>> seedNumbers = {
-    { "SeedCenter[0]", this->SeedCenter[0] }, { "SeedCenter[1]", this->SeedCenter[1] },
-    { "SeedCenter[2]", this->SeedCenter[2] }, { "SeedRadius", this->SeedRadius }
-  };
-  for (double value : this->AdditionalSeeds)
-  {
-    seedNumbers.emplace_back("AdditionalSeeds", value);
-  }
-  // (The isovalue and the data are those of the last run, which checked them.)
-  if (this->AdditionalSeeds.size() % 4 != 0 || !lsi::NonFiniteParameter(seedNumbers).empty() ||
-    !lsi::CheckSeedRadii(this->AdditionalSeeds).empty())
-  {
-    return false;
-  }
-  bool searched = false;
-  const lsi::Neighborhoods* geometry =
-    this->Internal->Cache.Get(input->GetPoints(), this->NumberOfNeighbors,
-      static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
-  if (!geometry || searched || geometry->NumberOfSamples != last.Inside.size())
-  {
-    return false;
-  }
-  double bounds[6];
-  this->Bounds(input, bounds);
-  const std::vector<double> spheres =
-    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
-  std::vector<double> seedDistance;
-  const lsi::SeedSphereStart seeds =
-    lsi::SeedSphereDistance(*geometry, spheres, bounds, 0.5 * last.Spacing, seedDistance);
-  if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
-  {
-    return false;
-  }
-  lsi::FloodResult flood;
-  const std::vector<char> inside = lsi::FloodedInside(*geometry, last.DataOffsets, seeds.InSeed,
-    static_cast<std::size_t>(geometry->Stride), flood, this->Stage(InitializationStage));
-  if (flood.Aborted || flood.SeedSamples == 0 || inside != last.Inside)
-  {
-    return false;
-  }
-  last.Restore(surfaceOutput, particleOutput, convergence, enclosed);
-  this->NumberOfIterationsPerformed = last.Iterations;
-  this->Converged = last.Converged;
-  this->ReusedLastOutputs = true;
-  this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
-    this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
-      this->OutputSeconds = this->InputSeconds = this->ParticleOutputSeconds = 0.0;
-  this->LastRunTime = this->GetMTime();
-  return true;
 }
 
 void vtkLevelSetIsosurface::SetSeedCenter(double x, double y, double z)
@@ -288,9 +206,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
   this->GhostFraction = 0.0;
-  this->ReusedLastOutputs = false;
-  // Whether nothing but the seeds changed since the last run; the input is checked below.
+  this->ReusedLastOutputs = this->SlidLastSurface = false;
+  // Whether nothing but the seeds (or the isovalue) changed since the last run; the input is
+  // checked below.
   const bool onlySeedsChanged = this->GetMTime() == this->SeedsOnlyTime;
+  const bool onlyIsoValueChanged = this->GetMTime() == this->IsoValueOnlyTime;
 
   vtkPointSet* requested = input;
   lsi::LastOutputs& last = this->Internal->Last;
@@ -309,6 +229,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   } forget{ this, ranks };
   if (couldReuse && !ranks.Distributed() &&
     this->ReuseAfterSeedMove(input, surfaceOutput, particleOutput, convergence, enclosed))
+  {
+    return true;
+  }
+  if (onlyIsoValueChanged && !ranks.Distributed() &&
+    this->SlideAfterIsoValueChange(input, surfaceOutput, particleOutput, convergence, enclosed))
   {
     return true;
   }
@@ -412,7 +337,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   lsi::IsopointSet isopoints;
-  ok = this->ExtractIsopoints(*geometry, dataOffsets, phi, scale, field.get(), isopoints);
+  lsi::IsopointSettings isopointSettings;
+  ok = this->ExtractIsopoints(
+    *geometry, dataOffsets, phi, scale, field.get(), isopoints, isopointSettings);
   if (!ranks.All(ok))
   {
     return false;
@@ -426,37 +353,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   const auto particleStart = lsi::Clock::now();
-  lsi::MakeParticleOutput(original, *geometry, phi, mergedId, particleOutput);
-  if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
-  {
-    for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),
-           std::make_pair("CommunicationSeconds", ranks.CommunicationSeconds) })
-    {
-      vtkNew<vtkDoubleArray> value;
-      value->SetName(entry.first);
-      value->InsertNextValue(entry.second);
-      particleOutput->GetFieldData()->AddArray(value);
-    }
-  }
-  lsi::EnclosedInputs inside;
-  inside.Geometry = geometry;
-  inside.Phi = &phi;
-  inside.FarOutside = -lsi::ReinitializationHalfWidth(settings);
-  inside.Particles = input;
-  inside.ParticleCount = this->Internal->OriginalCount;
-  inside.OriginalIds =
-    lsi::OriginalIds(*geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
-  inside.Box = this->Internal->Box;
-  inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
-  inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
-  inside.SurfacePoints = &isopoints.Points;
-  inside.SurfaceNormals = &isopoints.Normals;
-  inside.Ranks = &ranks;
-  vtkSmartPointer<vtkTable> table = lsi::EnclosedTable(inside);
+  const double halfWidth = lsi::ReinitializationHalfWidth(settings);
+  this->MakeParticleOutputs(
+    original, input, *geometry, phi, mergedId, halfWidth, isopoints, particleOutput, enclosed);
   this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
-    enclosed->ShallowCopy(table);
     convergence->ShallowCopy(iterations);
   }
   // An abort that arrived during the last stage still empties the outputs.
@@ -469,8 +371,68 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.InputTime = requested->GetMTime();
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
+  // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
+  last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck && !field &&
+    isopointSettings.RefineOnData && isopoints.FitSize > 0;
+  last.Values.clear();
+  last.Phi.clear();
+  last.Isopoints = lsi::IsopointSet();
+  last.FitCentres.clear();
+  if (last.SlideReady)
+  {
+    last.Values.resize(dataOffsets.size());
+    for (std::size_t i = 0; i < dataOffsets.size(); ++i)
+    {
+      last.Values[i] = values[geometry->Order[i]];
+    }
+    last.IsoValue = this->IsoValue;
+    last.Phi = std::move(phi);
+    last.Isopoints = std::move(isopoints);
+    last.Settings = isopointSettings;
+    last.HalfWidth = halfWidth;
+    last.Slid = 0.0;
+  }
   this->LastRunTime = this->GetMTime();
   return true;
+}
+
+void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
+  const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
+  const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
+  vtkPolyData* particleOutput, vtkTable* enclosed)
+{
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  lsi::MakeParticleOutput(original, geometry, phi, mergedId, particleOutput);
+  if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
+  {
+    for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),
+           std::make_pair("CommunicationSeconds", ranks.CommunicationSeconds) })
+    {
+      vtkNew<vtkDoubleArray> value;
+      value->SetName(entry.first);
+      value->InsertNextValue(entry.second);
+      particleOutput->GetFieldData()->AddArray(value);
+    }
+  }
+  lsi::EnclosedInputs inside;
+  inside.Geometry = &geometry;
+  inside.Phi = &phi;
+  inside.FarOutside = -halfWidth;
+  inside.Particles = input;
+  inside.ParticleCount = this->Internal->OriginalCount;
+  inside.OriginalIds =
+    lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
+  inside.Box = this->Internal->Box;
+  inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
+  inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
+  inside.SurfacePoints = &isopoints.Points;
+  inside.SurfaceNormals = &isopoints.Normals;
+  inside.Ranks = &ranks;
+  vtkSmartPointer<vtkTable> table = lsi::EnclosedTable(inside);
+  if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
+  {
+    enclosed->ShallowCopy(table);
+  }
 }
 
 bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double>& values)
@@ -1078,13 +1040,14 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
 
 bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<double>& evolvedPhi,
-  const lsi::SurfaceScale& scale, const lsi::SPHField* field, lsi::IsopointSet& isopoints)
+  const lsi::SurfaceScale& scale, const lsi::SPHField* field, lsi::IsopointSet& isopoints,
+  lsi::IsopointSettings& settings)
 {
   // Sub-stages in proportion to their times at 2M samples: isopoints 28%, completion 48%,
   // refinement on the data 24%.
   const lsi::AbortCheck stage = this->Stage(IsopointStage);
   const auto start = Clock::now();
-  lsi::IsopointSettings settings = lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
+  settings = lsi::ChooseIsopointSettings(this->RequestedParameters(), scale);
   if (field)
   {
     // The SPH field is exact between the particles: sample the surface twice as densely, so

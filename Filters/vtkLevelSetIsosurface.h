@@ -81,6 +81,7 @@ namespace lsi
 {
 struct EvolutionSettings;
 struct IsopointSet;
+struct IsopointSettings;
 struct Neighborhoods;
 struct RequestedParameters;
 class Distribution;
@@ -105,8 +106,28 @@ public:
 
   ///@{
   /** The isovalue of the input scalars (SetInputArrayToProcess(0, ...)). Default 0. */
-  vtkSetMacro(IsoValue, double);
+  void SetIsoValue(double value);
   vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /** Quick re-runs after small isovalue changes, for exploring (default off). When on, and
+   * nothing but IsoValue changed since the last run, the last surface slides along its normals
+   * onto the new level of the data's MLS fit, by the refinement on the data from the same
+   * nearest samples, instead of the method running again: several times faster. The flood from
+   * the seeds runs at the new isovalue and must change only next to the surface, and every
+   * point must land within two spacings (in steps of half a spacing, each from the samples
+   * nearest to where it starts), between the new inside and outside; otherwise (a
+   * larger change, a component joined or lost, the SPH field, a periodic box, MPI) the method
+   * runs in full. The points then lie on the same level as the full method's, spread as the
+   * last run left them; the LevelSet array is the last one moved by the change over the data's
+   * gradient (within the band), so it and the Enclosed table match a full run to first order
+   * in the change. The surface may slide at most two spacings in all before the method runs in
+   * full again. Off: every run is the full method, whatever ran before (reproducible from the
+   * parameters alone). SlidLastSurface tells which happened. */
+  vtkSetMacro(QuickIsoValueChanges, bool);
+  vtkGetMacro(QuickIsoValueChanges, bool);
+  vtkBooleanMacro(QuickIsoValueChanges, bool);
   ///@}
 
   ///@{
@@ -414,6 +435,9 @@ public:
   // Whether the last run only moved the seeds within the same flooded samples and handed on
   // the run before's outputs (the evolution, isopoint and output stages then take 0 s).
   vtkGetMacro(ReusedLastOutputs, bool);
+  // Whether the last run slid the run before's surface onto a new IsoValue (QuickIsoValueChanges)
+  // instead of running the method: the evolution then takes 0 s.
+  vtkGetMacro(SlidLastSurface, bool);
   vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);
@@ -462,6 +486,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double IsoValue = 0.0;
+  bool QuickIsoValueChanges = false;
   double SeedCenter[3] = { 0.0, 0.0, 0.0 };
   double SeedRadius = 0.0;
   std::vector<double> AdditionalSeeds; // 4 per sphere (a multiple of 4, checked on execution)
@@ -515,8 +540,22 @@ private:
   // samples are flooded, hands on the last outputs. False: run the method.
   bool ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
     vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
-  vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0;
-  bool ReusedLastOutputs = false;
+  // Likewise for IsoValue: IsoValueOnlyTime is the modification time after an isovalue change
+  // when nothing else changed since the last run.
+  vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0, IsoValueOnlyTime = 0;
+  bool ReusedLastOutputs = false, SlidLastSurface = false;
+  // With only IsoValue changed since the last run and QuickIsoValueChanges on: slides the last
+  // surface onto the new level (LevelSetIsoValueSlide.h) if the checks there allow. False: run
+  // the method.
+  bool SlideAfterIsoValueChange(vtkPointSet* input, vtkPolyData* surfaceOutput,
+    vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
+  // The geometry the last run searched, if still cached and of this input (no search); else
+  // null.
+  const lsi::Neighborhoods* LastGeometry(vtkPointSet* input);
+  // The flood from the current seeds over `dataOffsets` (f - f_iso per sample) on the last
+  // run's geometry; false if the seeds are refused or reach no sample above the isovalue.
+  bool FloodFromSeeds(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const std::vector<double>& dataOffsets, std::vector<char>& inside);
 
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
   void operator=(const vtkLevelSetIsosurface&) = delete;
@@ -557,9 +596,15 @@ private:
     std::vector<double>& phi, vtkTable* iterations);
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
-    const lsi::SPHField* field, lsi::IsopointSet& isopoints);
+    const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const lsi::IsopointSet& isopoints, const lsi::SPHField* field, vtkPolyData* output);
+  // The particles with their LevelSet array (`original`: the input's points, `input`: with
+  // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
+  void MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
+    const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
+    const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
+    vtkPolyData* particleOutput, vtkTable* enclosed);
 
   // The user's parameters, for the step files.
   lsi::RequestedParameters RequestedParameters() const;

@@ -20,7 +20,7 @@ if [ -n "$missing" ]; then
 fi
 # The filter, readers and plugin speak through VTK's messages (vtkWarningMacro, vtkErrorMacro),
 # never to the terminal: a print left in them (a timer, say) is a leftover.
-prints=$(git grep -nE 'std::(cout|cerr)|[^n]printf\(|puts\(' -- Filters IO Plugin 2>/dev/null)
+prints=$(git grep -nE 'std::(cout|cerr)|(^|[^a-zA-Z_])(f?printf|puts)\(' -- Filters IO Plugin 2>/dev/null)
 if [ -n "$prints" ]; then
   echo "FAILED: direct prints in the library (use VTK's messages):"
   echo "$prints"

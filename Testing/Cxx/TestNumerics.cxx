@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the per-sample numerics (Filters/Numerics), against known answers.
 #include "AutomaticParameters.h"
+#include "IsoValueShift.h"
 #include "IsopointRefinement.h"
 #include "LevelSetSplines.h"
 #include "LevelSetUpdate.h"
@@ -937,8 +938,27 @@ void TestSPHKernelGradients()
     "SPH kernel names as SWIFT writes them");
 }
 
+// The level set after an isovalue change, on f = 20 - r (|grad f| = 1) and f = 5 (20 - r): phi
+// drops by the change over |grad f|, capped at the largest move either way; a zero gradient
+// moves it by the cap in the change's direction.
+void TestIsoValueShift()
+{
+  Check(std::abs(lsi::LevelSetAfterIsoValueChange(1.0, 0.1, 1.0, 1.0) - 0.9) < 1e-15,
+    "raising f_iso by 0.1 where |grad f| = 1 lowers phi by 0.1");
+  Check(std::abs(lsi::LevelSetAfterIsoValueChange(1.0, 0.1, 5.0, 1.0) - 0.98) < 1e-15,
+    "where |grad f| = 5 the level moves a fifth as far");
+  Check(std::abs(lsi::LevelSetAfterIsoValueChange(-2.0, -0.3, 1.0, 1.0) + 1.7) < 1e-15,
+    "lowering f_iso raises phi");
+  Check(lsi::LevelSetAfterIsoValueChange(0.0, 10.0, 1.0, 0.5) == -0.5 &&
+      lsi::LevelSetAfterIsoValueChange(0.0, -10.0, 1e-3, 0.5) == 0.5,
+    "the move is capped at the largest move of the surface");
+  Check(lsi::LevelSetAfterIsoValueChange(0.0, 0.2, 0.0, 0.5) == -0.5,
+    "a zero gradient moves phi by the cap, in the change's direction");
+}
+
 int main()
 {
+  TestIsoValueShift();
   TestTangentBasis();
   TestSPHKernels();
   TestSPHKernelGradients();

@@ -1,0 +1,228 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetIsoValueSlide.h"
+
+#include "IsoValueShift.h"
+#include "IsopointRefinement.h"
+#include "LevelSetMLSFit.h"
+#include "NearestNeighbors.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+
+namespace lsi
+{
+
+namespace
+{
+// Why a point refused to slide (the first reason met is reported).
+enum Refusal : int
+{
+  None = 0,
+  NoCrossing = 1, // the data's gradient does not point across the surface
+  TooFar = 2,     // the level is MaximumMove or more away
+  OneSide = 3     // its nearest samples all lie inside the new flood, or all outside
+};
+
+const char* RefusalText(int refusal)
+{
+  switch (refusal)
+  {
+    case NoCrossing:
+      return "the data's gradient at a point no longer crosses the surface";
+    case TooFar:
+      return "a point would move further than the refinement's reach";
+    case OneSide:
+      return "a point's nearest samples lie all inside or all outside the new flood";
+    default:
+      return "";
+  }
+}
+} // namespace
+
+SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inside, const SlideSettings& settings, IsopointSet& isopoints,
+  std::vector<double>& centres, const AbortCheck& aborted)
+{
+  SlideResult result;
+  const std::size_t count = isopoints.Points.size() / 3;
+  const std::size_t fit = isopoints.FitSize;
+  if (fit == 0 || isopoints.FitSamples.size() != fit * count)
+  {
+    result.Refusal = "the last surface kept no nearest samples";
+    return result;
+  }
+  std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
+  std::vector<std::uint32_t> samples(isopoints.FitSamples);
+  std::vector<double> newCentres(points.size());
+  std::atomic<int> refusal(None);
+  struct Scratch
+  {
+    std::shared_ptr<MLSEvaluator> Evaluator;
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> D2;
+    double LargestMove = 0.0;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+  auto slide = [&](std::size_t begin, std::size_t end) {
+    Scratch& s = scratch.Local();
+    if (!s.Evaluator)
+    {
+      s.Evaluator.reset(new MLSEvaluator(geometry, dataOffsets, fit, settings.Quadratic));
+      s.Ids.resize(fit);
+      s.D2.resize(fit);
+    }
+    for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
+    {
+      const Eigen::Vector3d start(&points[3 * i]);
+      const Eigen::Vector3d n(&normals[3 * i]);
+      // The samples of the point's last fit, nearest to where they were gathered (`centre`);
+      // a fit serves within MaximumMove of its centre, beyond it the samples nearest to where
+      // the point got are gathered (a tree search) and the point slides on from there.
+      Eigen::Vector3d centre = centres.empty() ? start : Eigen::Vector3d(&centres[3 * i]);
+      const std::uint32_t* nearest = &samples[fit * i];
+      std::size_t found =
+        static_cast<std::size_t>(std::find(nearest, nearest + fit, NoSample) - nearest);
+      Eigen::Vector3d p = start, gradient;
+      bool reached = false;
+      for (int step = 0; step < settings.Steps && !reached; ++step)
+      {
+        double reach = settings.MaximumMove - (p - centre).norm();
+        if (step > 0 || reach < 0.25 * settings.MaximumMove)
+        {
+          found = geometry.Index->Nearest(p.data(), fit, s.Ids.data(), s.D2.data());
+          nearest = s.Ids.data();
+          centre = p;
+          reach = settings.MaximumMove;
+        }
+        s.Evaluator->UseGathered(centre, nearest, found);
+        auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g,
+                          Eigen::Matrix3d& hessian) {
+          return s.Evaluator->FitGathered(x, value, g, hessian);
+        };
+        const Eigen::Vector3d from = p;
+        if (!SlideOntoDataLevel(
+              p, n, evaluate, reach, settings.Iterations, gradient, settings.Tolerance))
+        {
+          break;
+        }
+        reached = (p - from).norm() < reach * (1.0 - 1e-9); // else stopped at the reach
+      }
+      if (!reached)
+      {
+        refusal = (p - start).norm() > 0.0 ? TooFar : NoCrossing;
+        break;
+      }
+      s.LargestMove = std::max(s.LargestMove, (p - start).norm());
+      const std::size_t now = found;
+      bool in = false, out = false;
+      for (std::size_t j = 0; j < now; ++j)
+      {
+        (inside[nearest[j]] ? in : out) = true;
+      }
+      if (!in || !out)
+      {
+        refusal = OneSide;
+        break;
+      }
+      const Eigen::Vector3d dataNormal = -gradient.normalized();
+      for (int d = 0; d < 3; ++d)
+      {
+        points[3 * i + d] = p[d];
+        normals[3 * i + d] = dataNormal[d];
+      }
+      if (nearest != &samples[fit * i])
+      {
+        for (std::size_t j = 0; j < fit; ++j)
+        {
+          samples[fit * i + j] = j < now ? nearest[j] : NoSample;
+        }
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        newCentres[3 * i + d] = centre[d];
+      }
+    }
+  };
+  if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
+  {
+    result.Refusal = "aborted";
+    return result;
+  }
+  if (refusal != None)
+  {
+    result.Refusal = RefusalText(refusal);
+    return result;
+  }
+  for (const Scratch& s : scratch)
+  {
+    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
+  }
+  isopoints.Points.swap(points);
+  isopoints.Normals.swap(normals);
+  isopoints.FitSamples.swap(samples);
+  centres.swap(newCentres);
+  result.Accepted = true;
+  return result;
+}
+
+bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
+  const std::vector<char>& after, const std::vector<double>& points, double reach,
+  std::size_t& changed)
+{
+  const std::vector<std::uint32_t> moved = IndicesWhere<std::uint32_t>(
+    geometry.NumberOfSamples, [&](std::size_t i) { return before[i] != after[i]; });
+  changed = moved.size();
+  if (moved.empty())
+  {
+    return true;
+  }
+  if (points.empty())
+  {
+    return false;
+  }
+  const PointCloudIndex index(points.data(), points.size() / 3);
+  std::atomic<bool> near(true);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end && near.load(std::memory_order_relaxed); ++k)
+    {
+      std::uint32_t id;
+      double d2;
+      if (index.NearestWithin(geometry.Position(moved[k]), 1, reach * reach, &id, &d2) == 0)
+      {
+        near = false;
+      }
+    }
+  });
+  return near;
+}
+
+void ShiftLevelSet(const Neighborhoods& geometry, const std::vector<double>& values,
+  double valueChange, double halfWidth, double largestMove, std::vector<double>& phi)
+{
+  const std::vector<std::size_t> band = IndicesWhere<std::size_t>(
+    geometry.NumberOfSamples, [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; });
+  geometry.EnsureStencils(band); // computed by the evolution already: a lookup
+  std::vector<double> shifted(band.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const std::size_t i = band[k];
+      const std::uint32_t* around = geometry.NeighborsOf(i);
+      const double gradient =
+        geometry.GradientAt(i, [&](std::size_t m) { return values[around[m]]; }).norm();
+      shifted[k] = LevelSetAfterIsoValueChange(phi[i], valueChange, gradient, largestMove);
+    }
+  });
+  for (std::size_t k = 0; k < band.size(); ++k)
+  {
+    phi[band[k]] = shifted[k];
+  }
+}
+
+} // namespace lsi

@@ -1,0 +1,73 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The quick re-run after a small isovalue change (QuickIsoValueChanges; ours, not the paper's).
+// With the refinement on the data, the method's surface lies on the level {f = f_iso} of the
+// data's MLS fit: the level set decided which components and where each point starts, the data
+// placed it. After a small change of f_iso, each point of the last surface slides along its
+// normal onto the new level, by the same refinement from the same nearest samples, for a
+// fraction of the method's cost. The flood from the seeds, run again at the new isovalue,
+// vouches that the components are the same (FloodChangesNearPoints); each point vouches that it
+// still lies between the new inside and outside (SlideIsopoints). Any doubt: the long way.
+#ifndef LevelSetIsoValueSlide_h
+#define LevelSetIsoValueSlide_h
+
+#include "LevelSetIsopoints.h"
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetParallel.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace lsi
+{
+
+struct SlideSettings
+{
+  double MaximumMove = 0.0; // per step: the refinement's reach from where it gathered
+  int Steps = 4;            // steps at most, each from the samples nearest to where it starts
+  int Iterations = 3;       // the refinement's iterations and tolerance (IsopointSettings)
+  double Tolerance = 0.0;
+  bool Quadratic = true; // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
+};
+
+struct SlideResult
+{
+  bool Accepted = false;
+  std::string Refusal;      // why not, in words (for the debug output)
+  double LargestMove = 0.0; // of any point
+};
+
+/// Slides each of `isopoints` along its normal onto the zero of the MLS fit of `dataOffsets`
+/// (f - f_iso, the new isovalue): RefineIsopointsOnData's step, from where the last run's points
+/// ended, over the samples of their last fit (FitSamples, the nearest to `centres`, 3 per point;
+/// empty: to the points themselves). A fit serves within MaximumMove of where its samples were
+/// gathered; a point whose level lies beyond takes further steps, each from the samples nearest
+/// to where the last one ended (a tree search), at most Steps in all. FitSamples and `centres`
+/// then hold each point's last fit (the surface's arrays are interpolated over those samples),
+/// and the normals the fit's gradient. Refused (isopoints and centres then unchanged) if a
+/// point's level lies beyond those steps, or the data's gradient there does not cross the
+/// surface, or its samples are not on both sides of the new flood (`inside`, per sample): it
+/// would lie on a component the seeds no longer reach, or on none.
+SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inside, const SlideSettings& settings, IsopointSet& isopoints,
+  std::vector<double>& centres, const AbortCheck& aborted);
+
+/// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
+/// within `reach` of one of `points` (3 doubles each): the flood then only moved with the
+/// surface. A component joined or lost, or a cavity opened, leaves changed samples away from
+/// the slid surface. `changed` receives how many samples changed.
+bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
+  const std::vector<char>& after, const std::vector<double>& points, double reach,
+  std::size_t& changed);
+
+/// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the
+/// samples of the band (|phi| < halfWidth, whose MLS stencils the evolution computed) with the
+/// data's gradient there from `values` (f, or f minus any constant); phi beyond the band stays
+/// clamped. `largestMove`: see LevelSetAfterIsoValueChange.
+void ShiftLevelSet(const Neighborhoods& geometry, const std::vector<double>& values,
+  double valueChange, double halfWidth, double largestMove, std::vector<double>& phi);
+
+} // namespace lsi
+
+#endif

@@ -1,0 +1,42 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// What vtkLevelSetIsosurface's two source files share: its state between executions and the
+// parts of [0, 1] over which each stage reports progress. Private to the filter.
+#ifndef vtkLevelSetIsosurfaceInternals_h
+#define vtkLevelSetIsosurfaceInternals_h
+
+#include "vtkLevelSetIsosurface.h"
+
+#include "LevelSetDistribution.h"
+#include "LevelSetLastOutputs.h"
+#include "LevelSetNeighborCache.h"
+#include "LevelSetPeriodicImages.h"
+
+#include <vector>
+
+namespace lsi
+{
+// Each stage reports its progress over its own part of [0, 1], in proportion to its time.
+constexpr double NeighborStage[2] = { 0.02, 0.33 };
+constexpr double AllListsStage[2] = { 0.30, 0.33 }; // its end, under MPI or in a periodic box
+constexpr double SPHFieldStage[2] = { 0.33, 0.35 };
+constexpr double InitializationStage[2] = { 0.35, 0.45 };
+constexpr double EvolutionStage[2] = { 0.45, 0.8 };
+constexpr double IsopointStage[2] = { 0.8, 0.92 };
+constexpr double SurfaceStage[2] = { 0.92, 0.98 };
+constexpr double SplatStage[2] = { 0.98, 1.0 };
+} // namespace lsi
+
+struct vtkLevelSetIsosurface::Internals
+{
+  lsi::NeighborCache Cache;
+  // This execution's periodic box: the input's points come first, then their ghost images.
+  lsi::PeriodicBox Box;
+  vtkIdType OriginalCount = 0;
+  std::vector<vtkIdType> ImageOf;
+  double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
+  lsi::Distribution* Ranks = nullptr;       // this execution's MPI ranks
+  lsi::LastOutputs Last;                    // for the re-runs that reuse the last run
+};
+
+#endif

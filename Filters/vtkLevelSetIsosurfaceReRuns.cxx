@@ -1,0 +1,222 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkLevelSetIsosurface's re-runs that reuse the last run instead of running the method: after
+// a seed move (the same flooded samples: the same outputs) and, with QuickIsoValueChanges,
+// after a small isovalue change (the last surface slid onto the new level). Each checks that
+// it may, and otherwise returns false: the method then runs in full.
+#include "vtkLevelSetIsosurface.h"
+#include "vtkLevelSetIsosurfaceInternals.h"
+
+#include "LevelSetFlood.h"
+#include "LevelSetInput.h"
+#include "LevelSetIsoValueSlide.h"
+#include "LevelSetSeedSpheres.h"
+#include "LevelSetTiming.h"
+
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace
+{
+// The surface may slide this many spacings in all (over successive quick re-runs) before the
+// method runs in full again: the points stay on the level, but their spread and the shifted
+// LevelSet array drift from what the method would give.
+constexpr double MostSlidSpacings = 2.0;
+} // namespace
+
+void vtkLevelSetIsosurface::SeedsModified()
+{
+  const vtkMTimeType before = this->GetMTime();
+  const bool onlySeeds = before == this->LastRunTime || before == this->SeedsOnlyTime;
+  this->Modified();
+  this->SeedsOnlyTime = onlySeeds ? this->GetMTime() : 0;
+}
+
+void vtkLevelSetIsosurface::SetIsoValue(double value)
+{
+  if (this->IsoValue == value)
+  {
+    return;
+  }
+  const vtkMTimeType before = this->GetMTime();
+  const bool onlyIsoValue = before == this->LastRunTime || before == this->IsoValueOnlyTime;
+  this->IsoValue = value;
+  this->Modified();
+  this->IsoValueOnlyTime = onlyIsoValue ? this->GetMTime() : 0;
+}
+
+const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)
+{
+  const lsi::LastOutputs& last = this->Internal->Last;
+  if (!last.Valid || !last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
+    input->GetMTime() != last.InputTime || !input->GetPoints())
+  {
+    return nullptr;
+  }
+  bool searched = false;
+  const lsi::Neighborhoods* geometry =
+    this->Internal->Cache.Get(input->GetPoints(), this->NumberOfNeighbors,
+      static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
+  return geometry && !searched && geometry->NumberOfSamples == last.Inside.size() ? geometry
+                                                                                  : nullptr;
+}
+
+bool vtkLevelSetIsosurface::FloodFromSeeds(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, std::vector<char>& inside)
+{
+  // Seeds the method would refuse go the long way, which reports them.
+  std::vector<std::pair<const char*, double>> seedNumbers = {
+    { "SeedCenter[0]", this->SeedCenter[0] }, { "SeedCenter[1]", this->SeedCenter[1] },
+    { "SeedCenter[2]", this->SeedCenter[2] }, { "SeedRadius", this->SeedRadius }
+  };
+  for (double value : this->AdditionalSeeds)
+  {
+    seedNumbers.emplace_back("AdditionalSeeds", value);
+  }
+  if (this->AdditionalSeeds.size() % 4 != 0 || !lsi::NonFiniteParameter(seedNumbers).empty() ||
+    !lsi::CheckSeedRadii(this->AdditionalSeeds).empty())
+  {
+    return false;
+  }
+  double bounds[6];
+  this->Bounds(input, bounds);
+  const std::vector<double> spheres =
+    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
+  std::vector<double> seedDistance;
+  const lsi::SeedSphereStart seeds = lsi::SeedSphereDistance(
+    geometry, spheres, bounds, 0.5 * this->Internal->Last.Spacing, seedDistance);
+  if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
+  {
+    return false;
+  }
+  lsi::FloodResult flood;
+  inside = lsi::FloodedInside(geometry, dataOffsets, seeds.InSeed,
+    static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
+  return !flood.Aborted && flood.SeedSamples > 0;
+}
+
+bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
+  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  const lsi::Neighborhoods* geometry = this->LastGeometry(input);
+  // (The isovalue and the data are those of the last run, which checked them.)
+  std::vector<char> inside;
+  if (!geometry || !this->FloodFromSeeds(input, *geometry, last.DataOffsets, inside) ||
+    inside != last.Inside)
+  {
+    return false;
+  }
+  last.Restore(surfaceOutput, particleOutput, convergence, enclosed);
+  this->NumberOfIterationsPerformed = last.Iterations;
+  this->Converged = last.Converged;
+  this->ReusedLastOutputs = true;
+  this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
+    this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
+      this->OutputSeconds = this->InputSeconds = this->ParticleOutputSeconds = 0.0;
+  this->LastRunTime = this->GetMTime();
+  return true;
+}
+
+bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPolyData* surfaceOutput,
+  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  const lsi::Neighborhoods* geometry = this->LastGeometry(input);
+  if (!geometry || !last.SlideReady || !this->QuickIsoValueChanges || !this->DataRefinement ||
+    !std::isfinite(this->IsoValue))
+  {
+    vtkDebugMacro(<< "quick isovalue change: not possible here (the last run kept no surface to "
+                     "slide, or the input or the method changed)");
+    return false;
+  }
+  // The data offsets at the new isovalue, as the method computes them (DataInStorageOrder).
+  auto start = lsi::Clock::now();
+  const double isoValue = this->IsoValue;
+  std::vector<double> dataOffsets(last.Values.size());
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        dataOffsets[i] = last.Values[i] - isoValue;
+      }
+    });
+  const double inputSeconds = lsi::SecondsSince(start);
+  start = lsi::Clock::now();
+  std::vector<char> inside;
+  if (!this->FloodFromSeeds(input, *geometry, dataOffsets, inside))
+  {
+    vtkDebugMacro(<< "quick isovalue change: refused, the seeds flood nothing");
+    return false;
+  }
+  const double floodSeconds = lsi::SecondsSince(start);
+  start = lsi::Clock::now();
+  const lsi::IsopointSettings& settings = last.Settings;
+  lsi::SlideSettings slide;
+  slide.MaximumMove = settings.DataMaximumMove;
+  slide.Iterations = settings.DataIterations;
+  slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
+  slide.Quadratic = settings.DataFitOrder == 2;
+  lsi::IsopointSet isopoints = last.Isopoints;
+  std::vector<double> centres = last.FitCentres;
+  const lsi::SlideResult slid = lsi::SlideIsopoints(
+    *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  std::size_t changed = 0;
+  // A sample that changed sides lies between the old and the new level: within the largest
+  // move of the level and the points' spacing (two cells) of a slid point.
+  const double reach = slid.LargestMove + 2.0 * settings.CellSize;
+  const bool accepted = slid.Accepted &&
+    last.Slid + slid.LargestMove <= MostSlidSpacings * last.Spacing &&
+    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, isopoints.Points, reach, changed);
+  vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
+                << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
+                << slid.LargestMove << ", " << changed << " samples changed sides");
+  if (!accepted)
+  {
+    return false;
+  }
+  // From here on the outputs are this run's.
+  std::vector<double> phi = last.Phi;
+  lsi::ShiftLevelSet(
+    *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
+  this->IsopointSeconds = lsi::SecondsSince(start);
+  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, nullptr, surfaceOutput))
+  {
+    return false;
+  }
+  start = lsi::Clock::now();
+  this->MakeParticleOutputs(input, input, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
+    isopoints, particleOutput, enclosed);
+  convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
+  this->ParticleOutputSeconds = lsi::SecondsSince(start);
+  if (this->CheckAbort())
+  {
+    return false;
+  }
+  this->NumberOfIsopoints = static_cast<vtkIdType>(isopoints.Points.size() / 3);
+  this->NumberOfIterationsPerformed = last.Iterations;
+  this->Converged = last.Converged;
+  this->SlidLastSurface = true;
+  this->NeighborSearchSeconds = this->EvolutionSeconds = this->CompletionSeconds = 0.0;
+  this->DataRefinementSeconds = this->IsopointSeconds;
+  this->InputSeconds = inputSeconds;
+  this->InitializationSeconds = floodSeconds;
+  // The state the next re-run starts from.
+  last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
+  last.DataOffsets = std::move(dataOffsets);
+  last.Inside = std::move(inside);
+  last.IsoValue = isoValue;
+  last.Phi = std::move(phi);
+  last.Isopoints = std::move(isopoints);
+  last.FitCentres = std::move(centres);
+  last.Slid += slid.LargestMove;
+  this->LastRunTime = this->GetMTime();
+  return true;
+}
