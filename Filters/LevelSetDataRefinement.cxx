@@ -23,6 +23,7 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
     geometry.NumberOfSamples, static_cast<std::size_t>(settings.DataFitScale) * geometry.Stride);
   out.FitSize = fitCount;
   out.FitSamples.resize(fitCount * count);
+  out.FitModels.assign(ModelSize * count, 0.0);
   vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
   vtkSMPThreadLocal<std::size_t> moved(0);
   auto slide = [&](std::size_t begin, std::size_t end) {
@@ -39,13 +40,21 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
       Eigen::Vector3d gradient;
       // The point moves less than a spacing: the samples nearest its start serve every step.
       evaluator->Gather(p);
+      Eigen::Matrix3d lastHessian = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d evaluatedAt = p;
       auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g,
                         Eigen::Matrix3d& hessian) {
-        return evaluator->FitGathered(x, value, g, hessian);
+        evaluatedAt = x;
+        const bool ok = evaluator->FitGathered(x, value, g, hessian);
+        lastHessian = hessian;
+        return ok;
       };
       if (SlideOntoDataLevel(p, n, evaluate, settings.DataMaximumMove, settings.DataIterations,
             gradient, DataConvergedStep * settings.DataMaximumMove))
       {
+        // The last fit's model where the point ended, for a later slide.
+        StoreModel(
+          gradient + lastHessian * (p - evaluatedAt), lastHessian, &out.FitModels[ModelSize * i]);
         const Eigen::Vector3d dataNormal = -gradient.normalized();
         for (int d = 0; d < 3; ++d)
         {
@@ -67,6 +76,7 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
   if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
   {
     out.FitSamples.clear();
+    out.FitModels.clear();
     return false;
   }
   out.DataRefinedCount = 0;

@@ -60,6 +60,9 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   std::vector<std::uint32_t> samples(isopoints.FitSamples);
   std::vector<double> newCentres(points.size());
+  const bool withModels = isopoints.FitModels.size() == ModelSize * count;
+  std::vector<double> models(
+    withModels ? isopoints.FitModels : std::vector<double>(ModelSize * count));
   std::atomic<int> refusal(None);
   struct Scratch
   {
@@ -89,6 +92,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       std::size_t found =
         static_cast<std::size_t>(std::find(nearest, nearest + fit, NoSample) - nearest);
       Eigen::Vector3d p = start, gradient;
+      Eigen::Matrix3d lastModelHessian = Eigen::Matrix3d::Zero();
       bool reached = false;
       for (int step = 0; step < settings.Steps && !reached; ++step)
       {
@@ -101,9 +105,29 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
           reach = settings.MaximumMove;
         }
         s.Evaluator->UseGathered(centre, nearest, found);
+        Eigen::Matrix3d lastHessian = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d evaluatedAt = p;
+        // The first step from the last fit's model at the point (kept by the last run), where
+        // f - f_iso is now minus the change: the only fit is then the second step's, near the
+        // new level, as the refinement's second step is.
+        bool useModel = step == 0 && withModels;
         auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g,
                           Eigen::Matrix3d& hessian) {
-          return s.Evaluator->FitGathered(x, value, g, hessian);
+          evaluatedAt = x;
+          if (useModel)
+          {
+            useModel = false;
+            LoadModel(&models[ModelSize * i], g, hessian);
+            value = -settings.ValueChange;
+            lastHessian = hessian;
+            if (g.squaredNorm() > 0.0) // none where the refinement left the point
+            {
+              return true;
+            }
+          }
+          const bool ok = s.Evaluator->FitGathered(x, value, g, hessian);
+          lastHessian = hessian;
+          return ok;
         };
         const Eigen::Vector3d from = p;
         if (!SlideOntoDataLevel(
@@ -111,6 +135,10 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         {
           break;
         }
+        // The fit's gradient where the point ended, by its quadratic model (the last fit was
+        // made where the last iteration started).
+        gradient += lastHessian * (p - evaluatedAt);
+        lastModelHessian = lastHessian;
         reached = (p - from).norm() < reach * (1.0 - 1e-9); // else stopped at the reach
       }
       if (!reached)
@@ -130,6 +158,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         refusal = OneSide;
         break;
       }
+      StoreModel(gradient, lastModelHessian, &models[ModelSize * i]);
       const Eigen::Vector3d dataNormal = -gradient.normalized();
       for (int d = 0; d < 3; ++d)
       {
@@ -167,6 +196,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   isopoints.Normals.swap(normals);
   isopoints.FitSamples.swap(samples);
   centres.swap(newCentres);
+  isopoints.FitModels.swap(models);
   result.Accepted = true;
   return result;
 }

@@ -28,7 +28,8 @@ struct SlideSettings
   int Steps = 4;            // steps at most, each from the samples nearest to where it starts
   int Iterations = 3;       // the refinement's iterations and tolerance (IsopointSettings)
   double Tolerance = 0.0;
-  bool Quadratic = true; // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
+  bool Quadratic = true;    // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
+  double ValueChange = 0.0; // f_iso now less f_iso then: f - f_iso at the old points, negated
 };
 
 struct SlideResult

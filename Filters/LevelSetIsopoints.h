@@ -70,6 +70,10 @@ struct IsopointSet
   // the refinement must clear them.
   std::vector<std::uint32_t> FitSamples;
   std::size_t FitSize = 0;
+  // The data fit's quadratic model at each final point, 9 per point: its gradient, then its
+  // Hessian (xx, yy, zz, xy, xz, yz). A later slide onto another isovalue takes its first step
+  // from it (LevelSetIsoValueSlide.h). Cleared with FitSamples.
+  std::vector<double> FitModels;
 };
 
 /// Isopoints per block of the parallel loops, between two abort checks: a block of Newton

@@ -702,6 +702,7 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   isopoints.Points.swap(inCell.Points);
   isopoints.Normals.swap(inCell.Normals);
   isopoints.FitSamples.clear(); // dropped and moved points: their nearest samples are others
+  isopoints.FitModels.clear();
   if (this->PeriodicOutput == AROUND_SEED)
   {
     lsi::IntoCellAround(isopoints.Points, internal.Box, internal.SeedCenter);
@@ -1120,6 +1121,7 @@ void vtkLevelSetIsosurface::KeepOwnedIsopoints(
   isopoints.Points.swap(owned.Points);
   isopoints.Normals.swap(owned.Normals);
   isopoints.FitSamples.clear(); // no longer one row per point
+  isopoints.FitModels.clear();
 }
 
 void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,

@@ -164,6 +164,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   slide.Iterations = settings.DataIterations;
   slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
   slide.Quadratic = settings.DataFitOrder == 2;
+  slide.ValueChange = isoValue - last.IsoValue;
   lsi::IsopointSet isopoints = last.Isopoints;
   std::vector<double> centres = last.FitCentres;
   const lsi::SlideResult slid = lsi::SlideIsopoints(

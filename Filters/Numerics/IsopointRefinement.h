@@ -79,6 +79,23 @@ bool ProjectOntoZeroLevel(
   return false;
 }
 
+/// A quadratic model's gradient and Hessian at a point, packed in ModelSize doubles: the
+/// gradient, then the Hessian's xx, yy, zz, xy, xz, yz (IsopointSet::FitModels).
+constexpr std::size_t ModelSize = 9;
+
+inline void StoreModel(const Eigen::Vector3d& gradient, const Eigen::Matrix3d& hessian, double* out)
+{
+  const double packed[ModelSize] = { gradient[0], gradient[1], gradient[2], hessian(0, 0),
+    hessian(1, 1), hessian(2, 2), hessian(0, 1), hessian(0, 2), hessian(1, 2) };
+  std::copy(packed, packed + ModelSize, out);
+}
+
+inline void LoadModel(const double* in, Eigen::Vector3d& gradient, Eigen::Matrix3d& hessian)
+{
+  gradient << in[0], in[1], in[2];
+  hessian << in[3], in[6], in[7], in[6], in[4], in[8], in[7], in[8], in[5];
+}
+
 /// Moves p along the fixed direction `normal` (unit, pointing out of f > f_iso) to where the
 /// data's approximation `evaluate(p, value, gradient, hessian)` of f - f_iso vanishes, but never
 /// further than `maximumMove` from where it started: the level set already located the surface
