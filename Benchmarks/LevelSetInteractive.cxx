@@ -4,14 +4,16 @@
 // case, this filter against the grid route (SPH interpolation onto a grid, Flying Edges,
 // connectivity), side by side in one process on the same particles:
 //   - the first run of each, per stage, and its mean distance to the exact surface;
-//   - re-runs after an isovalue change (moving 2% and 20% of the inside samples out), a seed move
-//   (by half its
-//     radius, inside the same component) and a CurvatureWeight change; the grid route re-contours
-//     its kept grid (isovalue) or only re-connects (seed);
+//   - re-runs after an isovalue change (moving 2% and 20% of the inside samples out), a seed
+//     move (by half its radius, inside the same component) and a CurvatureWeight change; the
+//     grid route re-contours its kept grid (isovalue) or only re-connects (seed);
+//   - the same isovalue changes with QuickIsoValueChanges on (whether the surface slid, its
+//     mean distance to the exact new level and the full method's there);
 //   - the whole filter with 1 and with 2 threads;
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
-//     profile, per stage, of that first run and of a re-run after the small isovalue change.
+//     profile, per stage, of that first run and of re-runs after the small isovalue change (the
+//     quick one, then the full method's).
 // Every profile names the filter's stages (input, neighbours, initialisation, evolution,
 // isopoints, outputs, particle_outputs) and what the run's time leaves (unattributed).
 // Prints a table and writes everything as JSON (--json FILE). Asserts nothing: the targets are
@@ -191,10 +193,13 @@ struct ChildRun
   std::array<double, 8> Stages{};                  // of the first run
   double ReRunSeconds = 0.0;                       // after the small isovalue change
   std::array<double, 8> ReRunStages{};
+  double QuickSeconds = 0.0, Slid = 0.0; // the same change with QuickIsoValueChanges
+  std::array<double, 8> QuickStages{};
 };
 
-// Child mode: a first run at `samples`, the particle arrays freed of everything else, its peak
-// memory, then a re-run after the small isovalue change; prints them on one line.
+// Child mode: a first run at `samples` (with QuickIsoValueChanges on, so that it keeps what a
+// slide needs), the particle arrays freed of everything else, its peak memory, then the small
+// isovalue change, slid, and the method's re-run at that isovalue; prints them on one line.
 int FirstRunOnly(std::size_t samples, int threads)
 {
   OneComponentCase c;
@@ -206,11 +211,16 @@ int FirstRunOnly(std::size_t samples, int threads)
   vtkNew<vtkLevelSetIsosurface> filter;
   filter->SetInputData(particles);
   Configure(filter, c, threads);
+  filter->QuickIsoValueChangesOn();
   const double seconds = TimedUpdate(filter);
   const double bytes = static_cast<double>(lsi::PeakMemoryBytes());
   const vtkIdType points = filter->GetOutput(0)->GetNumberOfPoints();
   const std::array<double, 8> stages = Stages(filter, seconds);
   filter->SetIsoValue(IsoValuesAbove(particles, c.IsoValue, { 0.02 })[0]);
+  const double quick = TimedUpdate(filter);
+  const bool slid = filter->GetSlidLastSurface();
+  const std::array<double, 8> quickStages = Stages(filter, quick);
+  filter->QuickIsoValueChangesOff(); // the method at the new isovalue (neighbours kept)
   const double reRun = TimedUpdate(filter);
   const std::array<double, 8> reRunStages = Stages(filter, reRun);
   std::cout << seconds << " " << bytes << " " << points;
@@ -220,6 +230,11 @@ int FirstRunOnly(std::size_t samples, int threads)
   }
   std::cout << " " << reRun;
   for (double v : reRunStages)
+  {
+    std::cout << " " << v;
+  }
+  std::cout << " " << quick << " " << (slid ? 1 : 0);
+  for (double v : quickStages)
   {
     std::cout << " " << v;
   }
@@ -244,6 +259,11 @@ bool RunChild(const char* self, std::size_t samples, int threads, ChildRun& run)
   }
   read = read && std::fscanf(pipe, "%lf", &run.ReRunSeconds) == 1;
   for (double& v : run.ReRunStages)
+  {
+    read = read && std::fscanf(pipe, "%lf", &v) == 1;
+  }
+  read = read && std::fscanf(pipe, "%lf %lf", &run.QuickSeconds, &run.Slid) == 2;
+  for (double& v : run.QuickStages)
   {
     read = read && std::fscanf(pipe, "%lf", &v) == 1;
   }
@@ -398,6 +418,9 @@ int main(int argc, char* argv[])
       AddStages(report, prefix + "_first_run.", run.Stages);
       report.Add(prefix + "_isovalue_change_small_s", run.ReRunSeconds);
       AddStages(report, prefix + "_isovalue_change_small.", run.ReRunStages);
+      report.Add(prefix + "_quick_isovalue_change_small_s", run.QuickSeconds);
+      report.Add(prefix + "_quick_isovalue_change_small.slid", run.Slid);
+      AddStages(report, prefix + "_quick_isovalue_change_small.", run.QuickStages);
     }
   }
   const double smallSeconds = small.Seconds, largeSeconds = large.Seconds, largeBytes = large.Bytes;

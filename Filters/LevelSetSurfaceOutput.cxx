@@ -58,43 +58,75 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
   const std::uint32_t* nearest)
 {
   const std::size_t count = points.size() / 3;
-  vtkSMPThreadLocal<std::shared_ptr<MLSStencil>> stencils;
+  struct Scratch
+  {
+    std::shared_ptr<MLSStencil> Stencil; // for the gathers when no samples were kept
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> Weights;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
   return ParallelForInBlocks(
     count,
     [&](std::size_t begin, std::size_t end) {
-      std::shared_ptr<MLSStencil>& stencil = stencils.Local();
-      if (!stencil)
+      Scratch& s = scratch.Local();
+      if (!s.Stencil)
       {
-        stencil.reset(new MLSStencil(geometry, fitCount));
+        s.Stencil.reset(new MLSStencil(geometry, fitCount));
+        s.Ids.resize(fitCount);
+        s.Weights.resize(fitCount);
       }
       for (std::size_t i = begin; i < end; ++i)
       {
         const Eigen::Vector3d p(&points[3 * i]);
+        const std::uint32_t* ids = nearest ? nearest + fitCount * i : nullptr;
+        std::size_t found = 0;
         if (nearest)
         {
-          const std::uint32_t* row = nearest + fitCount * i;
-          stencil->UseGathered(
-            p, row, static_cast<std::size_t>(std::find(row, row + fitCount, NoSample) - row));
+          found = static_cast<std::size_t>(std::find(ids, ids + fitCount, NoSample) - ids);
         }
         else
         {
-          stencil->Gather(p);
+          s.Stencil->Gather(p);
+          found = s.Stencil->Found();
+          for (std::size_t j = 0; j < found; ++j)
+          {
+            s.Ids[j] = s.Stencil->Sample(j);
+          }
+          ids = s.Ids.data();
         }
-        // A singular fit (samples on a plane or line) takes the nearest sample's value.
-        const bool fitted = stencil->Build(p);
-        const std::size_t used = fitted ? stencil->Found() : 1;
+        // The fit's support reaches the farthest sample; a singular fit (samples on a plane or
+        // line) takes the nearest sample's value.
+        double farthest2 = 0.0, nearest2 = HUGE_VAL;
+        std::size_t closest = 0;
+        for (std::size_t j = 0; j < found; ++j)
+        {
+          const double d2 = (Eigen::Vector3d(geometry.Position(ids[j])) - p).squaredNorm();
+          farthest2 = std::max(farthest2, d2);
+          if (d2 < nearest2)
+          {
+            nearest2 = d2;
+            closest = j;
+          }
+        }
+        const bool fitted = LinearValueWeights(
+          p.data(), found, [&](std::size_t j) { return geometry.Position(ids[j]); },
+          std::sqrt(farthest2), s.Weights.data());
         for (std::size_t a = 0; a < sources.size(); ++a)
         {
           const int components = sources[a]->GetNumberOfComponents();
           for (int c = 0; c < components; ++c)
           {
             double value = 0.0;
-            for (std::size_t j = 0; j < used; ++j)
+            if (!fitted)
             {
-              const double w = fitted ? stencil->ValueWeight(j) : 1.0;
+              value = found ? sources[a]->GetComponent(geometry.Order[ids[closest]], c) : 0.0;
+            }
+            for (std::size_t j = 0; fitted && j < found; ++j)
+            {
+              const double w = s.Weights[j];
               if (w != 0.0)
               {
-                value += w * sources[a]->GetComponent(geometry.Order[stencil->Sample(j)], c);
+                value += w * sources[a]->GetComponent(geometry.Order[ids[j]], c);
               }
             }
             targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);

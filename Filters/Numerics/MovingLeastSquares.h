@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -92,6 +93,45 @@ bool BuildLinearStencil(
     {
       out.Value[j] = c[3];
     }
+  }
+  return true;
+}
+
+/// The value weights alone of BuildLinearStencil's fit (`weights`: count values), for
+/// interpolating fields at `centre`: the last row of the normal matrix's inverse applied to each
+/// sample, a quarter of the stencil's work. False (weights zero) when the fit is singular.
+template <typename PositionFn>
+bool LinearValueWeights(
+  const double centre[3], std::size_t count, PositionFn position, double h, double* weights)
+{
+  std::fill(weights, weights + count, 0.0);
+  if (!(h > 0.0) || !std::isfinite(h))
+  {
+    return false;
+  }
+  const double invH = 1.0 / h;
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double* x = position(j);
+    const Eigen::Vector4d q(
+      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    normal.noalias() += (w * w) * q * q.transpose();
+  }
+  const double scale = normal.trace() / 4.0;
+  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  {
+    return false;
+  }
+  const Eigen::Vector4d last = normal.inverse().row(3).transpose();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double* x = position(j);
+    const Eigen::Vector4d q(
+      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    weights[j] = (w * w) * last.dot(q);
   }
   return true;
 }
