@@ -254,24 +254,25 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   // Under MPI the other ranks' ghosts have slots of their own, after the particles.
   const Communicator& ranks = *in.Ranks;
   const vtkIdType sampleCount = static_cast<vtkIdType>(geometry.NumberOfSamples);
-  std::vector<vtkIdType> slot(in.OriginalIds.size());
   vtkSMPThreadLocal<char> foreign(0); // samples that are no particle here (MPI ghosts)
   vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
     char& any = foreign.Local();
-    for (vtkIdType i = begin; i < end; ++i)
+    for (vtkIdType i = begin; i < end && !any; ++i)
     {
-      slot[i] = in.OriginalIds[i];
-      any = static_cast<char>(any || slot[i] < 0);
+      any = static_cast<char>(in.OriginalIds[i] < 0);
     }
   });
   vtkIdType slots = n;
+  std::vector<vtkIdType> renumbered; // only with foreign samples: the particle ids are the slots
   if (std::any_of(foreign.begin(), foreign.end(), [](char f) { return f != 0; }))
   {
-    for (vtkIdType& s : slot)
+    renumbered = in.OriginalIds;
+    for (vtkIdType& s : renumbered)
     {
       s = s >= 0 ? s : slots++;
     }
   }
+  const std::vector<vtkIdType>& slot = renumbered.empty() ? in.OriginalIds : renumbered;
   // The components over the samples first, linked towards lower storage indices (neighbours
   // are near in memory there, where slots are in input order); with periodic images, each
   // sample is also linked to the first touching one of its slot. Serial: a parallel union-find

@@ -201,6 +201,78 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   return result;
 }
 
+SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
+  double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
+  IsopointSet& isopoints, const AbortCheck& aborted)
+{
+  SlideResult result;
+  const std::size_t count = isopoints.Points.size() / 3;
+  std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
+  std::atomic<int> refusal(None);
+  const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
+  struct Scratch
+  {
+    SPHCandidates Candidates;
+    std::vector<std::uint32_t> Ids;
+    std::vector<double> D2;
+    double LargestMove = 0.0;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+  auto slide = [&](std::size_t begin, std::size_t end) {
+    Scratch& s = scratch.Local();
+    s.Ids.resize(stride);
+    s.D2.resize(stride);
+    for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
+    {
+      Eigen::Vector3d p(&points[3 * i]);
+      const Eigen::Vector3d start = p, n(&normals[3 * i]);
+      const std::size_t near = geometry.Index->Nearest(p.data(), stride, s.Ids.data(), s.D2.data());
+      const double reach = settings.SPHMaximumMove * field.Support(s.Ids[0]);
+      field.Gather(p.data(), reach, s.Candidates);
+      Eigen::Vector3d normal;
+      if (!SolveOntoLevel(field, s.Candidates, isoValue, p, n, reach, 1e-9 * reach, normal))
+      {
+        refusal = TooFar;
+        break;
+      }
+      bool in = false, out = false;
+      for (std::size_t j = 0; j < near; ++j)
+      {
+        (inside[s.Ids[j]] ? in : out) = true;
+      }
+      if (!in || !out)
+      {
+        refusal = OneSide;
+        break;
+      }
+      s.LargestMove = std::max(s.LargestMove, (p - start).norm());
+      for (int d = 0; d < 3; ++d)
+      {
+        points[3 * i + d] = p[d];
+        normals[3 * i + d] = normal[d];
+      }
+    }
+  };
+  if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
+  {
+    result.Refusal = "aborted";
+    return result;
+  }
+  if (refusal != None)
+  {
+    result.Refusal = RefusalText(refusal);
+    return result;
+  }
+  for (const Scratch& s : scratch)
+  {
+    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
+  }
+  isopoints.Points.swap(points);
+  isopoints.Normals.swap(normals);
+  result.Accepted = true;
+  return result;
+}
+
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const std::vector<double>& points, double reach,
   std::size_t& changed)

@@ -2,18 +2,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The quick re-run after a small isovalue change (QuickIsoValueChanges; ours, not the paper's).
 // With the refinement on the data, the method's surface lies on the level {f = f_iso} of the
-// data's MLS fit: the level set decided which components and where each point starts, the data
-// placed it. After a small change of f_iso, each point of the last surface slides along its
-// normal onto the new level, by the same refinement from the same nearest samples, for a
-// fraction of the method's cost. The flood from the seeds, run again at the new isovalue,
-// vouches that the components are the same (FloodChangesNearPoints); each point vouches that it
-// still lies between the new inside and outside (SlideIsopoints). Any doubt: the long way.
+// data (their MLS fit, or the SPH field): the level set decided which components and where
+// each point starts, the data placed it. After a small change of f_iso, each point of the last
+// surface slides along its normal onto the new level by the same refinement, for a fraction of
+// the method's cost. The flood from the seeds, run again at the new isovalue, vouches that the
+// components are the same (FloodChangesNearPoints); each point vouches that it still lies
+// between the new inside and outside (SlideIsopoints). Any doubt: the long way.
 #ifndef LevelSetIsoValueSlide_h
 #define LevelSetIsoValueSlide_h
 
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
+#include "LevelSetSPHField.h"
 
 #include <cstddef>
 #include <string>
@@ -53,6 +54,15 @@ struct SlideResult
 SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inside, const SlideSettings& settings, IsopointSet& isopoints,
   std::vector<double>& centres, const AbortCheck& aborted);
+
+/// The same on the SPH field (the points the refinement solved onto its level): each point is
+/// solved along its normal onto the field's new level `isoValue` within SPHMaximumMove kernel
+/// supports of the sample nearest to it (RefineIsopointsOnSPHField's step), the normal becoming
+/// the field's. Refused as above when a point finds no level within that reach, or when the
+/// samples nearest to it are not on both sides of the new flood.
+SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
+  double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
+  IsopointSet& isopoints, const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
 /// within `reach` of one of `points` (3 doubles each): the flood then only moved with the

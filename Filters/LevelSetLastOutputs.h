@@ -11,6 +11,7 @@
 #define LevelSetLastOutputs_h
 
 #include "LevelSetIsopoints.h"
+#include "LevelSetSPHField.h"
 
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -18,6 +19,7 @@
 #include "vtkTable.h"
 #include "vtkType.h"
 
+#include <memory>
 #include <vector>
 
 namespace lsi
@@ -39,9 +41,10 @@ struct LastOutputs
   std::vector<double> DataOffsets;
   double Spacing = 0.0;
   // For the quick re-run after an isovalue change (with QuickCheck, QuickIsoValueChanges and
-  // the refinement on the MLS fit of the data): the level set phi after the evolution, in
-  // storage order, the surface's points with their nearest samples, the isopoint settings and
-  // the band's half width; how far the surface has slid since the method last ran in full.
+  // the refinement on the data): f at the samples, the level set phi after the evolution, in
+  // storage order, the surface's points with their fits' samples and models, the isopoint
+  // settings, the SPH field if the run used one, and the band's half width; how far the surface
+  // has slid since the method last ran in full.
   bool SlideReady = false;
   std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
   double IsoValue = 0.0;
@@ -49,6 +52,7 @@ struct LastOutputs
   IsopointSet Isopoints;
   std::vector<double> FitCentres; // where FitSamples were gathered (empty: at the points)
   IsopointSettings Settings;
+  std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
   double HalfWidth = 0.0;
   double Slid = 0.0;
 

@@ -17,18 +17,45 @@ namespace lsi
 {
 
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles)
+  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
+  vtkSmartPointer<vtkCellArray>& vertices)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   particles->SetPoints(input->GetPoints());
-  particles->SetVerts(VertexCells(n));
+  if (!vertices || vertices->GetNumberOfCells() != n)
+  {
+    vertices = VertexCells(n);
+  }
+  particles->SetVerts(vertices);
   particles->GetPointData()->PassData(input->GetPointData());
-  // The value at each id the method ran on (images, past the distinct points, left out).
-  const vtkIdType distinct =
-    mergedId.empty() ? n : 1 + *std::max_element(mergedId.begin(), mergedId.end());
-  std::vector<double> value(static_cast<std::size_t>(distinct), 0.0);
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+  vtkNew<vtkDoubleArray> levelSet;
+  levelSet->SetName("LevelSet");
+  levelSet->SetNumberOfValues(n);
+  double* out = levelSet->GetPointer(0);
+  const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
+  if (mergedId.empty())
+  {
+    // Each input point is one sample (its images, past the points, are left out): written
+    // straight into the array, in parallel (distinct ids), over zeros.
+    vtkSMPTools::For(
+      0, n, [&](vtkIdType begin, vtkIdType end) { std::fill(out + begin, out + end, 0.0); });
+    vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+        {
+          out[geometry.Order[i]] = phi[i];
+        }
+      }
+    });
+  }
+  else
+  {
+    // The value at each merged point the method ran on, then at each input point its merged
+    // point's.
+    const vtkIdType distinct = 1 + *std::max_element(mergedId.begin(), mergedId.end());
+    std::vector<double> value(static_cast<std::size_t>(distinct), 0.0);
+    vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
@@ -37,15 +64,13 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
         }
       }
     });
-  vtkNew<vtkDoubleArray> levelSet;
-  levelSet->SetName("LevelSet");
-  levelSet->SetNumberOfValues(n);
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      levelSet->SetValue(i, value[mergedId.empty() ? i : mergedId[i]]);
-    }
-  });
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        out[i] = value[mergedId[i]];
+      }
+    });
+  }
   particles->GetPointData()->AddArray(levelSet);
 }
 

@@ -7,6 +7,8 @@
 
 #include "LevelSetNeighborhoods.h"
 
+#include "vtkCellArray.h"
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 
 #include <vector>
@@ -19,9 +21,12 @@ namespace lsi
 
 /// `phi` is in the samples' storage order (geometry.Order maps it back to the ids the method
 /// ran on). `mergedId` maps each input point to the sample it was merged into (duplicates), or
-/// is empty; ghost images (ids past the input's) are left out.
+/// is empty; ghost images (ids past the input's) are left out. `vertices`: one vertex cell per
+/// input point, kept from an earlier run (they depend on the count alone); made anew when null
+/// or of another count.
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles);
+  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
+  vtkSmartPointer<vtkCellArray>& vertices);
 
 } // namespace lsi
 

@@ -372,10 +372,13 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
-  last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck && !field &&
-    isopointSettings.RefineOnData && isopoints.FitSize > 0;
+  // (On the SPH field: not where free-boundary points were added, which a slide cannot add.)
+  last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
+    isopointSettings.RefineOnData &&
+    (field ? isopoints.FreeBoundaryCount == 0 : isopoints.FitSize > 0);
   last.Values.clear();
   last.Phi.clear();
+  last.Field.reset();
   last.Isopoints = lsi::IsopointSet();
   last.FitCentres.clear();
   if (last.SlideReady)
@@ -383,8 +386,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Values.resize(dataOffsets.size());
     for (std::size_t i = 0; i < dataOffsets.size(); ++i)
     {
-      last.Values[i] = values[geometry->Order[i]];
+      // On the SPH field, the field at the samples (to rounding): that is what the flood uses.
+      last.Values[i] = field ? dataOffsets[i] + this->IsoValue : values[geometry->Order[i]];
     }
+    last.Field = std::move(field);
     last.IsoValue = this->IsoValue;
     last.Phi = std::move(phi);
     last.Isopoints = std::move(isopoints);
@@ -402,7 +407,8 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   vtkPolyData* particleOutput, vtkTable* enclosed)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
-  lsi::MakeParticleOutput(original, geometry, phi, mergedId, particleOutput);
+  lsi::MakeParticleOutput(
+    original, geometry, phi, mergedId, particleOutput, this->Internal->ParticleVertices);
   if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
   {
     for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),

@@ -12,6 +12,9 @@
 #include "LevelSetNeighborCache.h"
 #include "LevelSetPeriodicImages.h"
 
+#include "vtkCellArray.h"
+#include "vtkSmartPointer.h"
+
 #include <vector>
 
 namespace lsi
@@ -34,9 +37,10 @@ struct vtkLevelSetIsosurface::Internals
   lsi::PeriodicBox Box;
   vtkIdType OriginalCount = 0;
   std::vector<vtkIdType> ImageOf;
-  double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
-  lsi::Distribution* Ranks = nullptr;       // this execution's MPI ranks
-  lsi::LastOutputs Last;                    // for the re-runs that reuse the last run
+  double SeedCenter[3] = { 0.0, 0.0, 0.0 };       // the main seed's centre, for AROUND_SEED
+  lsi::Distribution* Ranks = nullptr;             // this execution's MPI ranks
+  lsi::LastOutputs Last;                          // for the re-runs that reuse the last run
+  vtkSmartPointer<vtkCellArray> ParticleVertices; // the particle output's, for any run's reuse
 };
 
 #endif

@@ -167,8 +167,11 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   slide.ValueChange = isoValue - last.IsoValue;
   lsi::IsopointSet isopoints = last.Isopoints;
   std::vector<double> centres = last.FitCentres;
-  const lsi::SlideResult slid = lsi::SlideIsopoints(
-    *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  const lsi::SlideResult slid = last.Field
+    ? lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings, isopoints,
+        this->Stage(lsi::IsopointStage))
+    : lsi::SlideIsopoints(
+        *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
   std::size_t changed = 0;
   // A sample that changed sides lies between the old and the new level: within the largest
   // move of the level and the points' spacing (two cells) of a slid point.
@@ -188,7 +191,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   lsi::ShiftLevelSet(
     *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
   this->IsopointSeconds = lsi::SecondsSince(start);
-  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, nullptr, surfaceOutput))
+  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, last.Field.get(), surfaceOutput))
   {
     return false;
   }
