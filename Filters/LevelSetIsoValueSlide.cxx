@@ -43,6 +43,30 @@ const char* RefusalText(int refusal)
       return "";
   }
 }
+// Runs `slide` over the points in parallel blocks: refused with the first reason a point met,
+// or aborted, or accepted with the largest move over the threads' scratch.
+template <typename Scratch, typename Body>
+SlideResult RunSlides(std::size_t count, Body&& slide, vtkSMPThreadLocal<Scratch>& scratch,
+  const std::atomic<int>& refusal, const AbortCheck& aborted)
+{
+  SlideResult result;
+  if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
+  {
+    result.Refusal = "aborted";
+    return result;
+  }
+  if (refusal != None)
+  {
+    result.Refusal = RefusalText(refusal);
+    return result;
+  }
+  for (const Scratch& s : scratch)
+  {
+    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
+  }
+  result.Accepted = true;
+  return result;
+}
 } // namespace
 
 SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
@@ -178,26 +202,15 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       }
     }
   };
-  if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
+  result = RunSlides(count, slide, scratch, refusal, aborted);
+  if (result.Accepted)
   {
-    result.Refusal = "aborted";
-    return result;
+    isopoints.Points.swap(points);
+    isopoints.Normals.swap(normals);
+    isopoints.FitSamples.swap(samples);
+    centres.swap(newCentres);
+    isopoints.FitModels.swap(models);
   }
-  if (refusal != None)
-  {
-    result.Refusal = RefusalText(refusal);
-    return result;
-  }
-  for (const Scratch& s : scratch)
-  {
-    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
-  }
-  isopoints.Points.swap(points);
-  isopoints.Normals.swap(normals);
-  isopoints.FitSamples.swap(samples);
-  centres.swap(newCentres);
-  isopoints.FitModels.swap(models);
-  result.Accepted = true;
   return result;
 }
 
@@ -205,7 +218,6 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
   IsopointSet& isopoints, const AbortCheck& aborted)
 {
-  SlideResult result;
   const std::size_t count = isopoints.Points.size() / 3;
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   std::atomic<int> refusal(None);
@@ -253,23 +265,12 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       }
     }
   };
-  if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
+  const SlideResult result = RunSlides(count, slide, scratch, refusal, aborted);
+  if (result.Accepted)
   {
-    result.Refusal = "aborted";
-    return result;
+    isopoints.Points.swap(points);
+    isopoints.Normals.swap(normals);
   }
-  if (refusal != None)
-  {
-    result.Refusal = RefusalText(refusal);
-    return result;
-  }
-  for (const Scratch& s : scratch)
-  {
-    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
-  }
-  isopoints.Points.swap(points);
-  isopoints.Normals.swap(normals);
-  result.Accepted = true;
   return result;
 }
 

@@ -39,6 +39,32 @@ struct LinearStencilView
 /// centred and scaled by 1/h before fitting, for conditioning. Returns false when the fit is
 /// singular (fewer than four weighted points in general position: duplicate, collinear or
 /// coplanar neighbourhoods); the stencil is then left zero.
+/// A sample's position relative to `centre` in units of h, with the constant term: the linear
+/// fit's basis (q, 1).
+inline Eigen::Vector4d ScaledLinearBasis(const double* x, const double centre[3], double invH)
+{
+  return Eigen::Vector4d(
+    (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+}
+
+/// The normal matrix of the weighted linear fit at `centre` over `count` samples, in units of
+/// h; false when singular (the weighted samples do not span 3D: the determinant relative to the
+/// trace scale is a cheap, scale-free test, the basis being O(1)).
+template <typename PositionFn>
+bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn position, double invH,
+  Eigen::Matrix4d& normal)
+{
+  normal.setZero();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const Eigen::Vector4d q = ScaledLinearBasis(position(j), centre, invH);
+    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
+    normal.noalias() += (w * w) * q * q.transpose();
+  }
+  const double scale = normal.trace() / 4.0;
+  return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * std::pow(scale, 4);
+}
+
 template <typename PositionFn>
 bool BuildLinearStencil(
   const double centre[3], std::size_t count, PositionFn position, double h, LinearStencilView out)
@@ -61,28 +87,15 @@ bool BuildLinearStencil(
     return false;
   }
   const double invH = 1.0 / h;
-  Matrix4 normal = Matrix4::Zero();
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double* x = position(j);
-    const Vector4 q(
-      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    normal.noalias() += (w * w) * q * q.transpose();
-  }
-  // Singular when the weighted points do not span 3D. The determinant relative to the trace
-  // scale is a cheap, scale-free test (q is O(1) after scaling by 1/h).
-  const double scale = normal.trace() / 4.0;
-  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  Matrix4 normal;
+  if (!LinearNormalMatrix(centre, count, position, invH, normal))
   {
     return false;
   }
   const Matrix4 inverse = normal.inverse();
   for (std::size_t j = 0; j < count; ++j)
   {
-    const double* x = position(j);
-    const Vector4 q(
-      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+    const Vector4 q = ScaledLinearBasis(position(j), centre, invH);
     const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
     const Vector4 c = inverse * ((w * w) * q);
     // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
@@ -110,26 +123,15 @@ bool LinearValueWeights(
     return false;
   }
   const double invH = 1.0 / h;
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double* x = position(j);
-    const Eigen::Vector4d q(
-      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    normal.noalias() += (w * w) * q * q.transpose();
-  }
-  const double scale = normal.trace() / 4.0;
-  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  Eigen::Matrix4d normal;
+  if (!LinearNormalMatrix(centre, count, position, invH, normal))
   {
     return false;
   }
   const Eigen::Vector4d last = normal.inverse().row(3).transpose();
   for (std::size_t j = 0; j < count; ++j)
   {
-    const double* x = position(j);
-    const Eigen::Vector4d q(
-      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
+    const Eigen::Vector4d q = ScaledLinearBasis(position(j), centre, invH);
     const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
     weights[j] = (w * w) * last.dot(q);
   }
