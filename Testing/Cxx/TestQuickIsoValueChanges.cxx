@@ -30,14 +30,13 @@ namespace
 {
 using lsi::test::Check;
 
-// f = radius - |x - centre| for the nearest of `centres` (balls on the x axis at y = z = 30),
-// at `count` random points of [0, length] x [0, 60]^2: a spacing of about 1 for 60 points per
-// 60 length units.
-vtkSmartPointer<vtkPolyData> Balls(
-  vtkIdType count, double length, const std::vector<double>& centres, double radius)
+// `count` random points of [0, length] x [0, 60]^2 (a spacing of about 1 for 60 points per 60
+// length units) with f = field(x).
+vtkSmartPointer<vtkPolyData> Sampled(
+  vtkIdType count, double length, int seed, const std::function<double(const double*)>& field)
 {
   vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(7);
+  random->SetSeed(seed);
   vtkNew<vtkPoints> points;
   vtkNew<vtkDoubleArray> f;
   f->SetName("f");
@@ -46,20 +45,18 @@ vtkSmartPointer<vtkPolyData> Balls(
     const double x[3] = { random->GetNextRangeValue(0.0, length),
       random->GetNextRangeValue(0.0, 60.0), random->GetNextRangeValue(0.0, 60.0) };
     points->InsertNextPoint(x);
-    double value = -HUGE_VAL;
-    for (double c : centres)
-    {
-      value = std::max(value,
-        radius -
-          std::sqrt(
-            (x[0] - c) * (x[0] - c) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30)));
-    }
-    f->InsertNextValue(value);
+    f->InsertNextValue(field(x));
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
   data->GetPointData()->AddArray(f);
   return data;
+}
+
+// The distance of x from (c, 30, 30).
+double FromAxisPoint(const double* x, double c)
+{
+  return std::sqrt((x[0] - c) * (x[0] - c) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
 }
 
 void Configure(vtkLevelSetIsosurface* filter, vtkPolyData* input, double isoValue)
@@ -97,7 +94,8 @@ double EnclosedVolume(vtkLevelSetIsosurface* filter)
 // exactly its outputs; with the property off nothing slides.
 void TestSlidesOnOneBall()
 {
-  vtkSmartPointer<vtkPolyData> data = Balls(216000, 60.0, { 30.0 }, 20.0);
+  vtkSmartPointer<vtkPolyData> data =
+    Sampled(216000, 60.0, 7, [](const double* x) { return 20.0 - FromAxisPoint(x, 30.0); });
   auto sphereDistance = [](double radius) {
     return [radius](const double* x) {
       return std::sqrt(
@@ -226,25 +224,12 @@ void TestSlidesOnOneBall()
 // them: points on the second ball would lie on a component no seed reaches; the method runs.
 void TestComponentsJoinedOrLost()
 {
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(3);
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkDoubleArray> f;
-  f->SetName("f");
-  for (vtkIdType i = 0; i < 270000; ++i)
-  {
-    const double x[3] = { random->GetNextRangeValue(0.0, 75.0),
-      random->GetNextRangeValue(0.0, 60.0), random->GetNextRangeValue(0.0, 60.0) };
-    points->InsertNextPoint(x);
+  vtkSmartPointer<vtkPolyData> data = Sampled(270000, 75.0, 3, [](const double* x) {
     const double axis = std::sqrt((x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
-    auto ball = [&](double c) { return 10.0 - std::sqrt((x[0] - c) * (x[0] - c) + axis * axis); };
     const double tube =
       x[0] > 30.0 && x[0] < 54.0 ? -0.2 - 5.0 * std::max(0.0, axis - 2.0) : -HUGE_VAL;
-    f->InsertNextValue(std::max({ ball(30.0), ball(54.0), tube }));
-  }
-  vtkNew<vtkPolyData> data;
-  data->SetPoints(points);
-  data->GetPointData()->AddArray(f);
+    return std::max({ 10.0 - FromAxisPoint(x, 30.0), 10.0 - FromAxisPoint(x, 54.0), tube });
+  });
   vtkNew<vtkLevelSetIsosurface> quick;
   Configure(quick, data, 0.0);
   quick->QuickIsoValueChangesOn();
@@ -277,23 +262,10 @@ void TestComponentsJoinedOrLost()
 // 0.35, so only the flood's check sees the new inner surface: the method runs and finds it.
 void TestCavityOpening()
 {
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(9);
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkDoubleArray> f;
-  f->SetName("f");
-  for (vtkIdType i = 0; i < 216000; ++i)
-  {
-    const double x[3] = { random->GetNextRangeValue(0.0, 60.0),
-      random->GetNextRangeValue(0.0, 60.0), random->GetNextRangeValue(0.0, 60.0) };
-    points->InsertNextPoint(x);
-    const double r =
-      std::sqrt((x[0] - 30) * (x[0] - 30) + (x[1] - 30) * (x[1] - 30) + (x[2] - 30) * (x[2] - 30));
-    f->InsertNextValue(r < 3.0 ? 0.2 : 10.0 - r);
-  }
-  vtkNew<vtkPolyData> data;
-  data->SetPoints(points);
-  data->GetPointData()->AddArray(f);
+  vtkSmartPointer<vtkPolyData> data = Sampled(216000, 60.0, 9, [](const double* x) {
+    const double r = FromAxisPoint(x, 30.0);
+    return r < 3.0 ? 0.2 : 10.0 - r;
+  });
   auto inner = [](vtkPolyData* p) {
     int count = 0;
     for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
