@@ -13,23 +13,66 @@
 #include "LevelSetIsopoints.h"
 #include "LevelSetSPHField.h"
 
+#include "vtkAbstractArray.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkType.h"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
 namespace lsi
 {
 
+/// What the method reads of an input, for telling whether it changed since the last run: the
+/// points, every point and field array (their own modification times: ParaView touches the
+/// input's attribute containers on every update without changing any array), how many there
+/// are, and which array the scalars come from.
+struct InputStamp
+{
+  const vtkPoints* Points = nullptr;
+  const vtkDataArray* Scalars = nullptr;
+  vtkMTimeType Time = 0;
+  int Arrays = -1;
+
+  static InputStamp Of(vtkPointSet* input, vtkDataArray* scalars)
+  {
+    InputStamp stamp;
+    stamp.Points = input->GetPoints();
+    stamp.Scalars = scalars;
+    stamp.Time = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
+    stamp.Arrays = 0;
+    for (vtkFieldData* arrays :
+      { static_cast<vtkFieldData*>(input->GetPointData()), input->GetFieldData() })
+    {
+      for (int a = 0; arrays && a < arrays->GetNumberOfArrays(); ++a)
+      {
+        vtkAbstractArray* array = arrays->GetAbstractArray(a);
+        stamp.Time = std::max(stamp.Time, array ? array->GetMTime() : stamp.Time);
+        ++stamp.Arrays;
+      }
+    }
+    return stamp;
+  }
+  bool operator==(const InputStamp& other) const
+  {
+    return this->Points == other.Points && this->Scalars == other.Scalars &&
+      this->Time == other.Time && this->Arrays == other.Arrays;
+  }
+};
+
 struct LastOutputs
 {
   bool Valid = false;
   const vtkPointSet* Input = nullptr; // identity only, never dereferenced
-  vtkMTimeType InputTime = 0;
+  InputStamp Stamp;
   vtkSmartPointer<vtkPolyData> Surface, Particles;
   vtkSmartPointer<vtkTable> Convergence, Enclosed;
   int Iterations = 0;

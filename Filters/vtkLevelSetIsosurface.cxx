@@ -368,7 +368,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Input = requested;
-  last.InputTime = requested->GetMTime();
+  last.Stamp = lsi::InputStamp::Of(requested, this->ScalarsOf(requested));
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).

@@ -73,6 +73,7 @@
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
+class vtkDataArray;
 class vtkMultiProcessController;
 class vtkPoints;
 class vtkPointSet;
@@ -551,6 +552,8 @@ private:
   // the method.
   bool SlideAfterIsoValueChange(vtkPointSet* input, vtkPolyData* surfaceOutput,
     vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
+  // The array the scalars come from (SetInputArrayToProcess(0, ...)), or null.
+  vtkDataArray* ScalarsOf(vtkPointSet* input);
   // The geometry the last run searched, if still cached and of this input (no search); else
   // null.
   const lsi::Neighborhoods* LastGeometry(vtkPointSet* input);

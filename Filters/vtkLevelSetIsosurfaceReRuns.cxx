@@ -13,6 +13,7 @@
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetTiming.h"
 
+#include "vtkDataArray.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
@@ -52,11 +53,17 @@ void vtkLevelSetIsosurface::SetIsoValue(double value)
   this->IsoValueOnlyTime = onlyIsoValue ? this->GetMTime() : 0;
 }
 
+vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
+{
+  int association = -1;
+  return this->GetInputArrayToProcess(0, input, association);
+}
+
 const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)
 {
   const lsi::LastOutputs& last = this->Internal->Last;
   if (!last.Valid || !last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
-    input->GetMTime() != last.InputTime || !input->GetPoints())
+    !input->GetPoints() || !(lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp))
   {
     return nullptr;
   }
