@@ -11,6 +11,7 @@
 #define LevelSetLastOutputs_h
 
 #include "LevelSetIsopoints.h"
+#include "LevelSetNeighborCache.h"
 #include "LevelSetSPHField.h"
 
 #include "vtkAbstractArray.h"
@@ -33,20 +34,23 @@ namespace lsi
 
 /// What the method reads of an input, for telling whether it changed since the last run: the
 /// points, every point and field array (their own modification times: ParaView touches the
-/// input's attribute containers on every update without changing any array), how many there
-/// are, and which array the scalars come from.
+/// input and its attribute containers on every update without changing any array), how many
+/// there are, which array the scalars come from, and a fingerprint of the scalars' values (so
+/// that values changed in place, with only the data set marked modified, are seen too).
 struct InputStamp
 {
   const vtkPoints* Points = nullptr;
   const vtkDataArray* Scalars = nullptr;
   vtkMTimeType Time = 0;
   int Arrays = -1;
+  std::uint64_t ScalarValues = 0;
 
   static InputStamp Of(vtkPointSet* input, vtkDataArray* scalars)
   {
     InputStamp stamp;
     stamp.Points = input->GetPoints();
     stamp.Scalars = scalars;
+    stamp.ScalarValues = scalars ? ValueFingerprint(scalars) : 0;
     stamp.Time = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
     stamp.Arrays = 0;
     for (vtkFieldData* arrays :
@@ -64,7 +68,8 @@ struct InputStamp
   bool operator==(const InputStamp& other) const
   {
     return this->Points == other.Points && this->Scalars == other.Scalars &&
-      this->Time == other.Time && this->Arrays == other.Arrays;
+      this->Time == other.Time && this->Arrays == other.Arrays &&
+      this->ScalarValues == other.ScalarValues;
   }
 };
 

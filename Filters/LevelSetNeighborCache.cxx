@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetNeighborCache.h"
 
+#include "vtkDataArray.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
 
@@ -52,6 +53,50 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points)
       }
     });
   std::uint64_t h = Mix(0, static_cast<std::uint64_t>(n));
+  for (std::uint64_t b : blocks)
+  {
+    h = Mix(h, b);
+  }
+  return h;
+}
+
+std::uint64_t ValueFingerprint(vtkDataArray* array)
+{
+  // As CoordinateFingerprint: fixed blocks in parallel, combined in order. Plain memory is read
+  // as it lies (the value's bytes), other layouts through the array's interface.
+  const vtkIdType n = array->GetNumberOfValues();
+  const int components = std::max(1, array->GetNumberOfComponents());
+  const int size = array->GetDataTypeSize();
+  const unsigned char* raw = array->HasStandardMemoryLayout() && size <= 8
+    ? static_cast<const unsigned char*>(array->GetVoidPointer(0))
+    : nullptr;
+  constexpr vtkIdType Block = 65536;
+  std::vector<std::uint64_t> blocks(static_cast<std::size_t>((n + Block - 1) / Block));
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType b = first; b < last; ++b)
+      {
+        std::uint64_t h = 0;
+        for (vtkIdType i = b * Block; i < std::min(n, (b + 1) * Block); ++i)
+        {
+          std::uint64_t bits = 0;
+          if (raw)
+          {
+            std::memcpy(&bits, raw + static_cast<std::size_t>(i) * size, size);
+          }
+          else
+          {
+            const double value =
+              array->GetComponent(i / components, static_cast<int>(i % components));
+            std::memcpy(&bits, &value, sizeof bits);
+          }
+          h = Mix(h, bits);
+        }
+        blocks[b] = h;
+      }
+    });
+  std::uint64_t h =
+    Mix(static_cast<std::uint64_t>(array->GetDataType()), static_cast<std::uint64_t>(n));
   for (std::uint64_t b : blocks)
   {
     h = Mix(h, b);

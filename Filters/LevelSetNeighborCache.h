@@ -15,6 +15,7 @@
 #include <list>
 #include <memory>
 
+class vtkDataArray;
 class vtkPoints;
 
 namespace lsi
@@ -22,6 +23,10 @@ namespace lsi
 
 /// A 64-bit hash of the point coordinates (bit patterns, in order).
 std::uint64_t CoordinateFingerprint(vtkPoints* points);
+
+/// The same of an array's values (all components, bit patterns, in order), with its type and
+/// size.
+std::uint64_t ValueFingerprint(vtkDataArray* array);
 
 class NeighborCache
 {

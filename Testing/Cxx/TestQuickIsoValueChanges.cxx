@@ -196,6 +196,18 @@ void TestSlidesOnOneBall()
   quick->Update();
   Check(quick->GetReusedLastOutputs(), "a seed move after a slide reuses its outputs");
 
+  // Values changed in place, with only the data set marked modified: not the last run's input.
+  vtkDataArray* f = data->GetPointData()->GetArray("f");
+  for (vtkIdType i = 0; i < f->GetNumberOfTuples(); ++i)
+  {
+    f->SetTuple1(i, f->GetTuple1(i) + 0.5);
+  }
+  data->Modified();
+  quick->SetIsoValue(3.4); // the level of the run before, were the values unchanged
+  quick->Update();
+  Check(!quick->GetSlidLastSurface() && !quick->GetReusedLastOutputs(),
+    "after values changed in place, an isovalue change runs the method");
+
   quick->QuickIsoValueChangesOff();
   quick->Update();
   quick->SetIsoValue(2.8);
