@@ -25,34 +25,27 @@ std::uint64_t Mix(std::uint64_t h, std::uint64_t v)
   h *= 0x94d049bb133111ebull;
   return h ^ (h >> 31);
 }
-} // namespace
 
-std::uint64_t CoordinateFingerprint(vtkPoints* points)
+// Items 0..count-1 hashed in fixed blocks in parallel (mixIn(i, h) mixes item i's bit patterns
+// into h), the blocks then combined in order after `seed`: the same on any thread count.
+template <typename MixIn>
+std::uint64_t BlockHash(vtkIdType count, std::uint64_t seed, MixIn&& mixIn)
 {
-  // Fixed blocks hashed in parallel, then combined in order: the same on any thread count.
-  const vtkIdType n = points->GetNumberOfPoints();
   constexpr vtkIdType Block = 65536;
-  std::vector<std::uint64_t> blocks(static_cast<std::size_t>((n + Block - 1) / Block));
+  std::vector<std::uint64_t> blocks(static_cast<std::size_t>((count + Block - 1) / Block));
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
       for (vtkIdType b = first; b < last; ++b)
       {
         std::uint64_t h = 0;
-        for (vtkIdType i = b * Block; i < std::min(n, (b + 1) * Block); ++i)
+        for (vtkIdType i = b * Block; i < std::min(count, (b + 1) * Block); ++i)
         {
-          double x[3];
-          points->GetPoint(i, x);
-          for (double c : x)
-          {
-            std::uint64_t bits;
-            std::memcpy(&bits, &c, sizeof bits);
-            h = Mix(h, bits);
-          }
+          h = mixIn(i, h);
         }
         blocks[b] = h;
       }
     });
-  std::uint64_t h = Mix(0, static_cast<std::uint64_t>(n));
+  std::uint64_t h = seed;
   for (std::uint64_t b : blocks)
   {
     h = Mix(h, b);
@@ -60,48 +53,51 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points)
   return h;
 }
 
+std::uint64_t DoubleBits(double value)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
+}
+} // namespace
+
+std::uint64_t CoordinateFingerprint(vtkPoints* points)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  return BlockHash(n, Mix(0, static_cast<std::uint64_t>(n)), [&](vtkIdType i, std::uint64_t h) {
+    double x[3];
+    points->GetPoint(i, x);
+    for (double c : x)
+    {
+      h = Mix(h, DoubleBits(c));
+    }
+    return h;
+  });
+}
+
 std::uint64_t ValueFingerprint(vtkDataArray* array)
 {
-  // As CoordinateFingerprint: fixed blocks in parallel, combined in order. Plain memory is read
-  // as it lies (the value's bytes), other layouts through the array's interface.
+  // Plain memory is read as it lies (the value's bytes), other layouts through the interface.
   const vtkIdType n = array->GetNumberOfValues();
   const int components = std::max(1, array->GetNumberOfComponents());
   const int size = array->GetDataTypeSize();
   const unsigned char* raw = array->HasStandardMemoryLayout() && size <= 8
     ? static_cast<const unsigned char*>(array->GetVoidPointer(0))
     : nullptr;
-  constexpr vtkIdType Block = 65536;
-  std::vector<std::uint64_t> blocks(static_cast<std::size_t>((n + Block - 1) / Block));
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType b = first; b < last; ++b)
-      {
-        std::uint64_t h = 0;
-        for (vtkIdType i = b * Block; i < std::min(n, (b + 1) * Block); ++i)
-        {
-          std::uint64_t bits = 0;
-          if (raw)
-          {
-            std::memcpy(&bits, raw + static_cast<std::size_t>(i) * size, size);
-          }
-          else
-          {
-            const double value =
-              array->GetComponent(i / components, static_cast<int>(i % components));
-            std::memcpy(&bits, &value, sizeof bits);
-          }
-          h = Mix(h, bits);
-        }
-        blocks[b] = h;
-      }
-    });
-  std::uint64_t h =
+  const std::uint64_t seed =
     Mix(static_cast<std::uint64_t>(array->GetDataType()), static_cast<std::uint64_t>(n));
-  for (std::uint64_t b : blocks)
-  {
-    h = Mix(h, b);
-  }
-  return h;
+  return BlockHash(n, seed, [&](vtkIdType i, std::uint64_t h) {
+    std::uint64_t bits = 0;
+    if (raw)
+    {
+      std::memcpy(&bits, raw + static_cast<std::size_t>(i) * size, size);
+    }
+    else
+    {
+      bits = DoubleBits(array->GetComponent(i / components, static_cast<int>(i % components)));
+    }
+    return Mix(h, bits);
+  });
 }
 
 const Neighborhoods* NeighborCache::Get(
