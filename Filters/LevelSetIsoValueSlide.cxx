@@ -43,6 +43,14 @@ const char* RefusalText(int refusal)
       return "";
   }
 }
+// What each thread of a slide keeps: a nearest-sample search's results, and the largest move.
+struct SlideScratch
+{
+  std::vector<std::uint32_t> Ids;
+  std::vector<double> D2;
+  double LargestMove = 0.0;
+};
+
 // Runs `slide` over the points in parallel blocks: refused with the first reason a point met,
 // or aborted, or accepted with the largest move over the threads' scratch.
 template <typename Scratch, typename Body>
@@ -88,12 +96,9 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   std::vector<double> models(
     withModels ? isopoints.FitModels : std::vector<double>(ModelSize * count));
   std::atomic<int> refusal(None);
-  struct Scratch
+  struct Scratch : SlideScratch
   {
     std::shared_ptr<MLSEvaluator> Evaluator;
-    std::vector<std::uint32_t> Ids;
-    std::vector<double> D2;
-    double LargestMove = 0.0;
   };
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {
@@ -117,8 +122,8 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         static_cast<std::size_t>(std::find(nearest, nearest + fit, NoSample) - nearest);
       Eigen::Vector3d p = start, gradient;
       Eigen::Matrix3d lastModelHessian = Eigen::Matrix3d::Zero();
-      bool reached = false;
-      for (int step = 0; step < settings.Steps && !reached; ++step)
+      bool reached = false, crossed = true;
+      for (int step = 0; step < settings.Steps && !reached && crossed; ++step)
       {
         double reach = settings.MaximumMove - (p - centre).norm();
         if (step > 0 || reach < 0.25 * settings.MaximumMove)
@@ -154,8 +159,9 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
           return ok;
         };
         const Eigen::Vector3d from = p;
-        if (!SlideOntoDataLevel(
-              p, n, evaluate, reach, settings.Iterations, gradient, settings.Tolerance))
+        crossed = SlideOntoDataLevel(
+          p, n, evaluate, reach, settings.Iterations, gradient, settings.Tolerance);
+        if (!crossed)
         {
           break;
         }
@@ -167,13 +173,12 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       }
       if (!reached)
       {
-        refusal = (p - start).norm() > 0.0 ? TooFar : NoCrossing;
+        refusal = crossed ? TooFar : NoCrossing;
         break;
       }
       s.LargestMove = std::max(s.LargestMove, (p - start).norm());
-      const std::size_t now = found;
       bool in = false, out = false;
-      for (std::size_t j = 0; j < now; ++j)
+      for (std::size_t j = 0; j < found; ++j)
       {
         (inside[nearest[j]] ? in : out) = true;
       }
@@ -193,7 +198,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       {
         for (std::size_t j = 0; j < fit; ++j)
         {
-          samples[fit * i + j] = j < now ? nearest[j] : NoSample;
+          samples[fit * i + j] = j < found ? nearest[j] : NoSample;
         }
       }
       for (int d = 0; d < 3; ++d)
@@ -222,12 +227,9 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  struct Scratch
+  struct Scratch : SlideScratch
   {
     SPHCandidates Candidates;
-    std::vector<std::uint32_t> Ids;
-    std::vector<double> D2;
-    double LargestMove = 0.0;
   };
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {

@@ -368,7 +368,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Input = requested;
-  last.Stamp = lsi::InputStamp::Of(requested, this->ScalarsOf(requested));
+  // (Only what a re-run can reuse needs the stamp: its scalars' fingerprint is a pass over them.)
+  last.Stamp = last.QuickCheck ? lsi::InputStamp::Of(requested, this->ScalarsOf(requested))
+                               : lsi::InputStamp();
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
