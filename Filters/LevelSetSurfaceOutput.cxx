@@ -52,17 +52,57 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
     aborted);
 }
 
+namespace
+{
+// A source array's values for reading in a tight loop: straight from memory when they are
+// doubles or floats (most arrays), else through the virtual GetComponent.
+struct ValuesOf
+{
+  vtkDataArray* Array = nullptr;
+  const double* Doubles = nullptr;
+  const float* Floats = nullptr;
+  int Components = 1;
+
+  explicit ValuesOf(vtkDataArray* array)
+    : Array(array)
+    , Components(array->GetNumberOfComponents())
+  {
+    if (auto* d = vtkDoubleArray::FastDownCast(array))
+    {
+      this->Doubles = d->GetPointer(0);
+    }
+    else if (auto* f = vtkFloatArray::FastDownCast(array))
+    {
+      this->Floats = f->GetPointer(0);
+    }
+  }
+  double operator()(vtkIdType tuple, int c) const
+  {
+    const vtkIdType k = tuple * this->Components + c;
+    return this->Doubles ? this->Doubles[k]
+      : this->Floats     ? this->Floats[k]
+                         : this->Array->GetComponent(tuple, c);
+  }
+};
+} // namespace
+
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
   const std::uint32_t* nearest)
 {
   const std::size_t count = points.size() / 3;
+  std::vector<ValuesOf> values;
+  for (vtkDataArray* source : sources)
+  {
+    values.emplace_back(source);
+  }
   struct Scratch
   {
     std::shared_ptr<MLSStencil> Stencil; // for the gathers when no samples were kept
     std::vector<std::uint32_t> Ids;
     std::vector<double> Weights;
+    std::vector<double> Offsets; // the samples' positions relative to the point
   };
   vtkSMPThreadLocal<Scratch> scratch;
   return ParallelForInBlocks(
@@ -74,6 +114,7 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
         s.Stencil.reset(new MLSStencil(geometry, fitCount));
         s.Ids.resize(fitCount);
         s.Weights.resize(fitCount);
+        s.Offsets.resize(3 * fitCount);
       }
       for (std::size_t i = begin; i < end; ++i)
       {
@@ -100,7 +141,13 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
         std::size_t closest = 0;
         for (std::size_t j = 0; j < found; ++j)
         {
-          const double d2 = (Eigen::Vector3d(geometry.Position(ids[j])) - p).squaredNorm();
+          const double* x = geometry.Position(ids[j]);
+          double* offset = &s.Offsets[3 * j];
+          for (int d = 0; d < 3; ++d)
+          {
+            offset[d] = x[d] - p[d];
+          }
+          const double d2 = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2];
           farthest2 = std::max(farthest2, d2);
           if (d2 < nearest2)
           {
@@ -108,25 +155,26 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
             closest = j;
           }
         }
+        const double origin[3] = { 0.0, 0.0, 0.0 };
         const bool fitted = LinearValueWeights(
-          p.data(), found, [&](std::size_t j) { return geometry.Position(ids[j]); },
-          std::sqrt(farthest2), s.Weights.data());
-        for (std::size_t a = 0; a < sources.size(); ++a)
+          origin, found, [&](std::size_t j) { return &s.Offsets[3 * j]; }, std::sqrt(farthest2),
+          s.Weights.data());
+        for (std::size_t a = 0; a < values.size(); ++a)
         {
-          const int components = sources[a]->GetNumberOfComponents();
-          for (int c = 0; c < components; ++c)
+          const ValuesOf& source = values[a];
+          for (int c = 0; c < source.Components; ++c)
           {
             double value = 0.0;
             if (!fitted)
             {
-              value = found ? sources[a]->GetComponent(geometry.Order[ids[closest]], c) : 0.0;
+              value = found ? source(geometry.Order[ids[closest]], c) : 0.0;
             }
             for (std::size_t j = 0; fitted && j < found; ++j)
             {
               const double w = s.Weights[j];
               if (w != 0.0)
               {
-                value += w * sources[a]->GetComponent(geometry.Order[ids[j]], c);
+                value += w * source(geometry.Order[ids[j]], c);
               }
             }
             targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);

@@ -54,13 +54,29 @@ template <typename PositionFn>
 bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn position, double invH,
   Eigen::Matrix4d& normal)
 {
-  normal.setZero();
+  // The 10 distinct entries of the symmetric sum of w^2 q q^T, in scalars (this loop runs for
+  // every sample of every fit: the 4x4 outer product was most of its time).
+  double xx = 0.0, xy = 0.0, xz = 0.0, x1 = 0.0, yy = 0.0, yz = 0.0, y1 = 0.0, zz = 0.0, z1 = 0.0,
+         w1 = 0.0;
   for (std::size_t j = 0; j < count; ++j)
   {
-    const Eigen::Vector4d q = ScaledLinearBasis(position(j), centre, invH);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    normal.noalias() += (w * w) * q * q.transpose();
+    const double* x = position(j);
+    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
+                 qz = (x[2] - centre[2]) * invH;
+    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
+    const double w2 = w * w, wx = w2 * qx, wy = w2 * qy, wz = w2 * qz;
+    xx += wx * qx;
+    xy += wx * qy;
+    xz += wx * qz;
+    x1 += wx;
+    yy += wy * qy;
+    yz += wy * qz;
+    y1 += wy;
+    zz += wz * qz;
+    z1 += wz;
+    w1 += w2;
   }
+  normal << xx, xy, xz, x1, xy, yy, yz, y1, xz, yz, zz, z1, x1, y1, z1, w1;
   const double scale = normal.trace() / 4.0;
   return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * std::pow(scale, 4);
 }
