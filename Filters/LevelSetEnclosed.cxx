@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetEnclosed.h"
+#include "LevelSetEnclosedSums.h"
 
 #include "LevelSetParallel.h"
 #include "NearestNeighbors.h"
@@ -29,27 +30,7 @@ namespace lsi
 {
 namespace
 {
-const double Pi = 3.14159265358979323846;
-
-// The smooth step over [-width, width] and its derivative.
-double Step(double phi, double width)
-{
-  if (phi >= width)
-  {
-    return 1.0;
-  }
-  if (phi <= -width)
-  {
-    return 0.0;
-  }
-  const double t = phi / width;
-  return 0.5 * (1.0 + t + std::sin(Pi * t) / Pi);
-}
-
-double StepDerivative(double phi, double width)
-{
-  return std::abs(phi) >= width ? 0.0 : (1.0 + std::cos(Pi * phi / width)) / (2.0 * width);
-}
+using namespace enclosed;
 
 vtkIdType Root(std::vector<vtkIdType>& parent, vtkIdType i)
 {
@@ -59,134 +40,6 @@ vtkIdType Root(std::vector<vtkIdType>& parent, vtkIdType i)
     i = parent[i];
   }
   return i;
-}
-
-struct Sums
-{
-  vtkIdType Particles = 0;
-  double Mass = 0.0, Volume = 0.0, Area = 0.0, Weight = 0.0;
-  double Moment[3] = { 0.0, 0.0, 0.0 };
-  double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
-  bool HasReference = false;
-  std::vector<double> Means; // weighted sums of every array component
-  bool Inside = false;       // holds a particle with phi > 0
-
-  // Adds another part of the same component (its moment taken about this reference).
-  void Add(const Sums& other, const PeriodicBox& box)
-  {
-    if (!other.HasReference)
-    {
-      return;
-    }
-    if (!this->HasReference)
-    {
-      *this = other;
-      return;
-    }
-    this->Particles += other.Particles;
-    this->Mass += other.Mass;
-    this->Volume += other.Volume;
-    this->Area += other.Area;
-    this->Weight += other.Weight;
-    this->Inside = this->Inside || other.Inside;
-    for (int d = 0; d < 3; ++d)
-    {
-      double shift = other.Reference[d] - this->Reference[d];
-      if (box.Enabled)
-      {
-        shift -= box.Size[d] * std::round(shift / box.Size[d]);
-      }
-      this->Moment[d] += other.Moment[d] + other.Weight * shift;
-    }
-    for (std::size_t k = 0; k < this->Means.size(); ++k)
-    {
-      this->Means[k] += other.Means[k];
-    }
-  }
-};
-
-constexpr int FixedFields = 13; // key, then the numbers of Sums before Means
-
-void Pack(double key, const Sums& c, std::vector<double>& out)
-{
-  out.insert(out.end(),
-    { key, static_cast<double>(c.Particles), c.Mass, c.Volume, c.Area, c.Weight, c.Moment[0],
-      c.Moment[1], c.Moment[2], c.Reference[0], c.Reference[1], c.Reference[2],
-      c.Inside ? 1.0 : 0.0 });
-  out.insert(out.end(), c.Means.begin(), c.Means.end());
-}
-
-Sums Unpack(const double* in, std::size_t means)
-{
-  Sums c;
-  c.Particles = static_cast<vtkIdType>(in[1]);
-  c.Mass = in[2];
-  c.Volume = in[3];
-  c.Area = in[4];
-  c.Weight = in[5];
-  std::copy(in + 6, in + 9, c.Moment);
-  std::copy(in + 9, in + 12, c.Reference);
-  c.Inside = in[12] > 0.0;
-  c.HasReference = true;
-  c.Means.assign(in + FixedFields, in + FixedFields + means);
-  return c;
-}
-
-// Adds particle p (sample i, at signed distance `signedDistance` from the surface) to the sums
-// of its component. `tuple` is scratch space (GetTuple into a buffer is safe from threads).
-void AddParticle(const EnclosedInputs& in, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const std::vector<vtkDataArray*>& arrays, int components,
-  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
-{
-  const double s = geometry.RadiusOf(i); // the shell's half width
-  const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
-  double mass = 0.0, rho = 0.0;
-  if (in.Mass)
-  {
-    in.Mass->GetTuple(p, &mass);
-  }
-  if (in.Density)
-  {
-    in.Density->GetTuple(p, &rho);
-  }
-  const double radius = geometry.RadiusOf(i);
-  const int neighbors = geometry.Stride - 1;
-  const double volume = in.Mass && in.Density && rho > 0.0
-    ? mass / rho
-    : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
-  c.Inside = c.Inside || phi[i] > 0.0;
-  c.Particles += phi[i] > 0.0 ? 1 : 0;
-  c.Mass += mass * h;
-  c.Volume += volume * h;
-  c.Area += volume * delta;
-  const double weight = (in.Mass ? mass : volume) * h;
-  c.Weight += weight;
-  const double* x = geometry.Position(i);
-  if (!c.HasReference)
-  {
-    std::copy(x, x + 3, c.Reference);
-    c.HasReference = true;
-    c.Means.assign(static_cast<std::size_t>(components), 0.0);
-  }
-  for (int d = 0; d < 3; ++d)
-  {
-    double offset = x[d] - c.Reference[d];
-    if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
-    {
-      offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
-    }
-    c.Moment[d] += weight * offset;
-  }
-  int k = 0;
-  for (vtkDataArray* array : arrays)
-  {
-    tuple.resize(static_cast<std::size_t>(array->GetNumberOfComponents()));
-    array->GetTuple(p, tuple.data());
-    for (const double value : tuple)
-    {
-      c.Means[k++] += weight * value;
-    }
-  }
 }
 
 double Find(std::map<double, double>& parent, double key)
@@ -368,68 +221,12 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   }
 
   // The arrays to average: every numeric point array, all components.
-  vtkPointData* data = in.Particles->GetPointData();
-  std::vector<vtkDataArray*> arrays;
   int components = 0;
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = data->GetArray(a);
-    if (array && array->GetName() && array->GetNumberOfTuples() >= n)
-    {
-      arrays.push_back(array);
-      components += array->GetNumberOfComponents();
-    }
-  }
+  const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
 
-  // The surface points (in a periodic box, those of their images that reach within two shell
-  // widths of the box, so that a particle next to a face finds the surface across it) for the
-  // signed distances near the surface.
-  std::vector<double> surface, surfaceNormals;
-  if (in.SurfacePoints && in.SurfaceNormals)
-  {
-    const double reach[3] = { widest, widest, widest };
-    for (std::size_t k = 0; k < in.SurfacePoints->size() / 3; ++k)
-    {
-      const double* x = &(*in.SurfacePoints)[3 * k];
-      const double* normal = &(*in.SurfaceNormals)[3 * k];
-      auto add = [&](const double* y) {
-        surface.insert(surface.end(), y, y + 3);
-        surfaceNormals.insert(surfaceNormals.end(), normal, normal + 3);
-      };
-      if (in.Box.Enabled)
-      {
-        ForEachPeriodicImage(x, in.Box, reach, true, add);
-      }
-      else
-      {
-        add(x);
-      }
-    }
-  }
-  std::unique_ptr<PointCloudIndex> surfaceIndex;
-  if (!surface.empty())
-  {
-    surfaceIndex.reset(new PointCloudIndex(surface.data(), surface.size() / 3));
-  }
-  // The signed distance (positive inside) of sample i, for the weights.
-  auto distance = [&](std::size_t i) {
-    const double s = width(i);
-    if (!surfaceIndex || std::abs(phi[i]) > 2.0 * s)
-    {
-      return phi[i];
-    }
-    std::uint32_t nearest;
-    double d2;
-    surfaceIndex->Nearest(geometry.Position(i), 1, &nearest, &d2);
-    double height = 0.0;
-    for (int d = 0; d < 3; ++d)
-    {
-      height -=
-        (geometry.Position(i)[d] - surface[3 * nearest + d]) * surfaceNormals[3 * nearest + d];
-    }
-    // The tangent plane only holds near its point; beyond, phi's sign decides.
-    return std::sqrt(d2) < 2.0 * s ? height : phi[i];
-  };
+  // The signed distances near the surface (a particle next to a periodic face finds the
+  // surface across it within two shell widths).
+  const SurfaceDistance distance(in, widest);
 
   // The distances of the touching samples, in parallel (a nearest-point query each near the
   // surface); the sums below are serial, in particle order, so they do not depend on threads.
@@ -483,8 +280,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
           lastRoot = root;
           lastPart = found.first->second;
         }
-        AddParticle(
-          in, geometry, phi, arrays, components, p, i, distances[i], tuple, out.Parts[lastPart]);
+        AddParticle(in, arrays, components, p, i, distances[i], tuple, out.Parts[lastPart]);
       }
     }
   });
@@ -552,99 +348,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
   {
     byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)), in.Box);
   }
-  // Components with an inside particle, the largest volume first (ties: the lowest key).
-  std::vector<const Sums*> found;
-  for (const auto& entry : byKey)
-  {
-    if (entry.second.Inside)
-    {
-      found.push_back(&entry.second);
-    }
-  }
-  std::stable_sort(found.begin(), found.end(),
-    [&](const Sums* a, const Sums* b) { return a->Volume > b->Volume; });
-  Sums total;
-  total.Means.assign(static_cast<std::size_t>(components), 0.0);
-  for (const Sums* part : found)
-  {
-    const Sums& c = *part;
-    total.Particles += c.Particles;
-    total.Mass += c.Mass;
-    total.Volume += c.Volume;
-    total.Area += c.Area;
-    total.Weight += c.Weight;
-    for (int d = 0; d < 3; ++d) // the total's centre: of the components' centres
-    {
-      total.Moment[d] += c.Moment[d] + c.Weight * c.Reference[d];
-    }
-    for (int k = 0; k < components; ++k)
-    {
-      total.Means[k] += c.Means[k];
-    }
-  }
-
-  auto table = vtkSmartPointer<vtkTable>::New();
-  vtkNew<vtkStringArray> name;
-  name->SetName("Name");
-  vtkNew<vtkIdTypeArray> particles;
-  particles->SetName("Particles");
-  vtkNew<vtkDoubleArray> mass, volume, area, centre;
-  mass->SetName("Mass");
-  volume->SetName("Volume");
-  area->SetName("SurfaceArea");
-  centre->SetName("CenterOfMass");
-  centre->SetNumberOfComponents(3);
-  std::vector<vtkSmartPointer<vtkDoubleArray>> means;
-  for (vtkDataArray* array : arrays)
-  {
-    auto mean = vtkSmartPointer<vtkDoubleArray>::New();
-    mean->SetName((std::string("Mean ") + array->GetName()).c_str());
-    mean->SetNumberOfComponents(array->GetNumberOfComponents());
-    means.push_back(mean);
-  }
-  auto addRow = [&](const std::string& label, const Sums& c, bool relative) {
-    name->InsertNextValue(label);
-    particles->InsertNextValue(c.Particles);
-    mass->InsertNextValue(c.Mass);
-    volume->InsertNextValue(c.Volume);
-    area->InsertNextValue(c.Area);
-    double com[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      com[d] = c.Weight > 0.0 ? (relative ? c.Reference[d] : 0.0) + c.Moment[d] / c.Weight : 0.0;
-    }
-    centre->InsertNextTuple(com);
-    int k = 0;
-    for (auto& mean : means)
-    {
-      std::vector<double> tuple(mean->GetNumberOfComponents());
-      for (double& value : tuple)
-      {
-        value = c.Weight > 0.0 ? c.Means[k] / c.Weight : 0.0;
-        ++k;
-      }
-      mean->InsertNextTuple(tuple.data());
-    }
-  };
-  for (std::size_t r = 0; r < found.size(); ++r)
-  {
-    addRow("Component " + std::to_string(r + 1), *found[r], true);
-  }
-  addRow("Total", total, false);
-  table->AddColumn(name);
-  table->AddColumn(particles);
-  if (in.Mass)
-  {
-    table->AddColumn(mass);
-  }
-  table->AddColumn(volume);
-  table->AddColumn(area);
-  table->AddColumn(centre);
-  for (auto& mean : means)
-  {
-    table->AddColumn(mean);
-  }
-  return table;
+  return TableOfComponents(byKey, arrays, components, in.Mass != nullptr);
 }
 
 } // namespace lsi

@@ -1,0 +1,305 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetEnclosedSums.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <string>
+
+namespace lsi
+{
+namespace enclosed
+{
+
+void Sums::Add(const Sums& other, const PeriodicBox& box)
+{
+  if (!other.HasReference)
+  {
+    return;
+  }
+  if (!this->HasReference)
+  {
+    *this = other;
+    return;
+  }
+  this->Particles += other.Particles;
+  this->Mass += other.Mass;
+  this->Volume += other.Volume;
+  this->Area += other.Area;
+  this->Weight += other.Weight;
+  this->Inside = this->Inside || other.Inside;
+  for (int d = 0; d < 3; ++d)
+  {
+    double shift = other.Reference[d] - this->Reference[d];
+    if (box.Enabled)
+    {
+      shift -= box.Size[d] * std::round(shift / box.Size[d]);
+    }
+    this->Moment[d] += other.Moment[d] + other.Weight * shift;
+  }
+  for (std::size_t k = 0; k < this->Means.size(); ++k)
+  {
+    this->Means[k] += other.Means[k];
+  }
+}
+
+void Pack(double key, const Sums& c, std::vector<double>& out)
+{
+  out.insert(out.end(),
+    { key, static_cast<double>(c.Particles), c.Mass, c.Volume, c.Area, c.Weight, c.Moment[0],
+      c.Moment[1], c.Moment[2], c.Reference[0], c.Reference[1], c.Reference[2],
+      c.Inside ? 1.0 : 0.0 });
+  out.insert(out.end(), c.Means.begin(), c.Means.end());
+}
+
+Sums Unpack(const double* in, std::size_t means)
+{
+  Sums c;
+  c.Particles = static_cast<vtkIdType>(in[1]);
+  c.Mass = in[2];
+  c.Volume = in[3];
+  c.Area = in[4];
+  c.Weight = in[5];
+  std::copy(in + 6, in + 9, c.Moment);
+  std::copy(in + 9, in + 12, c.Reference);
+  c.Inside = in[12] > 0.0;
+  c.HasReference = true;
+  c.Means.assign(in + FixedFields, in + FixedFields + means);
+  return c;
+}
+
+void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
+  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const std::vector<double>& phi = *in.Phi;
+  const double s = geometry.RadiusOf(i); // the shell's half width
+  const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
+  double mass = 0.0, rho = 0.0;
+  if (in.Mass)
+  {
+    in.Mass->GetTuple(p, &mass);
+  }
+  if (in.Density)
+  {
+    in.Density->GetTuple(p, &rho);
+  }
+  const double radius = geometry.RadiusOf(i);
+  const int neighbors = geometry.Stride - 1;
+  const double volume = in.Mass && in.Density && rho > 0.0
+    ? mass / rho
+    : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
+  c.Inside = c.Inside || phi[i] > 0.0;
+  c.Particles += phi[i] > 0.0 ? 1 : 0;
+  c.Mass += mass * h;
+  c.Volume += volume * h;
+  c.Area += volume * delta;
+  const double weight = (in.Mass ? mass : volume) * h;
+  c.Weight += weight;
+  const double* x = geometry.Position(i);
+  if (!c.HasReference)
+  {
+    std::copy(x, x + 3, c.Reference);
+    c.HasReference = true;
+    c.Means.assign(static_cast<std::size_t>(components), 0.0);
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    double offset = x[d] - c.Reference[d];
+    if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
+    {
+      offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
+    }
+    c.Moment[d] += weight * offset;
+  }
+  int k = 0;
+  for (vtkDataArray* array : arrays)
+  {
+    tuple.resize(static_cast<std::size_t>(array->GetNumberOfComponents()));
+    array->GetTuple(p, tuple.data());
+    for (const double value : tuple)
+    {
+      c.Means[k++] += weight * value;
+    }
+  }
+}
+
+std::vector<vtkDataArray*> ArraysToAverage(const EnclosedInputs& in, int& components)
+{
+  vtkPointData* data = in.Particles->GetPointData();
+  std::vector<vtkDataArray*> arrays;
+  components = 0;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetArray(a);
+    if (array && array->GetName() && array->GetNumberOfTuples() >= in.ParticleCount)
+    {
+      arrays.push_back(array);
+      components += array->GetNumberOfComponents();
+    }
+  }
+  return arrays;
+}
+
+SurfaceDistance::SurfaceDistance(const EnclosedInputs& in, double reach)
+  : In(in)
+{
+  if (!in.SurfacePoints || !in.SurfaceNormals)
+  {
+    return;
+  }
+  // In a periodic box, also the images that reach within `reach` of the box, so that a
+  // particle next to a face finds the surface across it.
+  const double reaches[3] = { reach, reach, reach };
+  for (std::size_t k = 0; k < in.SurfacePoints->size() / 3; ++k)
+  {
+    const double* x = &(*in.SurfacePoints)[3 * k];
+    const double* normal = &(*in.SurfaceNormals)[3 * k];
+    auto add = [&](const double* y) {
+      this->Points.insert(this->Points.end(), y, y + 3);
+      this->Normals.insert(this->Normals.end(), normal, normal + 3);
+    };
+    if (in.Box.Enabled)
+    {
+      ForEachPeriodicImage(x, in.Box, reaches, true, add);
+    }
+    else
+    {
+      add(x);
+    }
+  }
+  if (!this->Points.empty())
+  {
+    this->Index.reset(new PointCloudIndex(this->Points.data(), this->Points.size() / 3));
+  }
+}
+
+double SurfaceDistance::operator()(std::size_t i) const
+{
+  const Neighborhoods& geometry = *this->In.Geometry;
+  const double phi = (*this->In.Phi)[i];
+  const double s = geometry.RadiusOf(i); // the shell's half width
+  if (!this->Index || std::abs(phi) > 2.0 * s)
+  {
+    return phi;
+  }
+  std::uint32_t nearest;
+  double d2;
+  const double* x = geometry.Position(i);
+  this->Index->Nearest(x, 1, &nearest, &d2);
+  double height = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    height -= (x[d] - this->Points[3 * nearest + d]) * this->Normals[3 * nearest + d];
+  }
+  // The tangent plane only holds near its point; beyond, phi's sign decides.
+  return std::sqrt(d2) < 2.0 * s ? height : phi;
+}
+
+vtkSmartPointer<vtkTable> TableOfComponents(const std::map<double, Sums>& byKey,
+  const std::vector<vtkDataArray*>& arrays, int components, bool withMass)
+{
+  // Components with an inside particle, the largest volume first (ties: the lowest key).
+  std::vector<const Sums*> found;
+  for (const auto& entry : byKey)
+  {
+    if (entry.second.Inside)
+    {
+      found.push_back(&entry.second);
+    }
+  }
+  std::stable_sort(found.begin(), found.end(),
+    [&](const Sums* a, const Sums* b) { return a->Volume > b->Volume; });
+  Sums total;
+  total.Means.assign(static_cast<std::size_t>(components), 0.0);
+  for (const Sums* part : found)
+  {
+    const Sums& c = *part;
+    total.Particles += c.Particles;
+    total.Mass += c.Mass;
+    total.Volume += c.Volume;
+    total.Area += c.Area;
+    total.Weight += c.Weight;
+    for (int d = 0; d < 3; ++d) // the total's centre: of the components' centres
+    {
+      total.Moment[d] += c.Moment[d] + c.Weight * c.Reference[d];
+    }
+    for (int k = 0; k < components; ++k)
+    {
+      total.Means[k] += c.Means[k];
+    }
+  }
+
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkStringArray> name;
+  name->SetName("Name");
+  vtkNew<vtkIdTypeArray> particles;
+  particles->SetName("Particles");
+  vtkNew<vtkDoubleArray> mass, volume, area, centre;
+  mass->SetName("Mass");
+  volume->SetName("Volume");
+  area->SetName("SurfaceArea");
+  centre->SetName("CenterOfMass");
+  centre->SetNumberOfComponents(3);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> means;
+  for (vtkDataArray* array : arrays)
+  {
+    auto mean = vtkSmartPointer<vtkDoubleArray>::New();
+    mean->SetName((std::string("Mean ") + array->GetName()).c_str());
+    mean->SetNumberOfComponents(array->GetNumberOfComponents());
+    means.push_back(mean);
+  }
+  auto addRow = [&](const std::string& label, const Sums& c, bool relative) {
+    name->InsertNextValue(label);
+    particles->InsertNextValue(c.Particles);
+    mass->InsertNextValue(c.Mass);
+    volume->InsertNextValue(c.Volume);
+    area->InsertNextValue(c.Area);
+    double com[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      com[d] = c.Weight > 0.0 ? (relative ? c.Reference[d] : 0.0) + c.Moment[d] / c.Weight : 0.0;
+    }
+    centre->InsertNextTuple(com);
+    int k = 0;
+    for (auto& mean : means)
+    {
+      std::vector<double> tuple(mean->GetNumberOfComponents());
+      for (double& value : tuple)
+      {
+        value = c.Weight > 0.0 ? c.Means[k] / c.Weight : 0.0;
+        ++k;
+      }
+      mean->InsertNextTuple(tuple.data());
+    }
+  };
+  for (std::size_t r = 0; r < found.size(); ++r)
+  {
+    addRow("Component " + std::to_string(r + 1), *found[r], true);
+  }
+  addRow("Total", total, false);
+  table->AddColumn(name);
+  table->AddColumn(particles);
+  if (withMass)
+  {
+    table->AddColumn(mass);
+  }
+  table->AddColumn(volume);
+  table->AddColumn(area);
+  table->AddColumn(centre);
+  for (auto& mean : means)
+  {
+    table->AddColumn(mean);
+  }
+  return table;
+}
+
+} // namespace enclosed
+} // namespace lsi

@@ -1,0 +1,105 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The pieces the Enclosed table's two routes share (LevelSetEnclosed.cxx: every touching
+// particle; LevelSetEnclosedDeepInside.cxx: the band around a deep inside kept from the last
+// run): a component's running sums, a particle's part in them, the signed distances to the
+// surface, and the table of the components' sums.
+#ifndef LevelSetEnclosedSums_h
+#define LevelSetEnclosedSums_h
+
+#include "LevelSetEnclosed.h"
+
+#include "NearestNeighbors.h"
+
+#include "vtkDataArray.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+class vtkTable;
+
+namespace lsi
+{
+namespace enclosed
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// The smooth step over [-width, width] (1 inside, 0 outside).
+inline double Step(double phi, double width)
+{
+  if (phi >= width)
+  {
+    return 1.0;
+  }
+  if (phi <= -width)
+  {
+    return 0.0;
+  }
+  const double t = phi / width;
+  return 0.5 * (1.0 + t + std::sin(Pi * t) / Pi);
+}
+
+/// The step's derivative (the surface area's density).
+inline double StepDerivative(double phi, double width)
+{
+  return std::abs(phi) >= width ? 0.0 : (1.0 + std::cos(Pi * phi / width)) / (2.0 * width);
+}
+
+/// One component's (or a part of one's) running sums.
+struct Sums
+{
+  vtkIdType Particles = 0;
+  double Mass = 0.0, Volume = 0.0, Area = 0.0, Weight = 0.0;
+  double Moment[3] = { 0.0, 0.0, 0.0 };
+  double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
+  bool HasReference = false;
+  std::vector<double> Means; // weighted sums of every array component
+  bool Inside = false;       // holds a particle with phi > 0
+
+  /// Adds another part of the same component (its moment taken about this reference).
+  void Add(const Sums& other, const PeriodicBox& box);
+};
+
+constexpr int FixedFields = 13; // a packed Sums: key, then the numbers of Sums before Means
+
+/// Appends `c` under `key` to `out` (FixedFields numbers, then the means).
+void Pack(double key, const Sums& c, std::vector<double>& out);
+/// The Sums packed at `in`, with `means` means.
+Sums Unpack(const double* in, std::size_t means);
+
+/// The arrays whose means the table gives: every named numeric point array with a value per
+/// particle (all their components, `components` in all).
+std::vector<vtkDataArray*> ArraysToAverage(const EnclosedInputs& in, int& components);
+
+/// Adds particle p (sample i, at signed distance `signedDistance` from the surface) to the sums
+/// of its component. `tuple` is scratch space (GetTuple into a buffer is safe from threads).
+void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
+  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c);
+
+/// The signed distance of a sample to the surface, positive inside: near the surface its height
+/// over the tangent plane of the nearest surface point, elsewhere phi. In a periodic box, the
+/// surface points' images within `reach` of the box count too.
+class SurfaceDistance
+{
+public:
+  SurfaceDistance(const EnclosedInputs& in, double reach);
+  double operator()(std::size_t i) const;
+
+private:
+  const EnclosedInputs& In;
+  std::vector<double> Points, Normals;
+  std::unique_ptr<PointCloudIndex> Index;
+};
+
+/// The table of the components with a particle inside, the largest volume first (ties: the
+/// lowest key), then "Total".
+vtkSmartPointer<vtkTable> TableOfComponents(const std::map<double, Sums>& byKey,
+  const std::vector<vtkDataArray*>& arrays, int components, bool withMass);
+
+} // namespace enclosed
+} // namespace lsi
+
+#endif
