@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetEnclosed.h"
+#include "LevelSetEnclosedDeepInside.h"
 #include "LevelSetEnclosedSums.h"
 
 #include "LevelSetParallel.h"
@@ -58,8 +59,28 @@ double Find(std::map<double, double>& parent, double key)
 }
 } // namespace
 
-vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& in)
+vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
 {
+  if ((inputs.KeepDeepInside || inputs.DeepInside) && CanUseDeepInside(inputs))
+  {
+    if (inputs.KeepDeepInside)
+    {
+      FindDeepInside(inputs, *inputs.KeepDeepInside);
+    }
+    vtkSmartPointer<vtkTable> table = EnclosedTableAround(
+      inputs, inputs.KeepDeepInside ? *inputs.KeepDeepInside : *inputs.DeepInside);
+    if (table)
+    {
+      return table;
+    }
+  }
+  EnclosedInputs withIds;
+  if (inputs.OriginalIds.empty()) // one process, no images: each sample is its own particle
+  {
+    withIds = inputs;
+    withIds.OriginalIds.assign(inputs.Geometry->Order.begin(), inputs.Geometry->Order.end());
+  }
+  const EnclosedInputs& in = inputs.OriginalIds.empty() ? withIds : inputs;
   const Neighborhoods& geometry = *in.Geometry;
   const std::vector<double>& phi = *in.Phi;
   const vtkIdType n = in.ParticleCount;

@@ -19,6 +19,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 class vtkDataArray;
@@ -27,6 +28,22 @@ class vtkTable;
 
 namespace lsi
 {
+
+/// What a run keeps of its Enclosed sums for the quick re-runs after an isovalue change (one
+/// process, no periodic images, no merged particles): the samples deep inside the surface (phi
+/// at least the band's half width, which the slides leave alone, and beyond two shell widths,
+/// so that each counts in full wherever the surface slides within the band), joined into
+/// groups through each other, with each group's sums. A re-run then sums only the other
+/// touching samples (the band) and joins them to the groups: the table of the same phi and
+/// surface, for the passes over the band alone.
+struct EnclosedDeepInside
+{
+  static constexpr std::uint32_t None = 0xffffffffu;
+  std::vector<std::uint32_t> Group; // per sample (storage order): its group, or None
+  std::vector<std::uint32_t> Rim;   // deep samples listing a neighbour that is not deep
+  std::vector<double> Sums;         // each group's sums, packed under its lowest particle id
+  int Components = 0;               // the arrays' components averaged, when kept
+};
 
 struct EnclosedInputs
 {
@@ -37,7 +54,7 @@ struct EnclosedInputs
   double FarOutside = -HUGE_VAL;
   vtkPointSet* Particles = nullptr;   // the particles the method ran on (and images)
   vtkIdType ParticleCount = 0;        // the real ones: ids below this
-  std::vector<vtkIdType> OriginalIds; // per sample: the real particle it is (images too)
+  std::vector<vtkIdType> OriginalIds; // per sample: the real particle it is (empty: Order)
   PeriodicBox Box;                    // for centres of mass across faces
   vtkDataArray* Mass = nullptr;       // none: volumes from the spacing, no Mass column
   vtkDataArray* Density = nullptr;    // with Mass: volumes m / rho
@@ -49,6 +66,10 @@ struct EnclosedInputs
   // Under MPI: components joined across ranks through the ghosts, sums over every rank's
   // particles (each table is then the whole run's).
   const Communicator* Ranks = &SingleProcess();
+  // One process, no periodic images, no merged particles (else both are ignored): find the
+  // deep inside and keep it here, or sum around the one kept by the last run.
+  EnclosedDeepInside* KeepDeepInside = nullptr;
+  const EnclosedDeepInside* DeepInside = nullptr;
 };
 
 /// One row per connected component of the particles inside (phi > 0; connected through the

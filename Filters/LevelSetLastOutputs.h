@@ -10,6 +10,7 @@
 #ifndef LevelSetLastOutputs_h
 #define LevelSetLastOutputs_h
 
+#include "LevelSetEnclosed.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborCache.h"
 #include "LevelSetSPHField.h"
@@ -103,6 +104,7 @@ struct LastOutputs
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
   double HalfWidth = 0.0;
   double Slid = 0.0;
+  EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
 
   /// Keeps shallow copies of a successful run's outputs.
   void Remember(

@@ -354,8 +354,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   const auto particleStart = lsi::Clock::now();
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
-  this->MakeParticleOutputs(
-    original, input, *geometry, phi, mergedId, halfWidth, isopoints, particleOutput, enclosed);
+  // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
+  last.DeepInside = lsi::EnclosedDeepInside();
+  const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
+  this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
+    particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr, nullptr);
   this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
@@ -378,6 +381,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
     isopointSettings.RefineOnData &&
     (field ? isopoints.FreeBoundaryCount == 0 : isopoints.FitSize > 0);
+  if (!last.SlideReady)
+  {
+    last.DeepInside = lsi::EnclosedDeepInside();
+  }
   last.Values.clear();
   last.Phi.clear();
   last.Field.reset();
@@ -406,7 +413,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
   const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-  vtkPolyData* particleOutput, vtkTable* enclosed)
+  vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
+  const lsi::EnclosedDeepInside* kept)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   lsi::MakeParticleOutput(
@@ -428,8 +436,13 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.FarOutside = -halfWidth;
   inside.Particles = input;
   inside.ParticleCount = this->Internal->OriginalCount;
-  inside.OriginalIds =
-    lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
+  inside.KeepDeepInside = keep;
+  inside.DeepInside = kept;
+  if (!keep && !kept) // (else one process, no images: the table takes storage order's ids)
+  {
+    inside.OriginalIds =
+      lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
+  }
   inside.Box = this->Internal->Box;
   inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);

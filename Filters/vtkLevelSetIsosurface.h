@@ -80,6 +80,7 @@ class vtkPointSet;
 class vtkTable;
 namespace lsi
 {
+struct EnclosedDeepInside;
 struct EvolutionSettings;
 struct IsopointSet;
 struct IsopointSettings;
@@ -606,10 +607,12 @@ private:
     const lsi::IsopointSet& isopoints, const lsi::SPHField* field, vtkPolyData* output);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
+  // The table's deep inside is kept for quick re-runs (`keep`), or taken from the last run's.
   void MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
     const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
     const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-    vtkPolyData* particleOutput, vtkTable* enclosed);
+    vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
+    const lsi::EnclosedDeepInside* kept);
 
   // The user's parameters, for the step files.
   lsi::RequestedParameters RequestedParameters() const;

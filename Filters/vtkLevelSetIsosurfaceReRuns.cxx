@@ -204,7 +204,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   }
   start = lsi::Clock::now();
   this->MakeParticleOutputs(input, input, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
-    isopoints, particleOutput, enclosed);
+    isopoints, particleOutput, enclosed, nullptr, &last.DeepInside);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (this->CheckAbort())

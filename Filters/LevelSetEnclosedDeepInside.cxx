@@ -1,0 +1,287 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The Enclosed table around a deep inside (EnclosedDeepInside): the deep inside's groups and
+// sums found once, then the band's samples summed and joined to them. The components and sums
+// are those of LevelSetEnclosed.cxx's route over every touching sample (to rounding: the sums
+// are added in another order).
+#include "LevelSetEnclosedDeepInside.h"
+
+#include "LevelSetEnclosedSums.h"
+#include "LevelSetParallel.h"
+
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+namespace lsi
+{
+namespace
+{
+using namespace enclosed;
+
+// Samples at or below phi = FarOutside are far outside; the others touch the inside when
+// inside or within a shell width of it (LevelSetEnclosed.cxx's rule).
+bool Touches(const EnclosedInputs& in, std::size_t i)
+{
+  const double phi = (*in.Phi)[i];
+  return phi > 0.0 || (phi > in.FarOutside && phi > -in.Geometry->RadiusOf(i));
+}
+
+// Deep inside: phi at the band's half width (where the slides leave it) and beyond two shell
+// widths (so that its signed distance is phi, and its step 1).
+bool DeepInside(const EnclosedInputs& in, std::size_t i)
+{
+  const double phi = (*in.Phi)[i];
+  return phi >= -in.FarOutside && phi > 2.0 * in.Geometry->RadiusOf(i);
+}
+
+// Union-find over 0..n-1, linked towards lower indices.
+struct Links
+{
+  std::vector<std::uint32_t> Parent;
+  explicit Links(std::size_t n)
+    : Parent(n)
+  {
+    std::iota(this->Parent.begin(), this->Parent.end(), 0u);
+  }
+  std::uint32_t Find(std::uint32_t i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  void Join(std::uint32_t i, std::uint32_t j)
+  {
+    const std::uint32_t a = this->Find(i), b = this->Find(j);
+    if (a != b)
+    {
+      this->Parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+};
+
+// The sums of `samples` by group (groupOf(k) for the k-th sample, below `groups`), in fixed
+// chunks summed in parallel and added in chunk order: the same on any number of threads.
+template <typename GroupOf, typename DistanceOf>
+std::vector<Sums> SumsByGroup(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays,
+  int components, const std::vector<std::uint32_t>& samples, std::size_t groups, GroupOf&& groupOf,
+  DistanceOf&& distanceOf)
+{
+  struct Chunk
+  {
+    std::vector<Sums> Parts;
+    std::vector<std::uint32_t> Groups;
+  };
+  constexpr std::size_t ChunkSize = 16384;
+  const std::size_t chunks = (samples.size() + ChunkSize - 1) / ChunkSize;
+  std::vector<Chunk> parts(chunks);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
+    std::vector<double> tuple;
+    for (vtkIdType chunk = first; chunk < last; ++chunk)
+    {
+      Chunk& out = parts[static_cast<std::size_t>(chunk)];
+      std::unordered_map<std::uint32_t, std::size_t> partOf;
+      const std::size_t begin = static_cast<std::size_t>(chunk) * ChunkSize;
+      const std::size_t end = std::min(samples.size(), begin + ChunkSize);
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        const std::uint32_t group = groupOf(k);
+        const auto found = partOf.emplace(group, out.Parts.size());
+        if (found.second)
+        {
+          out.Parts.emplace_back();
+          out.Groups.push_back(group);
+        }
+        const std::size_t i = samples[k];
+        AddParticle(in, arrays, components, in.Geometry->Order[i], i, distanceOf(i), tuple,
+          out.Parts[found.first->second]);
+      }
+    }
+  });
+  std::vector<Sums> sums(groups);
+  for (const Chunk& chunk : parts)
+  {
+    for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
+    {
+      sums[chunk.Groups[k]].Add(chunk.Parts[k], in.Box);
+    }
+  }
+  return sums;
+}
+} // namespace
+
+bool CanUseDeepInside(const EnclosedInputs& in)
+{
+  return !in.Box.Enabled && !in.Ranks->Distributed() &&
+    static_cast<vtkIdType>(in.Geometry->NumberOfSamples) == in.ParticleCount &&
+    in.FarOutside > -HUGE_VAL;
+}
+
+void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const std::size_t n = geometry.NumberOfSamples;
+  const std::vector<std::uint32_t> inside =
+    IndicesWhere<std::uint32_t>(n, [&](std::size_t i) { return DeepInside(in, i); });
+  // The groups: the deep samples joined through their neighbour lists (as the touching ones
+  // are in the full route: from the samples whose lists are whole), numbered in storage order.
+  deep.Group.assign(n, EnclosedDeepInside::None);
+  for (std::size_t k = 0; k < inside.size(); ++k)
+  {
+    deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
+  }
+  Links links(inside.size());
+  for (std::size_t k = 0; k < inside.size(); ++k)
+  {
+    const std::size_t i = inside[k];
+    if (geometry.IsTruncated(i))
+    {
+      continue;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      const std::uint32_t other = deep.Group[ids[m]];
+      if (other != EnclosedDeepInside::None)
+      {
+        links.Join(static_cast<std::uint32_t>(k), other);
+      }
+    }
+  }
+  std::vector<std::uint32_t> groupOfRoot(inside.size(), EnclosedDeepInside::None);
+  std::vector<double> lowest; // per group: its lowest particle id, the key of its component
+  std::uint32_t groups = 0;
+  for (std::size_t k = 0; k < inside.size(); ++k)
+  {
+    const std::uint32_t root = links.Find(static_cast<std::uint32_t>(k));
+    if (groupOfRoot[root] == EnclosedDeepInside::None)
+    {
+      groupOfRoot[root] = groups++;
+      lowest.push_back(HUGE_VAL);
+    }
+    const std::uint32_t group = groupOfRoot[root];
+    deep.Group[inside[k]] = group;
+    lowest[group] = std::min(lowest[group], static_cast<double>(geometry.Order[inside[k]]));
+  }
+  // The rim: the deep samples whose lists reach out of the deep inside (the band's samples
+  // join the groups through these, besides through their own lists).
+  deep.Rim = IndicesWhere<std::uint32_t>(inside.size(), [&](std::size_t k) {
+    const std::size_t i = inside[k];
+    if (geometry.IsTruncated(i))
+    {
+      return false;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if (deep.Group[ids[m]] == EnclosedDeepInside::None)
+      {
+        return true;
+      }
+    }
+    return false;
+  });
+  for (std::uint32_t& k : deep.Rim)
+  {
+    k = inside[k];
+  }
+  int components = 0;
+  const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
+  const std::vector<double>& phi = *in.Phi;
+  const std::vector<Sums> sums = SumsByGroup(
+    in, arrays, components, inside, groups, [&](std::size_t k) { return deep.Group[inside[k]]; },
+    [&](std::size_t i) { return phi[i]; });
+  deep.Sums.clear();
+  for (std::size_t g = 0; g < sums.size(); ++g)
+  {
+    Pack(lowest[g], sums[g], deep.Sums);
+  }
+  deep.Components = components;
+}
+
+vtkSmartPointer<vtkTable> EnclosedTableAround(
+  const EnclosedInputs& in, const EnclosedDeepInside& deep)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const std::size_t n = geometry.NumberOfSamples;
+  int components = 0;
+  const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
+  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
+  if (deep.Group.size() != n || deep.Components != components || deep.Sums.size() % record != 0)
+  {
+    return nullptr; // kept for other samples or arrays
+  }
+  const std::size_t groups = deep.Sums.size() / record;
+  // The band: the touching samples not deep inside. Nodes: the groups, then the band's samples.
+  const std::vector<std::uint32_t> band = IndicesWhere<std::uint32_t>(
+    n, [&](std::size_t i) { return deep.Group[i] == EnclosedDeepInside::None && Touches(in, i); });
+  std::vector<std::uint32_t> node(deep.Group.begin(), deep.Group.end());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType b = begin; b < end; ++b)
+    {
+      node[band[b]] = static_cast<std::uint32_t>(groups + b);
+    }
+  });
+  // Joined through the band's lists and the rim's (the groups are joined within already).
+  Links links(groups + band.size());
+  auto joinListed = [&](std::size_t i) {
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if (node[ids[m]] != EnclosedDeepInside::None)
+      {
+        links.Join(node[i], node[ids[m]]);
+      }
+    }
+  };
+  for (std::uint32_t i : band)
+  {
+    if (!geometry.IsTruncated(i))
+    {
+      joinListed(i);
+    }
+  }
+  for (std::uint32_t i : deep.Rim)
+  {
+    joinListed(i);
+  }
+  // Each component: its root node, keyed by its lowest particle id; numbered in node order.
+  std::vector<std::uint32_t> componentOfRoot(links.Parent.size(), EnclosedDeepInside::None);
+  std::vector<std::uint32_t> componentOf(links.Parent.size());
+  std::vector<double> key;
+  for (std::size_t x = 0; x < links.Parent.size(); ++x)
+  {
+    const std::uint32_t root = links.Find(static_cast<std::uint32_t>(x));
+    if (componentOfRoot[root] == EnclosedDeepInside::None)
+    {
+      componentOfRoot[root] = static_cast<std::uint32_t>(key.size());
+      key.push_back(HUGE_VAL);
+    }
+    const std::uint32_t c = componentOf[x] = componentOfRoot[root];
+    const double lowest =
+      x < groups ? deep.Sums[record * x] : static_cast<double>(geometry.Order[band[x - groups]]);
+    key[c] = std::min(key[c], lowest);
+  }
+  const SurfaceDistance distance(in, 0.0);
+  std::vector<Sums> sums = SumsByGroup(
+    in, arrays, components, band, key.size(),
+    [&](std::size_t b) { return componentOf[groups + b]; }, distance);
+  for (std::size_t g = 0; g < groups; ++g)
+  {
+    sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components), in.Box);
+  }
+  std::map<double, Sums> byKey;
+  for (std::size_t c = 0; c < sums.size(); ++c)
+  {
+    byKey[key[c]] = std::move(sums[c]);
+  }
+  return TableOfComponents(byKey, arrays, components, in.Mass != nullptr);
+}
+
+} // namespace lsi

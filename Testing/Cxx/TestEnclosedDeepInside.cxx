@@ -1,0 +1,253 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The Enclosed table around a kept deep inside (LevelSetEnclosedDeepInside) against the table
+// over every touching sample (LevelSetEnclosed.cxx), on random particles in a unit box with phi
+// the signed distance to two balls, clamped at the band's half width:
+//   - the run that keeps the deep inside gives the full route's table (rows, particle counts
+//     exactly, every number to 1e-9);
+//   - after the balls shrink by 1.5 spacings or grow by one inside the band (phi changed only
+//     there, as a slide shifts it, the surface moved), the table around the kept deep inside is
+//     again the full route's, and the grown balls, apart before, are one component;
+//   - the same numbers, to the bit, on 1 and 2 threads.
+#include "LevelSetEnclosed.h"
+#include "LevelSetNeighborhoods.h"
+#include "TestCheck.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using lsi::test::Check;
+
+struct Balls
+{
+  double Centre[2][3] = { { 0.25, 0.5, 0.5 }, { 0.75, 0.5, 0.5 } };
+  double Radius = 0.2;
+
+  double SignedDistance(const double* x) const // positive inside
+  {
+    double best = -HUGE_VAL;
+    for (const auto& c : this->Centre)
+    {
+      const double d = std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) +
+        (x[2] - c[2]) * (x[2] - c[2]));
+      best = std::max(best, this->Radius - d);
+    }
+    return best;
+  }
+
+  // Points spread over both spheres (a Fibonacci lattice each) and their outward normals.
+  void Surface(std::vector<double>& points, std::vector<double>& normals) const
+  {
+    const int count = 6000;
+    for (const auto& c : this->Centre)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        const double z = 1.0 - (2.0 * k + 1.0) / count, r = std::sqrt(1.0 - z * z);
+        const double angle = k * 2.399963229728653;
+        const double n[3] = { r * std::cos(angle), r * std::sin(angle), z };
+        for (int d = 0; d < 3; ++d)
+        {
+          points.push_back(c[d] + this->Radius * n[d]);
+          normals.push_back(n[d]);
+        }
+      }
+    }
+  }
+};
+
+// Compares two tables: the same rows and names, the same particle counts, every other number
+// to `tolerance` relative to its column's largest.
+void CheckSameTable(vtkTable* expected, vtkTable* got, double tolerance, const std::string& what)
+{
+  Check(expected && got, what + ": both tables made");
+  if (!expected || !got)
+  {
+    return;
+  }
+  Check(expected->GetNumberOfRows() == got->GetNumberOfRows() &&
+      expected->GetNumberOfColumns() == got->GetNumberOfColumns(),
+    what + ": " + std::to_string(got->GetNumberOfRows()) + " rows, expected " +
+      std::to_string(expected->GetNumberOfRows()));
+  if (lsi::test::Failures())
+  {
+    return;
+  }
+  for (vtkIdType c = 0; c < expected->GetNumberOfColumns(); ++c)
+  {
+    const std::string name = expected->GetColumnName(c);
+    if (auto* names = vtkStringArray::SafeDownCast(expected->GetColumn(c)))
+    {
+      auto* other = vtkStringArray::SafeDownCast(got->GetColumnByName(name.c_str()));
+      for (vtkIdType r = 0; other && r < names->GetNumberOfValues(); ++r)
+      {
+        Check(names->GetValue(r) == other->GetValue(r), what + ": row names");
+      }
+      continue;
+    }
+    auto* a = vtkDataArray::SafeDownCast(expected->GetColumn(c));
+    auto* b = vtkDataArray::SafeDownCast(got->GetColumnByName(name.c_str()));
+    Check(a && b, what + ": column " + name);
+    if (!a || !b)
+    {
+      continue;
+    }
+    double scale = 0.0, worst = 0.0;
+    for (vtkIdType k = 0; k < a->GetNumberOfValues(); ++k)
+    {
+      scale = std::max(scale, std::abs(a->GetVariantValue(k).ToDouble()));
+      worst = std::max(
+        worst, std::abs(a->GetVariantValue(k).ToDouble() - b->GetVariantValue(k).ToDouble()));
+    }
+    const double allowed = name == "Particles" ? 0.0 : tolerance * scale;
+    Check(worst <= allowed,
+      what + ": column " + name + " differs by " + std::to_string(worst) + " (" +
+        std::to_string(allowed) + " allowed)");
+  }
+}
+
+bool SameBits(vtkTable* a, vtkTable* b)
+{
+  for (vtkIdType c = 0; c < a->GetNumberOfColumns(); ++c)
+  {
+    auto* x = vtkDataArray::SafeDownCast(a->GetColumn(c));
+    auto* y = vtkDataArray::SafeDownCast(b->GetColumn(c));
+    for (vtkIdType k = 0; x && y && k < x->GetNumberOfValues(); ++k)
+    {
+      if (x->GetVariantValue(k).ToDouble() != y->GetVariantValue(k).ToDouble())
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+} // namespace
+
+int main()
+{
+  // Random particles with a scalar and a vector array (their means are columns too).
+  const vtkIdType n = 400000;
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  vtkNew<vtkDoubleArray> f, v;
+  f->SetName("f");
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  f->SetNumberOfTuples(n);
+  v->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double x[3] = { uniform(random), uniform(random), uniform(random) };
+    points->SetPoint(i, x);
+    f->SetValue(i, 1.0 + x[0]);
+    v->SetTuple3(i, x[1], -x[2], 2.0);
+  }
+  vtkNew<vtkPolyData> particles;
+  particles->SetPoints(points);
+  particles->GetPointData()->AddArray(f);
+  particles->GetPointData()->AddArray(v);
+  lsi::Neighborhoods geometry;
+  lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck());
+
+  // phi: the signed distance to the balls, clamped at the band's half width.
+  const double halfWidth = 3.0 * geometry.MeanRadius;
+  Balls balls;
+  std::vector<double> phi(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < phi.size(); ++i)
+  {
+    phi[i] = std::max(-halfWidth, std::min(halfWidth, balls.SignedDistance(geometry.Position(i))));
+  }
+  std::vector<double> surface, normals;
+  balls.Surface(surface, normals);
+  lsi::EnclosedInputs in;
+  in.Geometry = &geometry;
+  in.Phi = &phi;
+  in.FarOutside = -halfWidth;
+  in.Particles = particles;
+  in.ParticleCount = n;
+  in.SurfacePoints = &surface;
+  in.SurfaceNormals = &normals;
+
+  vtkSmartPointer<vtkTable> full = lsi::EnclosedTable(in);
+  lsi::EnclosedDeepInside deep;
+  in.KeepDeepInside = &deep;
+  vtkSmartPointer<vtkTable> kept = lsi::EnclosedTable(in);
+  in.KeepDeepInside = nullptr;
+  const std::size_t deepSamples = static_cast<std::size_t>(std::count_if(deep.Group.begin(),
+    deep.Group.end(), [](std::uint32_t g) { return g != lsi::EnclosedDeepInside::None; }));
+  Check(deepSamples > 3000 && !deep.Rim.empty(),
+    "a deep inside with a rim was found (" + std::to_string(deepSamples) + " samples)");
+  CheckSameTable(full, kept, 1e-9, "the run that keeps the deep inside");
+  Check(full && full->GetNumberOfRows() == 3,
+    "two balls apart: two components and the total (" +
+      std::to_string(full ? full->GetNumberOfRows() : 0) + " rows)");
+
+  // The balls slide by `change`: phi changes only inside the band, as a slide shifts it.
+  const std::vector<double> phiBefore = phi;
+  const double radiusBefore = balls.Radius;
+  auto slide = [&](double change) {
+    balls.Radius = radiusBefore + change;
+    for (std::size_t i = 0; i < phi.size(); ++i)
+    {
+      phi[i] = std::abs(phiBefore[i]) < halfWidth
+        ? std::max(-halfWidth, std::min(halfWidth, balls.SignedDistance(geometry.Position(i))))
+        : phiBefore[i];
+    }
+    surface.clear();
+    normals.clear();
+    balls.Surface(surface, normals);
+  };
+  // Shrinking by 1.5 spacings: samples inside the band come within a shell width of the
+  // surface (they count in part now), the deep inside still counts in full.
+  slide(-1.5 * geometry.MeanRadius);
+  vtkSmartPointer<vtkTable> shrunkFull = lsi::EnclosedTable(in);
+  in.DeepInside = &deep;
+  CheckSameTable(shrunkFull, lsi::EnclosedTable(in), 1e-9, "around the deep inside, shrunk");
+  in.DeepInside = nullptr;
+  // Growing by a spacing: the shells meet.
+  slide(geometry.MeanRadius);
+  vtkSmartPointer<vtkTable> grownFull = lsi::EnclosedTable(in);
+  in.DeepInside = &deep;
+  vtkSmartPointer<vtkTable> grown;
+  vtkSmartPointer<vtkTable> grownOneThread;
+  {
+    vtkSMPTools::LocalScope(
+      vtkSMPTools::Config{ 2, "STDThread", false }, [&]() { grown = lsi::EnclosedTable(in); });
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ 1, "STDThread", false },
+      [&]() { grownOneThread = lsi::EnclosedTable(in); });
+  }
+  CheckSameTable(grownFull, grown, 1e-9, "around the kept deep inside, after a slide");
+  Check(grownFull && grownFull->GetNumberOfRows() == 2,
+    "the grown balls' shells meet: one component and the total (" +
+      std::to_string(grownFull ? grownFull->GetNumberOfRows() : 0) + " rows)");
+  Check(grown && grownOneThread && SameBits(grown, grownOneThread),
+    "the same table to the bit on 1 and 2 threads");
+
+  if (lsi::test::Failures())
+  {
+    std::cerr << "deep inside tests FAILED\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << "deep inside tests passed\n";
+  return EXIT_SUCCESS;
+}
