@@ -89,6 +89,11 @@ struct LastOutputs
   std::vector<char> Inside;
   std::vector<double> DataOffsets;
   double Spacing = 0.0;
+  // The last flood's seeds: their spheres, the input's bounds, and the samples in the spheres
+  // (a re-run with the same spheres on the same points floods from these).
+  std::vector<double> SeedSpheres;
+  double Bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  std::vector<char> InSeed;
   // For the quick re-run after an isovalue change (with QuickCheck, QuickIsoValueChanges and
   // the refinement on the data): f at the samples, the level set phi after the evolution, in
   // storage order, the surface's points with their fits' samples and models, the isopoint

@@ -329,6 +329,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() &&
     !this->Internal->Box.Enabled && mergedId.empty();
   last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
+  if (!last.QuickCheck)
+  {
+    last.InSeed.clear();
+    last.SeedSpheres.clear();
+  }
   last.DataOffsets = last.QuickCheck ? dataOffsets : std::vector<double>();
   last.Spacing = settings.Spacing;
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
@@ -875,6 +880,10 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   }
   if (this->Initialization == FLOOD)
   {
+    lsi::LastOutputs& last = this->Internal->Last; // the seeds, for quick re-runs
+    last.SeedSpheres = spheres;
+    std::copy(bounds, bounds + 6, last.Bounds);
+    last.InSeed = seeds.InSeed;
     std::vector<char> inSeed = seeds.InSeed;
     double seedSamples = 0.0;
     if (!this->FloodAcrossRanks(geometry, dataOffsets, settings, inSeed, phi, seedSamples))

@@ -559,9 +559,10 @@ private:
   // null.
   const lsi::Neighborhoods* LastGeometry(vtkPointSet* input);
   // The flood from the current seeds over `dataOffsets` (f - f_iso per sample) on the last
-  // run's geometry; false if the seeds are refused or reach no sample above the isovalue.
-  bool FloodFromSeeds(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const std::vector<double>& dataOffsets, std::vector<char>& inside);
+  // run's geometry (and its points: their bounds and, for the same spheres, the samples in them
+  // are kept); false if the seeds are refused or reach no sample above the isovalue.
+  bool FloodFromSeeds(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    std::vector<char>& inside);
 
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
   void operator=(const vtkLevelSetIsosurface&) = delete;

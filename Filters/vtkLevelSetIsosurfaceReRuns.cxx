@@ -75,7 +75,7 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
                                                                                   : nullptr;
 }
 
-bool vtkLevelSetIsosurface::FloodFromSeeds(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, std::vector<char>& inside)
 {
   // Seeds the method would refuse go the long way, which reports them.
@@ -92,19 +92,25 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(vtkPointSet* input, const lsi::Neighb
   {
     return false;
   }
-  double bounds[6];
-  this->Bounds(input, bounds);
+  // (The points are the last run's: so are their bounds, and with the same spheres the samples
+  // in them.)
+  lsi::LastOutputs& last = this->Internal->Last;
   const std::vector<double> spheres =
-    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
-  std::vector<double> seedDistance;
-  const lsi::SeedSphereStart seeds = lsi::SeedSphereDistance(
-    geometry, spheres, bounds, 0.5 * this->Internal->Last.Spacing, seedDistance);
-  if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
+    lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, last.Bounds);
+  if (spheres != last.SeedSpheres || last.InSeed.size() != geometry.NumberOfSamples)
   {
-    return false;
+    std::vector<double> seedDistance;
+    lsi::SeedSphereStart seeds =
+      lsi::SeedSphereDistance(geometry, spheres, last.Bounds, 0.5 * last.Spacing, seedDistance);
+    if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
+    {
+      return false;
+    }
+    last.SeedSpheres = spheres;
+    last.InSeed = std::move(seeds.InSeed);
   }
   lsi::FloodResult flood;
-  inside = lsi::FloodedInside(geometry, dataOffsets, seeds.InSeed,
+  inside = lsi::FloodedInside(geometry, dataOffsets, last.InSeed,
     static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
   return !flood.Aborted && flood.SeedSamples > 0;
 }
@@ -116,7 +122,7 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* 
   const lsi::Neighborhoods* geometry = this->LastGeometry(input);
   // (The isovalue and the data are those of the last run, which checked them.)
   std::vector<char> inside;
-  if (!geometry || !this->FloodFromSeeds(input, *geometry, last.DataOffsets, inside) ||
+  if (!geometry || !this->FloodFromSeeds(*geometry, last.DataOffsets, inside) ||
     inside != last.Inside)
   {
     return false;
@@ -158,7 +164,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   const double inputSeconds = lsi::SecondsSince(start);
   start = lsi::Clock::now();
   std::vector<char> inside;
-  if (!this->FloodFromSeeds(input, *geometry, dataOffsets, inside))
+  if (!this->FloodFromSeeds(*geometry, dataOffsets, inside))
   {
     vtkDebugMacro(<< "quick isovalue change: refused, the seeds flood nothing");
     return false;
