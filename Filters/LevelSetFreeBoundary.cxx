@@ -36,7 +36,7 @@ bool OutwardOfCloud(const Neighborhoods& geometry, std::size_t i, Eigen::Vector3
 } // namespace
 
 bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field, double isoValue,
-  const std::vector<double>& phi, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inside, const std::vector<double>& dataOffsets,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
 {
   const std::size_t n = geometry.NumberOfSamples;
@@ -48,7 +48,7 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
     {
       Eigen::Vector3d outward;
       // Inside the extracted component, above the isovalue, on the edge of the cloud.
-      if (!(phi[i] > 0.0) || !(dataOffsets[i] > 0.0) || !OutwardOfCloud(geometry, i, outward))
+      if (!inside[i] || !(dataOffsets[i] > 0.0) || !OutwardOfCloud(geometry, i, outward))
       {
         continue;
       }

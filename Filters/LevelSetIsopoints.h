@@ -118,12 +118,12 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
 /// Step 7b on SPH data, the free boundary: where the particle cloud itself ends inside the
 /// component (a galaxy's edge, a tube's wall), no pair of particles straddles the surface, which
 /// lies up to a kernel support beyond the outermost particles, so the steps above leave a hole.
-/// From each sample inside the component (`phi` > 0, `dataOffsets` > 0) on the edge of the cloud
-/// (its neighbours to one side), a ray outwards is solved onto the field's level within one
-/// support; the points found join `out`, thinned by voxels (existing points keep theirs).
-/// Returns false only when aborted.
+/// From each sample inside the component (`inside`, and `dataOffsets` > 0) on the edge of the
+/// cloud (its neighbours to one side), a ray outwards is solved onto the field's level within
+/// one support; the points found join `out` at its end (FreeBoundaryCount of them), thinned by
+/// voxels (existing points keep theirs). Returns false only when aborted.
 bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field, double isoValue,
-  const std::vector<double>& phi, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inside, const std::vector<double>& dataOffsets,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 
 // Pieces shared by the three steps.

@@ -382,10 +382,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
-  // (On the SPH field: not where free-boundary points were added, which a slide cannot add.)
   last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
-    isopointSettings.RefineOnData &&
-    (field ? isopoints.FreeBoundaryCount == 0 : isopoints.FitSize > 0);
+    isopointSettings.RefineOnData && (field || isopoints.FitSize > 0);
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
@@ -1108,8 +1106,8 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
     return false;
   }
   if (field && settings.RefineOnData &&
-    !lsi::AddFreeBoundaryPoints(geometry, *field, this->IsoValue, phi, dataOffsets, settings,
-      isopoints, lsi::SubRange(stage, 1.0, 1.0)))
+    !lsi::AddFreeBoundaryPoints(geometry, *field, this->IsoValue, lsi::LastOutputs::InsideOf(phi),
+      dataOffsets, settings, isopoints, lsi::SubRange(stage, 1.0, 1.0)))
   {
     return false;
   }

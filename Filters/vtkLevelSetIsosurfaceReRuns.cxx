@@ -180,11 +180,29 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   slide.ValueChange = isoValue - last.IsoValue;
   lsi::IsopointSet isopoints = last.Isopoints;
   std::vector<double> centres = last.FitCentres;
-  const lsi::SlideResult slid = last.Field
-    ? lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings, isopoints,
-        this->Stage(lsi::IsopointStage))
-    : lsi::SlideIsopoints(
-        *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  lsi::SlideResult slid;
+  if (last.Field)
+  {
+    // The free boundary's points (last in the set) are shot anew from the new inside's edge of
+    // the cloud, as the method does; the others slide.
+    const std::size_t kept = isopoints.Points.size() - 3 * isopoints.FreeBoundaryCount;
+    isopoints.Points.resize(kept);
+    isopoints.Normals.resize(kept);
+    isopoints.FreeBoundaryCount = 0;
+    slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings,
+      isopoints, this->Stage(lsi::IsopointStage));
+    if (slid.Accepted &&
+      !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
+        isopoints, this->Stage(lsi::IsopointStage)))
+    {
+      return false; // aborted
+    }
+  }
+  else
+  {
+    slid = lsi::SlideIsopoints(
+      *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  }
   std::size_t changed = 0;
   // A sample that changed sides lies between the old and the new level: within the largest
   // move of the level and the points' spacing (two cells) of a slid point.

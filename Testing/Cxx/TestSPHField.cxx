@@ -350,6 +350,47 @@ void TestQuickIsoValueChange(vtkPolyData* glass, const Particles& p, double iso)
     "Evrard: the slid surface encloses the method's mass within 0.5%");
 }
 
+// The same at the cloud's edge (isovalue 0.08: the field's level lies beyond the outermost
+// particles, and the surface there is made of free-boundary points, shot from the edge): the
+// free boundary is shot anew from the new flood, so the change still slides, its points on the
+// new level, with the method's count of points beyond the edge within 5%.
+void TestQuickAtCloudEdge(vtkPolyData* glass, const Particles& p)
+{
+  double edge = 0.0; // the cloud's radius
+  for (vtkIdType i = 0; i < glass->GetNumberOfPoints(); ++i)
+  {
+    const double* x = glass->GetPoint(i);
+    edge = std::max(edge, std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
+  }
+  auto beyondEdge = [&](vtkPolyData* points) {
+    double count = 0.0;
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      const double* x = points->GetPoint(i);
+      count += std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) > edge ? 1.0 : 0.0;
+    }
+    return count;
+  };
+  const double iso = 0.08, changed = 1.03 * iso, seed[3] = { 0, 0, 0 };
+  vtkNew<vtkLevelSetIsosurface> quick;
+  quick->QuickIsoValueChangesOn();
+  auto before = Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
+  auto slid = Run(glass, changed, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
+  vtkNew<vtkLevelSetIsosurface> full;
+  auto method = Run(glass, changed, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, full);
+  const Scores s = Score(p, slid, changed, 400);
+  Report("Evrard at the cloud's edge, slid to a 3% higher isovalue", s, slid->GetNumberOfPoints());
+  std::cout << "Evrard at the cloud's edge: points beyond it, before " << beyondEdge(before)
+            << ", slid " << beyondEdge(slid) << ", method " << beyondEdge(method) << "\n";
+  Check(beyondEdge(before) > 50 && beyondEdge(method) > 50,
+    "Evrard at the cloud's edge: the surface has free-boundary points");
+  Check(quick->GetSlidLastSurface(), "Evrard at the cloud's edge: a 3% change slides");
+  Check(s.MeanDistance < 1e-3 && s.MaxDistance < 1e-2,
+    "Evrard at the cloud's edge: slid points on the field's new level");
+  Check(std::abs(beyondEdge(slid) - beyondEdge(method)) <= 0.05 * beyondEdge(method),
+    "Evrard at the cloud's edge: the method's free-boundary points, within 5%");
+}
+
 void TestEvrard(const std::string& path)
 {
   vtkSmartPointer<vtkPolyData> glass = WithSummedDensity(path);
@@ -400,6 +441,7 @@ void TestEvrard(const std::string& path)
   TestPeriodicBox(glass, iso, isopoints->GetNumberOfPoints(), meanRadius);
   TestEnclosed(filter);
   TestQuickIsoValueChange(glass, p, iso);
+  TestQuickAtCloudEdge(glass, p);
 
   // The default output: every splat corner on the level, its normal the field's.
   auto splats = Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::SPLATS);
