@@ -301,6 +301,65 @@ void TestCavityOpening()
       std::to_string(innerPoints) + " points within 5 of the centre)");
 }
 
+// Units: the same particles with lengths times 1e5 and values times 1e-7 slide to the same
+// surface (its points times 1e5, its enclosed volume times 1e15), after the same (scaled)
+// change, to rounding (the scaled coordinates are rounded: 1e-4 of a spacing, 1e-6 of the
+// volume).
+void TestUnitsOfLengthAndValue()
+{
+  const double length = 1e5, value = 1e-7;
+  vtkSmartPointer<vtkPolyData> data =
+    Sampled(64000, 60.0, 11, [](const double* x) { return 20.0 - FromAxisPoint(x, 30.0); });
+  auto scaled = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    const double* x = data->GetPoint(i);
+    points->InsertNextPoint(length * x[0], length * x[1], length * x[2]);
+    f->InsertNextValue(value * data->GetPointData()->GetArray("f")->GetTuple1(i));
+  }
+  scaled->SetPoints(points);
+  scaled->GetPointData()->AddArray(f);
+  vtkNew<vtkLevelSetIsosurface> plain, inUnits;
+  Configure(plain, data, 0.0);
+  Configure(inUnits, scaled, 0.0);
+  inUnits->SetSeedCenter(30 * length, 30 * length, 30 * length);
+  inUnits->SetSeedRadius(5 * length);
+  for (vtkLevelSetIsosurface* filter : { plain.Get(), inUnits.Get() })
+  {
+    filter->QuickIsoValueChangesOn();
+    filter->Update();
+  }
+  plain->SetIsoValue(0.1);
+  inUnits->SetIsoValue(0.1 * value);
+  plain->Update();
+  inUnits->Update();
+  Check(plain->GetSlidLastSurface() && inUnits->GetSlidLastSurface(),
+    "units: the change slides in both units");
+  vtkPolyData* a = plain->GetOutput(0);
+  vtkPolyData* b = inUnits->GetOutput(0);
+  Check(a->GetNumberOfPoints() > 1000 && a->GetNumberOfPoints() == b->GetNumberOfPoints(),
+    "units: as many slid points (" + std::to_string(a->GetNumberOfPoints()) + " and " +
+      std::to_string(b->GetNumberOfPoints()) + ")");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < std::min(a->GetNumberOfPoints(), b->GetNumberOfPoints()); ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      worst = std::max(worst, std::abs(b->GetPoint(i)[d] / length - a->GetPoint(i)[d]));
+    }
+  }
+  Check(worst < 1e-4,
+    "units: the same slid points, scaled (worst difference " + std::to_string(worst) + ")");
+  const double volume = EnclosedVolume(plain);
+  const double scaledVolume = EnclosedVolume(inUnits) / (length * length * length);
+  Check(volume > 0.0 && std::abs(scaledVolume - volume) < 1e-6 * volume,
+    "units: the same enclosed volume, scaled (" + std::to_string(volume) + " and " +
+      std::to_string(scaledVolume) + ")");
+}
+
 } // namespace
 
 int main()
@@ -308,6 +367,7 @@ int main()
   TestSlidesOnOneBall();
   TestComponentsJoinedOrLost();
   TestCavityOpening();
+  TestUnitsOfLengthAndValue();
   std::cout << (lsi::test::Failures() ? "quick isovalue tests FAILED\n"
                                       : "quick isovalue tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
