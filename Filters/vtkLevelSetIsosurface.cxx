@@ -7,6 +7,7 @@
 #include "LevelSetDistribution.h"
 #include "LevelSetDuplicates.h"
 #include "LevelSetEnclosed.h"
+#include "LevelSetEnclosedDeepInside.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetInput.h"
@@ -396,11 +397,16 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   if (last.SlideReady)
   {
     last.Values.resize(dataOffsets.size());
-    for (std::size_t i = 0; i < dataOffsets.size(); ++i)
-    {
-      // On the SPH field, the field at the samples (to rounding): that is what the flood uses.
-      last.Values[i] = field ? dataOffsets[i] + this->IsoValue : values[geometry->Order[i]];
-    }
+    const double isoValue = this->IsoValue;
+    const bool onField = field != nullptr;
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          // On the SPH field, the field at the samples (to rounding): what the flood uses.
+          last.Values[i] = onField ? dataOffsets[i] + isoValue : values[geometry->Order[i]];
+        }
+      });
     last.Field = std::move(field);
     last.IsoValue = this->IsoValue;
     last.Phi = std::move(phi);
@@ -439,19 +445,22 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.FarOutside = -halfWidth;
   inside.Particles = input;
   inside.ParticleCount = this->Internal->OriginalCount;
-  inside.KeepDeepInside = keep;
-  inside.DeepInside = kept;
-  if (!keep && !kept) // (else one process, no images: the table takes storage order's ids)
-  {
-    inside.OriginalIds =
-      lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
-  }
   inside.Box = this->Internal->Box;
   inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
   inside.SurfacePoints = &isopoints.Points;
   inside.SurfaceNormals = &isopoints.Normals;
   inside.Ranks = &ranks;
+  // Where it applies, the table is summed around the deep inside even for a single run: fewer
+  // passes over every particle, and less memory, than the route that supports images and ranks.
+  lsi::EnclosedDeepInside single;
+  inside.KeepDeepInside = kept ? nullptr : (keep ? keep : &single);
+  inside.DeepInside = kept;
+  if (!lsi::CanUseDeepInside(inside)) // (else each sample is its own particle: Order's ids)
+  {
+    inside.OriginalIds =
+      lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
+  }
   vtkSmartPointer<vtkTable> table = lsi::EnclosedTable(inside);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
