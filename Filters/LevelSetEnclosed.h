@@ -9,6 +9,9 @@
 // straddling the surface counts in part, as much as it lies inside; further away, the sign of
 // the level set phi decides. The surface area is the volume integral of the step's derivative,
 // sum_j V_j H'(d_j).
+// Two routes give the table: over every touching particle (LevelSetEnclosed.cxx: with periodic
+// images and MPI ranks), or, on one process without images, around the deep inside
+// (LevelSetEnclosedDeepInside.cxx: fewer passes, and a quick re-run sums the band alone).
 #ifndef LevelSetEnclosed_h
 #define LevelSetEnclosed_h
 

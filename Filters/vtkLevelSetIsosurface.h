@@ -113,22 +113,21 @@ public:
   ///@}
 
   ///@{
-  /** Quick re-runs after small isovalue changes, for exploring (default off). When on, and
-   * nothing but IsoValue changed since the last run, the last surface slides along its normals
-   * onto the new level instead of the method running again: each point by the refinement on
-   * the data (the MLS fit, from the samples of its last fit, the first step from that fit's
-   * quadratic model; or the SPH field, within one kernel support), several times faster. The
-   * flood from the seeds runs at the new isovalue and may change only next to the slid
-   * surface; every point must land within two spacings (on the MLS fit, in steps of half a
-   * spacing, each from the samples nearest to where it starts), between the new inside and
-   * outside. Otherwise (a larger change, a component joined or lost, a cavity opened, points
-   * the SPH field's free boundary added, a periodic box, MPI) the method runs in full. The
-   * points then lie on the same level as the full method's, spread as the last run left them;
-   * the LevelSet array is the last one moved by the change over the data's gradient (within
-   * the band), so it and the Enclosed table match a full run to first order in the change.
-   * The surface may slide two spacings in all before the method runs in full again. Off: every
-   * run is the full method, whatever ran before (reproducible from the parameters alone).
-   * SlidLastSurface tells which happened. */
+  /** Quick re-runs after small isovalue changes, for exploring (default off). When on, and nothing
+   * but IsoValue changed since the last run, the last surface slides along its normals onto the new
+   * level instead of the method running again: each point by the refinement on the data (the MLS
+   * fit, from the samples of its last fit, the first step from that fit's quadratic model; or the
+   * SPH field, within one kernel support, its free boundary shot anew from the new inside's edge of
+   * the cloud), several times faster. The flood from the seeds runs at the new isovalue and may
+   * change only next to the slid surface; every point must land within two spacings (on the MLS
+   * fit, in steps of half a spacing, each from the samples nearest to where it starts), between the
+   * new inside and outside. Otherwise (a larger change, a component joined or lost, a cavity
+   * opened, a periodic box, MPI) the method runs in full. The points then lie on the same level as
+   * the full method's, spread as the last run left them; the LevelSet array is the last one moved
+   * by the change over the data's gradient (within the band), so it and the Enclosed table match a
+   * full run to first order in the change. The surface may slide two spacings in all before the
+   * method runs in full again. Off: every run is the full method, whatever ran before (reproducible
+   * from the parameters alone). SlidLastSurface tells which happened. */
   vtkSetMacro(QuickIsoValueChanges, bool);
   vtkGetMacro(QuickIsoValueChanges, bool);
   vtkBooleanMacro(QuickIsoValueChanges, bool);
