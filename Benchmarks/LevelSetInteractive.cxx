@@ -6,7 +6,8 @@
 //   - the first run of each, per stage, and its mean distance to the exact surface;
 //   - re-runs after an isovalue change (moving 2% and 20% of the inside samples out), a seed
 //     move (by half its radius, inside the same component) and a CurvatureWeight change; the
-//     grid route re-contours its kept grid (isovalue) or only re-connects (seed);
+//     grid route re-contours its kept grid (isovalue) or only re-connects (seed); each re-run,
+//     of either route, the fastest of 3 from the same state;
 //   - the same isovalue changes with QuickIsoValueChanges on (whether the surface slid, its
 //     mean distance to the exact new level and the full method's there);
 //   - the whole filter with 1 and with 2 threads;
@@ -40,6 +41,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -50,6 +52,11 @@
 namespace
 {
 using namespace lsi::cases;
+
+// Re-runs take a few hundredths of a second (the grid route's) to a few tenths: each, of either
+// route, is timed this many times from the same state and the fastest counts (one timing moved
+// by half between runs here).
+constexpr int ReRunRepeats = 3;
 
 struct Options
 {
@@ -309,12 +316,26 @@ int main(int argc, char* argv[])
   const SurfaceMetrics gridMetrics =
     MeasureGridSurface(c, gridPoints, gridNormals, samples, surfaceSpacing);
   const double gridFirst = gridInterpolation + gridContour + gridConnect;
-  double gridIsoSmall = grid.Contour(isoValues[0]);
-  gridIsoSmall += grid.Connect(seeds);
-  double gridIsoLarge = grid.Contour(isoValues[1]);
-  gridIsoLarge += grid.Connect(seeds);
+  // Each re-run of either route, the fastest of ReRunRepeats, each from the first run's state.
+  auto gridReContour = [&](double isoValue) {
+    double fastest = HUGE_VAL;
+    for (int r = 0; r < ReRunRepeats; ++r)
+    {
+      grid.Contour(c.IsoValue);
+      grid.Connect(seeds);
+      fastest = std::min(fastest, grid.Contour(isoValue) + grid.Connect(seeds));
+    }
+    return fastest;
+  };
+  const double gridIsoSmall = gridReContour(isoValues[0]);
+  const double gridIsoLarge = gridReContour(isoValues[1]);
   grid.Contour(c.IsoValue);
-  const double gridSeed = grid.Connect(movedSeeds);
+  double gridSeed = HUGE_VAL;
+  for (int r = 0; r < ReRunRepeats; ++r)
+  {
+    grid.Connect(seeds);
+    gridSeed = std::min(gridSeed, grid.Connect(movedSeeds));
+  }
   report.Add("grid_route.first_run_s", gridFirst);
   report.Add("grid_route.interpolation_s", gridInterpolation);
   report.Add("grid_route.contour_s", gridContour);
@@ -336,16 +357,36 @@ int main(int argc, char* argv[])
   report.Add("level_set.mean_distance_spacings", metrics.MeanDistance);
   report.Add("level_set.isopoints", static_cast<double>(metrics.Isopoints));
 
-  filter->SetIsoValue(isoValues[0]);
-  const double isoSmall = TimedUpdate(filter);
-  AddStages(report, "level_set.isovalue_change_small.", Stages(filter, isoSmall));
-  filter->SetIsoValue(isoValues[1]);
-  const double isoLarge = TimedUpdate(filter);
+  // A re-run from the first run's state (`prepare` restores it), the fastest of ReRunRepeats,
+  // with that run's stages.
+  auto fastestReRun = [&](const std::function<void()>& prepare, const std::function<void()>& change,
+                        std::array<double, 8>& stages) {
+    double fastest = HUGE_VAL;
+    for (int r = 0; r < ReRunRepeats; ++r)
+    {
+      prepare();
+      TimedUpdate(filter);
+      change();
+      const double seconds = TimedUpdate(filter);
+      if (seconds < fastest)
+      {
+        fastest = seconds;
+        stages = Stages(filter, seconds);
+      }
+    }
+    return fastest;
+  };
+  auto atCaseIsoValue = [&]() { filter->SetIsoValue(c.IsoValue); };
+  std::array<double, 8> isoSmallStages{}, isoLargeStages{}, seedStages{};
+  const double isoSmall = fastestReRun(
+    atCaseIsoValue, [&]() { filter->SetIsoValue(isoValues[0]); }, isoSmallStages);
+  AddStages(report, "level_set.isovalue_change_small.", isoSmallStages);
+  const double isoLarge = fastestReRun(
+    atCaseIsoValue, [&]() { filter->SetIsoValue(isoValues[1]); }, isoLargeStages);
   filter->SetIsoValue(c.IsoValue);
-  TimedUpdate(filter);
-  filter->SetSeedCenter(movedSeeds[0].data());
-  const double seed = TimedUpdate(filter);
-  AddStages(report, "level_set.seed_move.", Stages(filter, seed));
+  const double seed = fastestReRun([&]() { filter->SetSeedCenter(seeds[0].data()); },
+    [&]() { filter->SetSeedCenter(movedSeeds[0].data()); }, seedStages);
+  AddStages(report, "level_set.seed_move.", seedStages);
   filter->SetSeedCenter(seeds[0].data());
   TimedUpdate(filter);
   const double fullDistance = MeanLevelDistance(c, filter->GetOutput(0), c.IsoValue);
@@ -354,24 +395,25 @@ int main(int argc, char* argv[])
   // level when the checks allow), each from a full run at the case's isovalue; the mean
   // distance of the slid points to the exact new level, and the full method's there.
   filter->SetQuickIsoValueChanges(true);
-  filter->Modified();
-  TimedUpdate(filter); // the full method, which keeps what a slide needs
   std::array<double, 2> quick{}, quickDistance{}, methodDistance{};
   std::array<bool, 2> slid{};
   std::array<std::array<double, 8>, 2> quickStages{};
   for (std::size_t k = 0; k < 2; ++k)
   {
-    filter->SetIsoValue(isoValues[k]);
-    quick[k] = TimedUpdate(filter);
+    // Each from the full method at the case's isovalue (Modified: not a slide back), which keeps
+    // what a slide needs.
+    quick[k] = fastestReRun(
+      [&]() {
+        filter->SetIsoValue(c.IsoValue);
+        filter->Modified();
+      },
+      [&]() { filter->SetIsoValue(isoValues[k]); }, quickStages[k]);
     slid[k] = filter->GetSlidLastSurface();
-    quickStages[k] = Stages(filter, quick[k]);
     quickDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
     filter->SetQuickIsoValueChanges(false); // the full method at the new isovalue, to compare
     TimedUpdate(filter);
     methodDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
     filter->SetQuickIsoValueChanges(true);
-    filter->SetIsoValue(c.IsoValue);
-    TimedUpdate(filter); // the full method (the property changed since the last run)
   }
   filter->SetQuickIsoValueChanges(false);
 

@@ -120,7 +120,19 @@ bool MLSStencil::Regather(const Eigen::Vector3d& p)
 void MLSStencil::SortGathered()
 {
   // By distance, then by index: the order (and so the fit's rounding) does not depend on
-  // whether the samples came from the tree or from the last gather.
+  // whether the samples came from the tree or from the last gather. (Samples kept from a fit
+  // at the same point come in that order already: a slide's, say.)
+  bool sorted = true;
+  for (std::size_t j = 1; j < this->Held && sorted; ++j)
+  {
+    sorted = this->D2[j - 1] < this->D2[j] ||
+      (this->D2[j - 1] == this->D2[j] && this->Ids[j - 1] <= this->Ids[j]);
+  }
+  if (sorted)
+  {
+    this->GatherRadius = this->FoundCount ? std::sqrt(this->D2[this->FoundCount - 1]) : 0.0;
+    return;
+  }
   this->Sorted.clear();
   for (std::size_t j = 0; j < this->Held; ++j)
   {
