@@ -150,10 +150,16 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
                      "slide, or the input or the method changed)");
     return false;
   }
+  // The last run's state is worked on in place (no copies of the data offsets, of phi and of
+  // the points' kept samples): a refused slide returns false, and the method then runs in full
+  // and rewrites it.
+  last.Valid = false; // until this re-run succeeds
   // The data offsets at the new isovalue, as the method computes them (DataInStorageOrder).
+  // (The last run's are not needed any more: the flood's check compares the flooded samples.)
   auto start = lsi::Clock::now();
   const double isoValue = this->IsoValue;
-  std::vector<double> dataOffsets(last.Values.size());
+  std::vector<double>& dataOffsets = last.DataOffsets;
+  dataOffsets.resize(last.Values.size());
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
@@ -178,8 +184,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
   slide.Quadratic = settings.DataFitOrder == 2;
   slide.ValueChange = isoValue - last.IsoValue;
-  lsi::IsopointSet isopoints = last.Isopoints;
-  std::vector<double> centres = last.FitCentres;
+  lsi::IsopointSet& isopoints = last.Isopoints;
+  std::vector<double>& centres = last.FitCentres;
   lsi::SlideResult slid;
   if (last.Field)
   {
@@ -218,7 +224,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
     return false;
   }
   // From here on the outputs are this run's.
-  std::vector<double> phi = last.Phi;
+  std::vector<double>& phi = last.Phi;
   lsi::ShiftLevelSet(
     *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
   this->IsopointSeconds = lsi::SecondsSince(start);
@@ -244,13 +250,10 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   this->InputSeconds = inputSeconds;
   this->InitializationSeconds = floodSeconds;
   // The state the next re-run starts from.
+  // (The data offsets, phi, the points and their fits' centres are this run's already.)
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
-  last.DataOffsets = std::move(dataOffsets);
   last.Inside = std::move(inside);
   last.IsoValue = isoValue;
-  last.Phi = std::move(phi);
-  last.Isopoints = std::move(isopoints);
-  last.FitCentres = std::move(centres);
   last.Slid += slid.LargestMove;
   this->LastRunTime = this->GetMTime();
   return true;
