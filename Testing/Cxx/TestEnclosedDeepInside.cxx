@@ -4,7 +4,8 @@
 // over every touching sample (LevelSetEnclosed.cxx), on random particles in a unit box with phi
 // the signed distance to two balls, clamped at the band's half width:
 //   - the run that keeps the deep inside gives the full route's table (rows, particle counts
-//     exactly, every number to 1e-9);
+//     exactly, every number to 1e-9), with a cluster of particles inside but not deep that
+//     only the deep particles' neighbour lists join to its ball;
 //   - after the balls shrink by 1.5 spacings or grow by one inside the band (phi changed only
 //     there, as a slide shifts it, the surface moved), the table around the kept deep inside is
 //     again the full route's, and the grown balls, apart before, are one component;
@@ -143,8 +144,10 @@ bool SameBits(vtkTable* a, vtkTable* b)
 int main()
 {
   // Random particles with a scalar and a vector array (their means are columns too).
-  const vtkIdType n = 400000;
-  std::mt19937_64 random(7);
+  // Random particles, and a tight cluster of `clustered` more at the first ball's centre: each
+  // lists only the cluster's own particles, and the deep particles around list them.
+  const vtkIdType random = 400000, clustered = 40, n = random + clustered;
+  std::mt19937_64 generator(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -157,7 +160,15 @@ int main()
   v->SetNumberOfTuples(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double x[3] = { uniform(random), uniform(random), uniform(random) };
+    double x[3] = { uniform(generator), uniform(generator), uniform(generator) };
+    if (i >= random)
+    {
+      const Balls centre;
+      for (int d = 0; d < 3; ++d)
+      {
+        x[d] = centre.Centre[0][d] + 1e-4 * (x[d] - 0.5);
+      }
+    }
     points->SetPoint(i, x);
     f->SetValue(i, 1.0 + x[0]);
     v->SetTuple3(i, x[1], -x[2], 2.0);
@@ -176,6 +187,9 @@ int main()
   for (std::size_t i = 0; i < phi.size(); ++i)
   {
     phi[i] = std::max(-halfWidth, std::min(halfWidth, balls.SignedDistance(geometry.Position(i))));
+    // The cluster inside but not deep: only the deep particles' lists (the rim's) join it to
+    // its ball's component.
+    phi[i] = geometry.Order[i] >= random ? 0.5 * halfWidth : phi[i];
   }
   std::vector<double> surface, normals;
   balls.Surface(surface, normals);
