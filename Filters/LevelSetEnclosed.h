@@ -66,6 +66,7 @@ struct EnclosedInputs
   // nearest surface point (phi's own distances are offset by a fraction of a spacing there).
   const std::vector<double>* SurfacePoints = nullptr;
   const std::vector<double>* SurfaceNormals = nullptr;
+  const PointCloudIndex* SurfaceIndex = nullptr; // over SurfacePoints, if built already
   // Under MPI: components joined across ranks through the ghosts, sums over every rank's
   // particles (each table is then the whole run's).
   const Communicator* Ranks = &SingleProcess();

@@ -151,8 +151,15 @@ std::vector<vtkDataArray*> ArraysToAverage(const EnclosedInputs& in, int& compon
 SurfaceDistance::SurfaceDistance(const EnclosedInputs& in, double reach)
   : In(in)
 {
-  if (!in.SurfacePoints || !in.SurfaceNormals)
+  if (!in.SurfacePoints || !in.SurfaceNormals || in.SurfacePoints->empty())
   {
+    return;
+  }
+  if (!in.Box.Enabled && in.SurfaceIndex) // the points as they are, and their index
+  {
+    this->PointData = in.SurfacePoints->data();
+    this->NormalData = in.SurfaceNormals->data();
+    this->Index = in.SurfaceIndex;
     return;
   }
   // In a periodic box, also the images that reach within `reach` of the box, so that a
@@ -177,7 +184,10 @@ SurfaceDistance::SurfaceDistance(const EnclosedInputs& in, double reach)
   }
   if (!this->Points.empty())
   {
-    this->Index.reset(new PointCloudIndex(this->Points.data(), this->Points.size() / 3));
+    this->Built.reset(new PointCloudIndex(this->Points.data(), this->Points.size() / 3));
+    this->Index = this->Built.get();
+    this->PointData = this->Points.data();
+    this->NormalData = this->Normals.data();
   }
 }
 
@@ -197,7 +207,7 @@ double SurfaceDistance::operator()(std::size_t i) const
   double height = 0.0;
   for (int d = 0; d < 3; ++d)
   {
-    height -= (x[d] - this->Points[3 * nearest + d]) * this->Normals[3 * nearest + d];
+    height -= (x[d] - this->PointData[3 * nearest + d]) * this->NormalData[3 * nearest + d];
   }
   // The tangent plane only holds near its point; beyond, phi's sign decides.
   return std::sqrt(d2) < 2.0 * s ? height : phi;

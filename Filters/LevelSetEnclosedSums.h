@@ -90,8 +90,11 @@ public:
 
 private:
   const EnclosedInputs& In;
-  std::vector<double> Points, Normals;
-  std::unique_ptr<PointCloudIndex> Index;
+  std::vector<double> Points, Normals; // with images in a periodic box
+  const double* PointData = nullptr;
+  const double* NormalData = nullptr;
+  std::unique_ptr<PointCloudIndex> Built;
+  const PointCloudIndex* Index = nullptr;
 };
 
 /// The table of the components with a particle inside, the largest volume first (ties: the

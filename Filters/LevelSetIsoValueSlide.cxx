@@ -277,8 +277,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 }
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const std::vector<double>& points, double reach,
-  std::size_t& changed)
+  const std::vector<char>& after, const PointCloudIndex& index, double reach, std::size_t& changed)
 {
   const std::vector<std::uint32_t> moved = IndicesWhere<std::uint32_t>(
     geometry.NumberOfSamples, [&](std::size_t i) { return before[i] != after[i]; });
@@ -287,11 +286,10 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   {
     return true;
   }
-  if (points.empty())
+  if (index.Size() == 0)
   {
     return false;
   }
-  const PointCloudIndex index(points.data(), points.size() / 3);
   std::atomic<bool> near(true);
   vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end && near.load(std::memory_order_relaxed); ++k)

@@ -65,11 +65,11 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   IsopointSet& isopoints, const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
-/// within `reach` of one of `points` (3 doubles each): the flood then only moved with the
-/// surface. A component joined or lost, or a cavity opened, leaves changed samples away from
-/// the slid surface. `changed` receives how many samples changed.
+/// within `reach` of one of the points that `points` indexes: the flood then only moved with
+/// the surface. A component joined or lost, or a cavity opened, leaves changed samples away
+/// from the slid surface. `changed` receives how many samples changed.
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const std::vector<double>& points, double reach,
+  const std::vector<char>& after, const PointCloudIndex& points, double reach,
   std::size_t& changed);
 
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the

@@ -27,7 +27,7 @@ namespace lsi
 {
 
 bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
-  std::vector<double>& radii, const AbortCheck& aborted)
+  std::vector<double>& radii, const AbortCheck& aborted, const PointCloudIndex* given)
 {
   const std::size_t count = points.size() / 3;
   radii.assign(count, 0.0);
@@ -35,7 +35,12 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
   {
     return true;
   }
-  const PointCloudIndex index(points.data(), count);
+  std::unique_ptr<PointCloudIndex> built;
+  if (!given)
+  {
+    built.reset(new PointCloudIndex(points.data(), count));
+  }
+  const PointCloudIndex& index = given ? *given : *built;
   // The point itself comes first in its own query.
   const std::size_t k = std::min<std::size_t>(count, static_cast<std::size_t>(neighbors) + 1);
   return ParallelForInBlocks(
@@ -219,7 +224,8 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
 
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
-  const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted)
+  const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
+  const PointCloudIndex* pointIndex)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -238,7 +244,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   surface->GetPointData()->SetNormals(normals);
 
   std::vector<double> radii;
-  if (!SplatRadii(isopoints.Points, 6, splatScale, radii, aborted))
+  if (!SplatRadii(isopoints.Points, 6, splatScale, radii, aborted, pointIndex))
   {
     return false;
   }

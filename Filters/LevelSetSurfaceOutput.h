@@ -29,15 +29,17 @@ class SPHField;
 /// aborted.
 /// With an SPH field (`field` not null) the arrays are its interpolants instead
 /// (InterpolatePointArraysSPH).
+/// `pointIndex`, if given, is a search index over the isopoints (else one is built).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
-  const char* activeScalars, const SPHField* field, vtkPolyData* surface,
-  const AbortCheck& aborted);
+  const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
+  const PointCloudIndex* pointIndex = nullptr);
 
 /// Splat radius of each point (3 doubles per point): `factor` times the distance to its
-/// `neighbors`-th nearest other point. Returns false only when aborted.
+/// `neighbors`-th nearest other point, searched in `index` if given (over `points`), else in
+/// one built here. Returns false only when aborted.
 bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
-  std::vector<double>& radii, const AbortCheck& aborted);
+  std::vector<double>& radii, const AbortCheck& aborted, const PointCloudIndex* index = nullptr);
 
 /// For each point of `points`, fits every component of each array of `sources` (input point
 /// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and

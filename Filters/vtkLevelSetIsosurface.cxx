@@ -353,7 +353,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   this->KeepOwnedIsopoints(*geometry, isopoints);
   this->KeepPeriodicCell(isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
-  ok = this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(), surfaceOutput);
+  // One search index over the final isopoints, for the splat radii and the Enclosed table.
+  const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(isopoints.Points);
+  ok = this->MakeSurfaceOutput(
+    input, *geometry, isopoints, field.get(), surfaceIndex.get(), surfaceOutput);
   if (!ranks.All(ok))
   {
     return false;
@@ -364,7 +367,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.DeepInside = lsi::EnclosedDeepInside();
   const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
-    particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr, nullptr);
+    surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
+    nullptr);
   this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
@@ -422,8 +426,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
   const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-  vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
-  const lsi::EnclosedDeepInside* kept)
+  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
+  lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   lsi::MakeParticleOutput(
@@ -450,6 +454,7 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
   inside.SurfacePoints = &isopoints.Points;
   inside.SurfaceNormals = &isopoints.Normals;
+  inside.SurfaceIndex = surfaceIndex;
   inside.Ranks = &ranks;
   // Where it applies, the table is summed around the deep inside even for a single run: fewer
   // passes over every particle, and less memory, than the route that supports images and ranks.
@@ -1220,7 +1225,7 @@ lsi::SPHFieldRequest vtkLevelSetIsosurface::SPHRequest() const
 
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints, const lsi::SPHField* field,
-  vtkPolyData* output)
+  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output)
 {
   const auto start = Clock::now();
   int association = -1;
@@ -1228,7 +1233,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   vtkNew<vtkPolyData> surface;
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, isopoints, this->SplatScale,
         this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field, surface,
-        this->Stage(SurfaceStage)))
+        this->Stage(SurfaceStage), surfaceIndex))
   {
     return false;
   }

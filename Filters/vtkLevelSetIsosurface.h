@@ -81,6 +81,7 @@ class vtkTable;
 namespace lsi
 {
 struct EnclosedDeepInside;
+class PointCloudIndex;
 struct EvolutionSettings;
 struct IsopointSet;
 struct IsopointSettings;
@@ -603,16 +604,18 @@ private:
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
     const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);
+  // (`surfaceIndex`: a search index over the isopoints, or null when there are none.)
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const lsi::IsopointSet& isopoints, const lsi::SPHField* field, vtkPolyData* output);
+    const lsi::IsopointSet& isopoints, const lsi::SPHField* field,
+    const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
   // The table's deep inside is kept for quick re-runs (`keep`), or taken from the last run's.
   void MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
     const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
     const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-    vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
-    const lsi::EnclosedDeepInside* kept);
+    const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
+    lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept);
 
   // The user's parameters, for the step files.
   lsi::RequestedParameters RequestedParameters() const;

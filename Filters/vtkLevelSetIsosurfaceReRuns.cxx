@@ -213,9 +213,13 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   // A sample that changed sides lies between the old and the new level: within the largest
   // move of the level and the points' spacing (two cells) of a slid point.
   const double reach = slid.LargestMove + 2.0 * settings.CellSize;
-  const bool accepted = slid.Accepted &&
+  // One search index over the slid points, for this check, the splat radii and the Enclosed
+  // table.
+  const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
+    slid.Accepted ? lsi::IndexOfPoints(isopoints.Points) : nullptr;
+  const bool accepted = slid.Accepted && surfaceIndex &&
     last.Slid + slid.LargestMove <= MostSlidSpacings * last.Spacing &&
-    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, isopoints.Points, reach, changed);
+    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, *surfaceIndex, reach, changed);
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
                 << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
                 << slid.LargestMove << ", " << changed << " samples changed sides");
@@ -228,13 +232,14 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   lsi::ShiftLevelSet(
     *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
   this->IsopointSeconds = lsi::SecondsSince(start);
-  if (!this->MakeSurfaceOutput(input, *geometry, isopoints, last.Field.get(), surfaceOutput))
+  if (!this->MakeSurfaceOutput(
+        input, *geometry, isopoints, last.Field.get(), surfaceIndex.get(), surfaceOutput))
   {
     return false;
   }
   start = lsi::Clock::now();
   this->MakeParticleOutputs(input, input, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
-    isopoints, particleOutput, enclosed, nullptr, &last.DeepInside);
+    isopoints, surfaceIndex.get(), particleOutput, enclosed, nullptr, &last.DeepInside);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (this->CheckAbort())

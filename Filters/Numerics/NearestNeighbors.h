@@ -137,6 +137,15 @@ private:
   std::atomic<bool> Reordered{ false };        // whether a median cut reordered points
 };
 
+/// A search index over `points` (3 doubles each; they must outlive it), or null when there are
+/// none.
+inline std::unique_ptr<PointCloudIndex> IndexOfPoints(const std::vector<double>& points)
+{
+  return points.size() < 3
+    ? nullptr
+    : std::unique_ptr<PointCloudIndex>(new PointCloudIndex(points.data(), points.size() / 3));
+}
+
 /// Whether the k points gathered as the nearest to a point c are still the k nearest to a point
 /// `step` away from c, given that each lies within `farthest` of the new point and that every
 /// point not gathered lies at least `outerRadius` from c (so at least outerRadius - step from
