@@ -41,7 +41,10 @@ namespace lsi
 /// surface, for the passes over the band alone.
 struct EnclosedDeepInside
 {
-  static constexpr std::uint32_t None = 0xffffffffu;
+  enum : std::uint32_t
+  {
+    None = 0xffffffffu // (an enumerator: never odr-used, in any C++ standard)
+  };
   std::vector<std::uint32_t> Group; // per sample (storage order): its group, or None
   std::vector<std::uint32_t> Rim;   // deep samples listing a neighbour that is not deep
   std::vector<double> Sums;         // each group's sums, packed under its lowest particle id
