@@ -112,7 +112,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     double& w = widestHere.Local();
     for (vtkIdType i = begin; i < end; ++i)
     {
-      touching[i] = phi[i] > 0.0 || (phi[i] > in.FarOutside && phi[i] > -width(i));
+      touching[i] = Touches(in, static_cast<std::size_t>(i));
       w = touching[i] ? std::max(w, 2.0 * width(i)) : w;
     }
   });
@@ -151,28 +151,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // are near in memory there, where slots are in input order); with periodic images, each
   // sample is also linked to the first touching one of its slot. Serial: a parallel union-find
   // (compare-and-swap links) measured no faster.
-  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> link(geometry.NumberOfSamples);
-  vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      link[i] = static_cast<std::uint32_t>(i);
-    }
-  });
-  auto find = [&](std::uint32_t i) {
-    while (link[i] != i)
-    {
-      link[i] = link[link[i]];
-      i = link[i];
-    }
-    return i;
-  };
-  auto join = [&](std::uint32_t i, std::uint32_t j) {
-    const std::uint32_t a = find(i), b = find(j);
-    if (a != b)
-    {
-      link[std::max(a, b)] = std::min(a, b);
-    }
-  };
+  Links links(geometry.NumberOfSamples);
+  auto& link = links.Parent; // flattened below, then read in parallel
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
     if (!touches(i) || geometry.IsTruncated(i))
@@ -184,7 +164,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     {
       if (touches(ids[m]))
       {
-        join(static_cast<std::uint32_t>(i), ids[m]);
+        links.Join(static_cast<std::uint32_t>(i), ids[m]);
       }
     }
   }
@@ -197,7 +177,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
       {
         std::int64_t& first = firstOfSlot[static_cast<std::size_t>(slot[i])];
         first < 0 ? void(first = static_cast<std::int64_t>(i))
-                  : join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(first));
+                  : links.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(first));
       }
     }
   }
@@ -208,7 +188,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   {
     if (touches(i))
     {
-      const std::uint32_t root = find(static_cast<std::uint32_t>(i));
+      const std::uint32_t root = links.Find(static_cast<std::uint32_t>(i));
       link[i] = root; // flattened: read in parallel below
       lowest[root] = root == i ? slot[i] : std::min(lowest[root], slot[i]);
     }

@@ -13,7 +13,6 @@
 #include "vtkTable.h"
 
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 
 namespace lsi
@@ -22,14 +21,6 @@ namespace
 {
 using namespace enclosed;
 
-// Samples at or below phi = FarOutside are far outside; the others touch the inside when
-// inside or within a shell width of it (LevelSetEnclosed.cxx's rule).
-bool Touches(const EnclosedInputs& in, std::size_t i)
-{
-  const double phi = (*in.Phi)[i];
-  return phi > 0.0 || (phi > in.FarOutside && phi > -in.Geometry->RadiusOf(i));
-}
-
 // Deep inside: phi at the band's half width (where the slides leave it) and beyond two shell
 // widths (so that its signed distance is phi, and its step 1).
 bool DeepInside(const EnclosedInputs& in, std::size_t i)
@@ -37,34 +28,6 @@ bool DeepInside(const EnclosedInputs& in, std::size_t i)
   const double phi = (*in.Phi)[i];
   return phi >= -in.FarOutside && phi > 2.0 * in.Geometry->RadiusOf(i);
 }
-
-// Union-find over 0..n-1, linked towards lower indices.
-struct Links
-{
-  std::vector<std::uint32_t> Parent;
-  explicit Links(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), 0u);
-  }
-  std::uint32_t Find(std::uint32_t i)
-  {
-    while (this->Parent[i] != i)
-    {
-      this->Parent[i] = this->Parent[this->Parent[i]];
-      i = this->Parent[i];
-    }
-    return i;
-  }
-  void Join(std::uint32_t i, std::uint32_t j)
-  {
-    const std::uint32_t a = this->Find(i), b = this->Find(j);
-    if (a != b)
-    {
-      this->Parent[std::max(a, b)] = std::min(a, b);
-    }
-  }
-};
 
 // The sums of `samples` by group (groupOf(k) for the k-th sample, below `groups`), in fixed
 // chunks summed in parallel and added in chunk order: the same on any number of threads.

@@ -7,6 +7,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -17,6 +18,17 @@ namespace lsi
 {
 namespace enclosed
 {
+
+Links::Links(std::size_t n)
+  : Parent(n)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      this->Parent[i] = static_cast<std::uint32_t>(i);
+    }
+  });
+}
 
 void Sums::Add(const Sums& other, const PeriodicBox& box)
 {

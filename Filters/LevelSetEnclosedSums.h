@@ -14,7 +14,9 @@
 #include "vtkDataArray.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <vector>
@@ -47,6 +49,39 @@ inline double StepDerivative(double phi, double width)
 {
   return std::abs(phi) >= width ? 0.0 : (1.0 + std::cos(Pi * phi / width)) / (2.0 * width);
 }
+
+/// Whether sample i touches the inside: inside (phi > 0), or within a shell width (its
+/// neighbourhood radius) outside it and not far outside (phi above FarOutside).
+inline bool Touches(const EnclosedInputs& in, std::size_t i)
+{
+  const double phi = (*in.Phi)[i];
+  return phi > 0.0 || (phi > in.FarOutside && phi > -in.Geometry->RadiusOf(i));
+}
+
+/// Union-find over 0..n-1, each set linked towards its lowest index (so a root is its set's
+/// lowest member). The links start in parallel: at 20M samples they are 80 MB.
+struct Links
+{
+  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Parent;
+  explicit Links(std::size_t n);
+  std::uint32_t Find(std::uint32_t i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  void Join(std::uint32_t i, std::uint32_t j)
+  {
+    const std::uint32_t a = this->Find(i), b = this->Find(j);
+    if (a != b)
+    {
+      this->Parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+};
 
 /// One component's (or a part of one's) running sums.
 struct Sums
