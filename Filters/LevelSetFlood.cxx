@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <queue>
+#include <thread>
 
 namespace lsi
 {
@@ -192,8 +193,9 @@ std::vector<std::uint32_t> InsideAndNeighbors(
 // propagation is serial, and computes any list still missing as it goes).
 // Each wave is spread in parallel: a sample reached by several threads at once takes the origin
 // of whichever claims it first, which can only change which lists are fetched ahead.
-void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t>& holders,
-  double halfWidth, SerialAbortCheck& stop)
+// Returns the samples reached, wave by wave (nearest the front first).
+std::vector<std::uint32_t> PrefetchBand(const Neighborhoods& geometry,
+  const std::vector<std::uint32_t>& holders, double halfWidth, SerialAbortCheck& stop)
 {
   constexpr std::uint32_t None = ~std::uint32_t(0);
   const std::size_t n = geometry.NumberOfSamples;
@@ -202,9 +204,10 @@ void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t
   {
     origin[i].store(i, std::memory_order_relaxed);
   }
-  std::vector<std::uint32_t> wave(holders);
+  std::vector<std::uint32_t> wave(holders), reachedAll;
   while (!wave.empty() && !stop.Stop())
   {
+    reachedAll.insert(reachedAll.end(), wave.begin(), wave.end());
     geometry.EnsureNeighbors(wave);
     vtkSMPThreadLocal<std::vector<std::uint32_t>> reached;
     vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), [&](vtkIdType begin, vtkIdType end) {
@@ -234,6 +237,7 @@ void PrefetchBand(const Neighborhoods& geometry, const std::vector<std::uint32_t
       wave.insert(wave.end(), part.begin(), part.end());
     }
   }
+  return reachedAll;
 }
 } // namespace
 
@@ -299,7 +303,16 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       holders.push_back(static_cast<std::uint32_t>(i));
     }
   }
-  PrefetchBand(geometry, holders, halfWidth, stop);
+  const std::vector<std::uint32_t> band = PrefetchBand(geometry, holders, halfWidth, stop);
+  // The propagation below is serial: meanwhile a helper thread computes the band's MLS
+  // stencils, which the evolution needs next (the same stencils whoever computes them).
+  std::atomic<bool> propagated(false);
+  std::thread helper;
+  if (vtkSMPTools::GetEstimatedNumberOfThreads() > 1 && !stop.Stop())
+  {
+    helper =
+      std::thread([&]() { geometry.PrecomputeStencils(band.data(), band.size(), propagated); });
+  }
   // A sample farther than halfWidth takes an offer (phi clamps it to halfWidth either way) but
   // passes nothing on: it never enters the heap.
   const double reach = halfWidth * halfWidth;
@@ -329,13 +342,20 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       }
     }
   }
+  propagated = true;
+  if (helper.joinable())
+  {
+    helper.join();
+  }
   result.Aborted = result.Aborted || stop.WasStopped();
   phi.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const double d = std::min(std::sqrt(distance[i]), halfWidth);
-    phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const double d = std::min(std::sqrt(distance[i]), halfWidth);
+      phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
+    }
+  });
   return result;
 }
 

@@ -37,12 +37,23 @@ std::uint64_t BlockHash(vtkIdType count, std::uint64_t seed, MixIn&& mixIn)
     0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
       for (vtkIdType b = first; b < last; ++b)
       {
-        std::uint64_t h = 0;
-        for (vtkIdType i = b * Block; i < std::min(count, (b + 1) * Block); ++i)
+        // Four interleaved lanes (item i in lane i % 4): independent chains of the mix's
+        // multiplications, which one chain would run one after another.
+        std::uint64_t lanes[4] = { 0, 1, 2, 3 };
+        const vtkIdType first = b * Block, last = std::min(count, (b + 1) * Block);
+        vtkIdType i = first;
+        for (; i + 4 <= last; i += 4)
         {
-          h = mixIn(i, h);
+          lanes[0] = mixIn(i, lanes[0]);
+          lanes[1] = mixIn(i + 1, lanes[1]);
+          lanes[2] = mixIn(i + 2, lanes[2]);
+          lanes[3] = mixIn(i + 3, lanes[3]);
         }
-        blocks[b] = h;
+        for (; i < last; ++i)
+        {
+          lanes[(i - first) & 3] = mixIn(i, lanes[(i - first) & 3]);
+        }
+        blocks[b] = Mix(Mix(Mix(lanes[0], lanes[1]), lanes[2]), lanes[3]);
       }
     });
   std::uint64_t h = seed;

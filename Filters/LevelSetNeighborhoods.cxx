@@ -18,6 +18,7 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
 #include <functional>
 #include <mutex>
@@ -308,37 +309,53 @@ bool IsThin(const std::uint32_t* ids, std::size_t count, const Neighborhoods& ge
 }
 } // namespace
 
+bool Neighborhoods::ComputeStencil(std::size_t i, std::vector<double>& scratch, bool& thin) const
+{
+  const std::size_t stride = static_cast<std::size_t>(this->Stride);
+  scratch.resize(3 * stride);
+  const std::uint32_t* ids = this->NeighborsOf(i);
+  const double radius = this->RadiusOf(i);
+  const bool ok = BuildLinearStencil(
+    this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); }, radius,
+    LinearStencilView{ scratch.data(), nullptr }); // zero when singular
+  // Stored times h_i (see GradientStencil), of order one in any unit of length.
+  std::transform(scratch.begin(), scratch.end(), &this->GradientStencil[3 * i * stride],
+    [radius](double c) { return static_cast<float>(c * radius); });
+  thin = ok && IsThin(ids, stride, *this);
+  return ok;
+}
+
 void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count) const
 {
   const auto start = Clock::now();
   std::vector<std::size_t> missing;
   for (std::size_t k = 0; k < count; ++k)
   {
-    if (this->StencilState[samples[k]] == 0)
+    unsigned char& state = this->StencilState[samples[k]];
+    if (state == 0)
     {
       missing.push_back(samples[k]);
     }
+    else if (state >= 3) // computed ahead: counted now, as if computed here
+    {
+      ++this->ComputedStencils;
+      this->SingularSamples += state == 4 ? 1 : 0;
+      this->ThinSamples += state == 5 ? 1 : 0;
+      state = state == 4 ? 2 : 1;
+    }
   }
-  const std::size_t stride = static_cast<std::size_t>(this->Stride);
   vtkSMPThreadLocal<std::vector<double>> scratch;
   vtkSMPThreadLocal<std::size_t> singular(0), thin(0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), [&](vtkIdType begin, vtkIdType end) {
     std::vector<double>& stencil = scratch.Local();
-    stencil.resize(3 * stride);
     for (vtkIdType k = begin; k < end; ++k)
     {
       const std::size_t i = missing[k];
-      const std::uint32_t* ids = this->NeighborsOf(i);
-      const double radius = this->RadiusOf(i);
-      const bool ok = BuildLinearStencil(
-        this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); }, radius,
-        LinearStencilView{ stencil.data(), nullptr }); // zero when singular
-      // Stored times h_i (see GradientStencil), of order one in any unit of length.
-      std::transform(stencil.begin(), stencil.end(), &this->GradientStencil[3 * i * stride],
-        [radius](double c) { return static_cast<float>(c * radius); });
+      bool isThin = false;
+      const bool ok = this->ComputeStencil(i, stencil, isThin);
       this->StencilState[i] = ok ? 1 : 2;
       singular.Local() += !ok;
-      thin.Local() += ok && IsThin(ids, stride, *this);
+      thin.Local() += isThin;
     }
   });
   for (std::size_t s : singular)
@@ -353,6 +370,22 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
   this->StencilSeconds += SecondsSince(start);
 }
 
+void Neighborhoods::PrecomputeStencils(
+  const std::uint32_t* samples, std::size_t count, const std::atomic<bool>& stop) const
+{
+  std::vector<double> scratch;
+  for (std::size_t k = 0; k < count && !stop.load(std::memory_order_relaxed); ++k)
+  {
+    unsigned char& state = this->StencilState[samples[k]];
+    if (state == 0)
+    {
+      bool thin = false;
+      const bool ok = this->ComputeStencil(samples[k], scratch, thin);
+      state = !ok ? 4 : thin ? 5 : 3;
+    }
+  }
+}
+
 namespace
 {
 // The tree build cannot stop half way (0.04 s at 2M uniform points, more on clustered data): it
@@ -365,6 +398,10 @@ struct TreeBuild
   std::vector<std::uint32_t> TreeOrder;   // the tree's reordering of Positions
   std::unique_ptr<PointCloudIndex> Index;
   std::atomic<bool> Done{ false };
+  // Wakes the waiting thread as soon as the build is done (a sleep between abort checks would
+  // add half its length to every build, on average).
+  std::mutex Mutex;
+  std::condition_variable Finished;
 };
 
 // The threads of abandoned builds. Each is joined when the next one is abandoned after it has
@@ -417,7 +454,11 @@ bool BuildTree(
     build->Index.reset(new PointCloudIndex(build->Positions, build->MortonWords, build->TreeOrder,
       [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); }));
     std::vector<std::uint64_t>().swap(build->MortonWords);
-    build->Done = true;
+    {
+      std::lock_guard<std::mutex> lock(build->Mutex);
+      build->Done = true;
+    }
+    build->Finished.notify_all();
   });
   while (!build->Done)
   {
@@ -426,7 +467,9 @@ bool BuildTree(
       AbandonedBuilds::Add(std::move(worker), build);
       return false;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::unique_lock<std::mutex> lock(build->Mutex);
+    build->Finished.wait_for(
+      lock, std::chrono::milliseconds(10), [&]() { return build->Done.load(); });
   }
   worker.join();
   out.Positions = std::move(build->Positions);

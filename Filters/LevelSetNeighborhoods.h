@@ -77,7 +77,9 @@ struct Neighborhoods
   // unit of length (a stencil goes as 1 / h_i, which float would overflow or flush to zero for
   // lengths beyond about 1e+-30); GradientAt and DivergenceAt divide h_i back out in double.
   mutable std::unique_ptr<float[]> GradientStencil;
-  mutable std::vector<unsigned char> StencilState; // 0: not computed, 1: ready, 2: singular
+  // 0: not computed, 1: ready, 2: singular; computed ahead (PrecomputeStencils) and not yet
+  // asked for: 3 ready, 4 singular, 5 ready and thin (counted when first asked for).
+  mutable std::vector<unsigned char> StencilState;
   mutable std::size_t ComputedStencils = 0;
 
   double MeanRadius = 0.0; // mean h_i over the fixed sample of the samples (InRadiusSample)
@@ -137,6 +139,13 @@ struct Neighborhoods
   {
     this->EnsureStencils(samples.data(), samples.size());
   }
+  /// Computes the missing stencils of `samples` one after another on the calling thread, until
+  /// `stop` is set: for a helper thread to fill the cache while the main thread runs a serial
+  /// loop that reads no stencil (the flood's distance propagation). Nothing else may compute
+  /// stencils meanwhile. They count (ComputedStencils, SingularSamples, ThinSamples) only once
+  /// EnsureStencils asks for them, so the counts do not depend on the number of threads.
+  void PrecomputeStencils(
+    const std::uint32_t* samples, std::size_t count, const std::atomic<bool>& stop) const;
 
   /// The MLS gradient at sample i of value(m), the values at its neighbours m = 0 .. Stride - 1
   /// (slot 0 is i itself). Its stencil must be computed (EnsureStencils).
@@ -243,6 +252,9 @@ private:
   {
     return &this->GradientStencil[3 * i * this->Stride];
   }
+  /// Sample i's stencil into the cache (`scratch`: 3 * Stride doubles); whether it is regular,
+  /// and whether its neighbourhood is thin.
+  bool ComputeStencil(std::size_t i, std::vector<double>& scratch, bool& thin) const;
   void EnsureRow(std::size_t i, double nearbyRadius = 0.0) const
   {
     if (this->Rows->State[i].load(std::memory_order_acquire) != 2)
