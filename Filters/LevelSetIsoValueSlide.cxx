@@ -89,16 +89,19 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
     result.Refusal = "the last surface kept no nearest samples";
     return result;
   }
+  // The results go to new arrays, kept only if every point slid. (The kept samples, the
+  // largest, are not copied: the few points that gather anew record theirs.)
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
-  std::vector<std::uint32_t> samples(isopoints.FitSamples);
+  const std::vector<std::uint32_t>& samples = isopoints.FitSamples;
   std::vector<double> newCentres(points.size());
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
-  std::vector<double> models(
-    withModels ? isopoints.FitModels : std::vector<double>(ModelSize * count));
+  std::vector<double> models(ModelSize * count);
   std::atomic<int> refusal(None);
   struct Scratch : SlideScratch
   {
     std::shared_ptr<MLSEvaluator> Evaluator;
+    std::vector<std::size_t> Regathered;          // points whose fit's samples changed
+    std::vector<std::uint32_t> RegatheredSamples; // theirs, `fit` each
   };
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {
@@ -146,7 +149,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
           if (useModel)
           {
             useModel = false;
-            LoadModel(&models[ModelSize * i], g, hessian);
+            LoadModel(&isopoints.FitModels[ModelSize * i], g, hessian);
             value = -settings.ValueChange;
             lastHessian = hessian;
             if (g.squaredNorm() > 0.0) // none where the refinement left the point
@@ -196,9 +199,10 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       }
       if (nearest != &samples[fit * i])
       {
+        s.Regathered.push_back(i);
         for (std::size_t j = 0; j < fit; ++j)
         {
-          samples[fit * i + j] = j < found ? nearest[j] : NoSample;
+          s.RegatheredSamples.push_back(j < found ? nearest[j] : NoSample);
         }
       }
       for (int d = 0; d < 3; ++d)
@@ -212,7 +216,14 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   {
     isopoints.Points.swap(points);
     isopoints.Normals.swap(normals);
-    isopoints.FitSamples.swap(samples);
+    for (const Scratch& s : scratch)
+    {
+      for (std::size_t k = 0; k < s.Regathered.size(); ++k)
+      {
+        std::copy(&s.RegatheredSamples[fit * k], &s.RegatheredSamples[fit * k] + fit,
+          &isopoints.FitSamples[fit * s.Regathered[k]]);
+      }
+    }
     centres.swap(newCentres);
     isopoints.FitModels.swap(models);
   }

@@ -233,7 +233,12 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   };
   thread_local std::vector<Term> terms;
   terms.resize(count);
-  Matrix10 normal = Matrix10::Zero(); // its lower triangle (symmetric)
+  // The lower triangle of the sum of weight b b^T, column by column, each column from the even
+  // row at or above its diagonal entry: fixed, branch-free pairs of rows, which the compiler
+  // turns into packed arithmetic (a loop from the diagonal itself ran scalar and branchy, and
+  // was most of a fit's time). The entries this adds above the diagonal are never read, and
+  // each entry below it is the same sum of the same products as before, to the bit.
+  alignas(16) double columns[10][10] = {};
   Vector10 right = Vector10::Zero();
   double sumWeights = 0.0, sumSquaredWeights = 0.0;
   for (std::size_t j = 0; j < count; ++j)
@@ -241,18 +246,26 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     Term& t = terms[j];
     t.Basis = basis(j, t.Weight);
     t.Value = value(j);
-    for (int c = 0; c < 10; ++c) // the lower triangle of weight b b^T
+    alignas(16) double b[10];
+    for (int r = 0; r < 10; ++r)
     {
-      const double wc = t.Weight * t.Basis[c];
-      for (int r = c; r < 10; ++r)
+      b[r] = t.Basis[r];
+    }
+#pragma GCC unroll 10
+    for (int c = 0; c < 10; ++c)
+    {
+      const double wc = t.Weight * b[c];
+#pragma GCC unroll 10
+      for (int r = c & ~1; r < 10; ++r)
       {
-        normal(r, c) += wc * t.Basis[r];
+        columns[c][r] += wc * b[r];
       }
     }
     right += (t.Weight * t.Value) * t.Basis;
     sumWeights += t.Weight;
     sumSquaredWeights += t.Weight * t.Weight;
   }
+  const Matrix10 normal = Eigen::Map<const Matrix10>(&columns[0][0]); // column-major
   // The linear fit: the leading 4 x 4 block (scale-free singularity test as in
   // BuildLinearStencil).
   const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>().selfadjointView<Eigen::Lower>();
