@@ -34,19 +34,6 @@ struct LinearStencilView
   double* Value;    // count values, may be null
 };
 
-/// Builds the stencil of a weighted linear fit around `centre` from `count` neighbour positions
-/// (each a pointer to 3 doubles, given by `position(j)`) with support radius h. Coordinates are
-/// centred and scaled by 1/h before fitting, for conditioning. Returns false when the fit is
-/// singular (fewer than four weighted points in general position: duplicate, collinear or
-/// coplanar neighbourhoods); the stencil is then left zero.
-/// A sample's position relative to `centre` in units of h, with the constant term: the linear
-/// fit's basis (q, 1).
-inline Eigen::Vector4d ScaledLinearBasis(const double* x, const double centre[3], double invH)
-{
-  return Eigen::Vector4d(
-    (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
-}
-
 /// The normal matrix of the weighted linear fit at `centre` over `count` samples, in units of
 /// h; false when singular (the weighted samples do not span 3D: the determinant relative to the
 /// trace scale is a cheap, scale-free test, the basis being O(1)).
@@ -81,12 +68,16 @@ bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn po
   return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * std::pow(scale, 4);
 }
 
+/// Builds the stencil of a weighted linear fit around `centre` from `count` neighbour positions
+/// (each a pointer to 3 doubles, given by `position(j)`) with support radius h. Coordinates are
+/// centred and scaled by 1/h before fitting, for conditioning. Returns false when the fit is
+/// singular (fewer than four weighted points in general position: duplicate, collinear or
+/// coplanar neighbourhoods); the stencil is then left zero.
 template <typename PositionFn>
 bool BuildLinearStencil(
   const double centre[3], std::size_t count, PositionFn position, double h, LinearStencilView out)
 {
   using Matrix4 = Eigen::Matrix4d;
-  using Vector4 = Eigen::Vector4d;
   for (std::size_t j = 0; j < 3 * count; ++j)
   {
     out.Gradient[j] = 0.0;
@@ -111,9 +102,19 @@ bool BuildLinearStencil(
   const Matrix4 inverse = normal.inverse();
   for (std::size_t j = 0; j < count; ++j)
   {
-    const Vector4 q = ScaledLinearBasis(position(j), centre, invH);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    const Vector4 c = inverse * ((w * w) * q);
+    // In scalars (as LinearValueWeights), in the order of Eigen's product: the same bits.
+    const double* x = position(j);
+    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
+                 qz = (x[2] - centre[2]) * invH;
+    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
+    const double w2 = w * w;
+    const double v[4] = { w2 * qx, w2 * qy, w2 * qz, w2 };
+    double c[4];
+    for (int r = 0; r < 4; ++r)
+    {
+      c[r] = ((inverse(r, 0) * v[0] + inverse(r, 1) * v[1]) + inverse(r, 2) * v[2]) +
+        inverse(r, 3) * v[3];
+    }
     // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
     out.Gradient[3 * j + 0] = c[0] * invH;
     out.Gradient[3 * j + 1] = c[1] * invH;
@@ -145,11 +146,16 @@ bool LinearValueWeights(
     return false;
   }
   const Eigen::Vector4d last = normal.inverse().row(3).transpose();
+  const double l0 = last[0], l1 = last[1], l2 = last[2], l3 = last[3];
   for (std::size_t j = 0; j < count; ++j)
   {
-    const Eigen::Vector4d q = ScaledLinearBasis(position(j), centre, invH);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    weights[j] = (w * w) * last.dot(q);
+    // In scalars: a Vector4d built per sample went through the stack, and reading it back
+    // whole stalled on every sample. (The dot product's order is Eigen's: the same bits.)
+    const double* x = position(j);
+    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
+                 qz = (x[2] - centre[2]) * invH;
+    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
+    weights[j] = (w * w) * ((l0 * qx + l2 * qz) + (l1 * qy + l3));
   }
   return true;
 }
@@ -169,18 +175,31 @@ bool FitLinear(const double centre[3], std::size_t count, PositionFn position, V
     return false;
   }
   const double invH = 1.0 / h;
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d right = Eigen::Vector4d::Zero();
+  // The sums of w^2 q q^T and of w^2 q f in plain arrays, entry by entry as Eigen's outer
+  // product sums them (the same bits), without a Vector4d per sample: built through the stack,
+  // reading it back whole stalled on every sample.
+  alignas(16) double sums[4][4] = {}; // sums[c][r]: column-major, as Matrix4d
+  alignas(16) double rightSums[4] = {};
   for (std::size_t j = 0; j < count; ++j)
   {
     const double* x = position(j);
-    const Eigen::Vector4d q(
-      (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH, (x[2] - centre[2]) * invH, 1.0);
-    const double w = MLSWeight(q.head<3>().squaredNorm(), 1.0);
-    const Eigen::Vector4d weighted = (w * w) * q;
-    normal.noalias() += weighted * q.transpose();
-    right += weighted * value(j);
+    alignas(16) const double q[4] = { (x[0] - centre[0]) * invH, (x[1] - centre[1]) * invH,
+      (x[2] - centre[2]) * invH, 1.0 };
+    const double w = MLSWeight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2], 1.0);
+    const double w2 = w * w;
+    alignas(16) const double weighted[4] = { w2 * q[0], w2 * q[1], w2 * q[2], w2 * q[3] };
+    const double f = value(j);
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int r = 0; r < 4; ++r)
+      {
+        sums[c][r] += weighted[r] * q[c];
+      }
+      rightSums[c] += weighted[c] * f;
+    }
   }
+  const Eigen::Matrix4d normal = Eigen::Map<const Eigen::Matrix4d>(&sums[0][0]);
+  const Eigen::Vector4d right = Eigen::Map<const Eigen::Vector4d>(rightSums);
   const double scale = normal.trace() / 4.0; // the singularity test of BuildLinearStencil
   if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
   {
