@@ -308,6 +308,19 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   // stencils, which the evolution needs next (the same stencils whoever computes them).
   std::atomic<bool> propagated(false);
   std::thread helper;
+  struct StopAndJoin // also if the propagation throws: a joinable thread may not be destroyed
+  {
+    std::atomic<bool>& Stop;
+    std::thread& Worker;
+    ~StopAndJoin()
+    {
+      this->Stop = true;
+      if (this->Worker.joinable())
+      {
+        this->Worker.join();
+      }
+    }
+  } stopHelper{ propagated, helper };
   if (vtkSMPTools::GetEstimatedNumberOfThreads() > 1 && !stop.Stop())
   {
     helper =

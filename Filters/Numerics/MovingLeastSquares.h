@@ -254,9 +254,9 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   terms.resize(count);
   // The lower triangle of the sum of weight b b^T, column by column, each column from the even
   // row at or above its diagonal entry: fixed, branch-free pairs of rows, which the compiler
-  // turns into packed arithmetic (a loop from the diagonal itself ran scalar and branchy, and
-  // was most of a fit's time). The entries this adds above the diagonal are never read, and
-  // each entry below it is the same sum of the same products as before, to the bit.
+  // turns into packed arithmetic (a loop from the diagonal itself compiled to scalar, branchy
+  // code). The entries this adds above the diagonal are never read, and each entry below it is
+  // the same sum of the same products, to the bit.
   alignas(16) double columns[10][10] = {};
   Vector10 right = Vector10::Zero();
   double sumWeights = 0.0, sumSquaredWeights = 0.0;
