@@ -239,6 +239,35 @@ std::vector<std::uint32_t> PrefetchBand(const Neighborhoods& geometry,
   }
   return reachedAll;
 }
+
+// A thread that computes the MLS stencils of `samples` (Neighborhoods::PrecomputeStencils)
+// until Finish, which stops and joins it; so does the destructor, also when the caller throws.
+class StencilHelper
+{
+public:
+  StencilHelper(const Neighborhoods& geometry, const std::vector<std::uint32_t>& samples, bool run)
+  {
+    if (run)
+    {
+      this->Worker = std::thread([&geometry, &samples, this]() {
+        geometry.PrecomputeStencils(samples.data(), samples.size(), this->Stop);
+      });
+    }
+  }
+  ~StencilHelper() { this->Finish(); }
+  void Finish()
+  {
+    this->Stop = true;
+    if (this->Worker.joinable())
+    {
+      this->Worker.join();
+    }
+  }
+
+private:
+  std::atomic<bool> Stop{ false };
+  std::thread Worker;
+};
 } // namespace
 
 std::vector<char> FloodedInside(const Neighborhoods& geometry,
@@ -306,26 +335,8 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   const std::vector<std::uint32_t> band = PrefetchBand(geometry, holders, halfWidth, stop);
   // The propagation below is serial: meanwhile a helper thread computes the band's MLS
   // stencils, which the evolution needs next (the same stencils whoever computes them).
-  std::atomic<bool> propagated(false);
-  std::thread helper;
-  struct StopAndJoin // also if the propagation throws: a joinable thread may not be destroyed
-  {
-    std::atomic<bool>& Stop;
-    std::thread& Worker;
-    ~StopAndJoin()
-    {
-      this->Stop = true;
-      if (this->Worker.joinable())
-      {
-        this->Worker.join();
-      }
-    }
-  } stopHelper{ propagated, helper };
-  if (vtkSMPTools::GetEstimatedNumberOfThreads() > 1 && !stop.Stop())
-  {
-    helper =
-      std::thread([&]() { geometry.PrecomputeStencils(band.data(), band.size(), propagated); });
-  }
+  StencilHelper helper(
+    geometry, band, vtkSMPTools::GetEstimatedNumberOfThreads() > 1 && !stop.Stop());
   // A sample farther than halfWidth takes an offer (phi clamps it to halfWidth either way) but
   // passes nothing on: it never enters the heap.
   const double reach = halfWidth * halfWidth;
@@ -355,11 +366,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       }
     }
   }
-  propagated = true;
-  if (helper.joinable())
-  {
-    helper.join();
-  }
+  helper.Finish();
   result.Aborted = result.Aborted || stop.WasStopped();
   phi.resize(n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
