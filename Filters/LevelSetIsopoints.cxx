@@ -98,7 +98,11 @@ bool ProjectCandidates(const Neighborhoods& geometry, const std::vector<double>&
   vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators, normalEvaluators;
   const std::size_t count = points.size() / 3;
   normals.assign(3 * count, 0.0);
-  auto refine = [&](std::size_t begin, std::size_t end) {
+  // Only the valid candidates, listed: they can be a few in each block of candidates (the
+  // completion's, after thinning, 38,000 of 569,000 at 2M samples), and blocks of a few points
+  // leave one thread idle at the end of each.
+  const std::vector<std::size_t> listed = ValidIndices(valid);
+  auto refine = [&](std::size_t first, std::size_t last) {
     std::shared_ptr<MLSEvaluator>& evaluator = evaluators.Local();
     std::shared_ptr<MLSEvaluator>& normalEvaluator = normalEvaluators.Local();
     if (!evaluator)
@@ -106,12 +110,9 @@ bool ProjectCandidates(const Neighborhoods& geometry, const std::vector<double>&
       evaluator.reset(new MLSEvaluator(geometry, phi));
       normalEvaluator.reset(new MLSEvaluator(geometry, phi, normalFitCount));
     }
-    for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t k = first; k < last; ++k)
     {
-      if (!valid[i])
-      {
-        continue;
-      }
+      const std::size_t i = listed[k];
       Eigen::Vector3d p(&points[3 * i]);
       Eigen::Vector3d gradient;
       valid[i] = ProjectOntoZeroLevel(p, gradient, *evaluator, newton);
@@ -132,7 +133,7 @@ bool ProjectCandidates(const Neighborhoods& geometry, const std::vector<double>&
       }
     }
   };
-  return ParallelForInBlocks(count, refine, aborted, IsopointBlock);
+  return ParallelForInBlocks(listed.size(), refine, aborted, IsopointBlock);
 }
 
 namespace
