@@ -13,14 +13,14 @@
 // search shows here first. Reports numbers and asserts nothing; the checksums show that two
 // builds find the same neighbours.
 //   LevelSetSearches [SAMPLES [QUERIES]]
-#include "NearestNeighbors.h"
-#include "SpatialOrder.h"
+#include "MortonTree.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -88,26 +88,14 @@ int main(int argc, char* argv[])
   // Uniform random samples in a unit cube, into Morton order, into the tree (its leaf order).
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> input(3 * samples);
-  for (double& x : input)
+  std::vector<double> positions(3 * samples);
+  for (double& x : positions)
   {
     x = unit(random);
   }
-  const double lower[3] = { 0.0, 0.0, 0.0 }, size[3] = { 1.0, 1.0, 1.0 };
-  std::vector<std::uint64_t> words(samples), scratch;
-  for (std::size_t i = 0; i < samples; ++i)
-  {
-    words[i] = lsi::PackedMortonKey(&input[3 * i], lower, size, static_cast<std::uint32_t>(i));
-  }
-  lsi::RadixSortPacked(words, scratch);
-  std::vector<double> positions(3 * samples);
-  for (std::size_t i = 0; i < samples; ++i)
-  {
-    const std::uint32_t id = static_cast<std::uint32_t>(words[i]);
-    std::copy(&input[3 * id], &input[3 * id] + 3, &positions[3 * i]);
-  }
-  std::vector<std::uint32_t> treeOrder;
-  const lsi::PointCloudIndex index(positions, words, treeOrder, lsi::RunInTurn);
+  std::vector<std::uint32_t> oldIndex;
+  const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(positions, oldIndex);
+  const lsi::PointCloudIndex& index = *tree;
 
   BoundedSearch lists(index, 28), scattered(index, 28);
   const double listMicroseconds =

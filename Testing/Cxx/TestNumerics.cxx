@@ -14,6 +14,8 @@
 #include "TangentBasis.h"
 #include "TangentPlaneCompletion.h"
 
+#include "MortonTree.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -458,49 +460,6 @@ void TestSpatialOrder()
   Check(contiguous, "Morton order keeps octants contiguous");
 }
 
-// The filter's way to its kd-tree: Morton words over the cube around the points, sorted, the
-// points put in their order, then the tree built from that order. oldIndex[i] receives the
-// original position of what is now point i.
-std::unique_ptr<lsi::PointCloudIndex> MortonTree(
-  std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex)
-{
-  const std::size_t n = xyz.size() / 3;
-  double lower[3] = { xyz[0], xyz[1], xyz[2] }, side = 1e-300;
-  for (int a = 0; a < 3; ++a)
-  {
-    double high = xyz[a];
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      lower[a] = std::min(lower[a], xyz[3 * i + a]);
-      high = std::max(high, xyz[3 * i + a]);
-    }
-    side = std::max(side, high - lower[a]);
-  }
-  const double size[3] = { side, side, side };
-  std::vector<std::uint64_t> words(n), scratch;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    words[i] = lsi::PackedMortonKey(&xyz[3 * i], lower, size, static_cast<std::uint32_t>(i));
-  }
-  lsi::RadixSortPacked(words, scratch);
-  std::vector<double> sorted(3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const std::uint32_t id = static_cast<std::uint32_t>(words[i]);
-    std::copy(&xyz[3 * id], &xyz[3 * id] + 3, &sorted[3 * i]);
-  }
-  xyz.swap(sorted);
-  std::vector<std::uint32_t> treeOrder;
-  std::unique_ptr<lsi::PointCloudIndex> index(
-    new lsi::PointCloudIndex(xyz, words, treeOrder, lsi::RunInTurn));
-  oldIndex.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    oldIndex[i] = static_cast<std::uint32_t>(words[treeOrder[i]]);
-  }
-  return index;
-}
-
 // The kd-tree built from Morton order answers like brute force, on a uniform cloud, a clustered
 // one, one where a quarter of the points share one x, and two where most points lie in one
 // Morton cell (cut at medians; the larger one in jobs), 40 of them at one spot; the reordered
@@ -531,7 +490,7 @@ void TestMortonTree()
     }
     std::vector<double> xyz = original;
     std::vector<std::uint32_t> oldIndex;
-    const std::unique_ptr<lsi::PointCloudIndex> index = MortonTree(xyz, oldIndex);
+    const std::unique_ptr<lsi::PointCloudIndex> index = lsi::MortonTree(xyz, oldIndex);
     bool samePoints = oldIndex.size() == n;
     std::vector<char> seen(n, 0);
     for (std::size_t i = 0; samePoints && i < n; ++i)
@@ -665,7 +624,7 @@ void TestBoundedSearchKeepsTies()
       for (int z = 0; z < side; ++z)
         xyz.insert(xyz.end(), { double(x), double(y), double(z) });
   std::vector<std::uint32_t> oldIndex;
-  const std::unique_ptr<lsi::PointCloudIndex> tree = MortonTree(xyz, oldIndex);
+  const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(xyz, oldIndex);
   const lsi::PointCloudIndex& index = *tree;
   const std::size_t n = xyz.size() / 3, k = 11;
   std::vector<std::uint32_t> ids(k), bounded(k);
