@@ -5,7 +5,7 @@
 // order, as Neighborhoods builds it) on uniform random samples (microseconds per query, the
 // fastest of 3 rounds):
 //   - neighbour lists: the 28 nearest to consecutive samples in storage order, each search
-//     bounded by 1.2 times the radius of the one before it (Neighborhoods::SearchRow);
+//     bounded by the radius of the one before it (Neighborhoods::SearchRow's NearestNear);
 //   - the fixed radius sample: the same for every 30th sample (scattered queries);
 //   - gathers: the 68 nearest to points between samples, in storage order (the data
 //     refinement's and the slide's MLSStencil::Gather, without a bound).
@@ -45,8 +45,8 @@ double MicrosecondsPerQuery(std::size_t queries, Call&& call)
   return fastest;
 }
 
-// Searches of `k` nearest from consecutive queries, each first bounded by 1.2 times the last
-// one's radius (a retry without a bound when it finds fewer), as SearchRow does.
+// Searches of `k` nearest from consecutive queries, each first bounded by the last one's radius
+// (PointCloudIndex::NearestNear), as Neighborhoods::SearchRow searches.
 struct BoundedSearch
 {
   const lsi::PointCloudIndex& Index;
@@ -64,12 +64,7 @@ struct BoundedSearch
   }
   void operator()(const double* query)
   {
-    const double bound = 1.44 * this->Radius * this->Radius;
-    if (!(bound > 0.0) ||
-      this->Index.NearestWithin(query, this->K, bound, this->Ids.data(), this->D2.data()) < this->K)
-    {
-      this->Index.Nearest(query, this->K, this->Ids.data(), this->D2.data());
-    }
+    this->Index.NearestNear(query, this->K, this->Radius, this->Ids.data(), this->D2.data());
     this->Radius = std::sqrt(*std::max_element(this->D2.begin(), this->D2.end()));
     this->Checksum += this->Ids[this->K - 1] + this->D2[this->K - 1];
   }

@@ -565,14 +565,8 @@ double Neighborhoods::SearchRow(std::size_t i, double nearbyRadius, std::uint32_
   const int stride = this->Stride;
   thread_local std::vector<double> d2; // one per thread: rows are computed millions of times
   d2.resize(static_cast<std::size_t>(stride));
-  // A search within a little more than a nearby sample's radius finds the same neighbours (ties
-  // included: both walks visit the same leaves in the same order) when it finds enough.
-  const std::size_t k = static_cast<std::size_t>(stride);
-  const double bound = 1.44 * nearbyRadius * nearbyRadius;
-  if (!(bound > 0.0) || this->Index->NearestWithin(this->Position(i), k, bound, ids, d2.data()) < k)
-  {
-    this->Index->Nearest(this->Position(i), k, ids, d2.data());
-  }
+  this->Index->NearestNear(
+    this->Position(i), static_cast<std::size_t>(stride), nearbyRadius, ids, d2.data());
   ArrangeRow(static_cast<std::uint32_t>(i), ids, d2.data(), stride);
   return std::sqrt(*std::max_element(d2.begin(), d2.end()));
 }

@@ -61,6 +61,21 @@ public:
     return result.size();
   }
 
+  /// The k nearest (as Nearest), searched first within a little more than `nearbyRadius`, the
+  /// k-th neighbour's distance of a query nearby (0: none): a search within it finds the same
+  /// neighbours (ties included: both walks visit the same leaves in the same order) when it
+  /// finds enough, else the search is repeated without a bound.
+  std::size_t NearestNear(const double query[3], std::size_t k, double nearbyRadius,
+    std::uint32_t* indices, double* squaredDistances) const
+  {
+    const double bound = 1.44 * nearbyRadius * nearbyRadius;
+    if (bound > 0.0 && this->NearestWithin(query, k, bound, indices, squaredDistances) == k)
+    {
+      return k;
+    }
+    return this->Nearest(query, k, indices, squaredDistances);
+  }
+
   std::size_t Size() const { return this->Cloud.Count; }
 
 private:
