@@ -104,9 +104,8 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
       double d2;
       geometry.Index->Nearest(p.data(), 1, &nearest, &d2);
       const double reach = settings.SPHMaximumMove * field.Support(nearest);
-      field.Gather(p.data(), reach, candidates); // the point stays within the reach
       Eigen::Vector3d normal;
-      if (SolveOntoLevel(field, candidates, isoValue, p, n, reach, 1e-9 * reach, normal))
+      if (GatherAndSolveOntoLevel(field, isoValue, p, n, reach, candidates, normal))
       {
         for (int d = 0; d < 3; ++d)
         {

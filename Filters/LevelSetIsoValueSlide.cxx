@@ -253,9 +253,8 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       const Eigen::Vector3d start = p, n(&normals[3 * i]);
       const std::size_t near = geometry.Index->Nearest(p.data(), stride, s.Ids.data(), s.D2.data());
       const double reach = settings.SPHMaximumMove * field.Support(s.Ids[0]);
-      field.Gather(p.data(), reach, s.Candidates);
       Eigen::Vector3d normal;
-      if (!SolveOntoLevel(field, s.Candidates, isoValue, p, n, reach, 1e-9 * reach, normal))
+      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal))
       {
         refusal = TooFar;
         break;

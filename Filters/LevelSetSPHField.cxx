@@ -354,7 +354,7 @@ void SPHField::EvaluateAmong(
 
 bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, double isoValue,
   Eigen::Vector3d& p, const Eigen::Vector3d& direction, double reach, double tolerance,
-  Eigen::Vector3d& normal)
+  Eigen::Vector3d& normal, bool newtonOnly)
 {
   auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g) {
     field.EvaluateAmong(candidates, x.data(), value, g.data());
@@ -363,7 +363,7 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   };
   Eigen::Vector3d gradient;
   Eigen::Vector3d q = p;
-  if (!SolveOnLine(q, direction, evaluate, reach, tolerance, gradient) ||
+  if (!SolveOnLine(q, direction, evaluate, reach, tolerance, gradient, newtonOnly) ||
     !(gradient.squaredNorm() > 0.0))
   {
     return false;
@@ -371,6 +371,21 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   p = q;
   normal = -gradient.normalized();
   return true;
+}
+
+bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vector3d& p,
+  const Eigen::Vector3d& direction, double reach, SPHCandidates& candidates,
+  Eigen::Vector3d& normal)
+{
+  const double tolerance = 1e-9 * reach; // of the whole reach in both tries: the same steps
+  const double nearReach = 0.25 * reach;
+  field.Gather(p.data(), nearReach, candidates);
+  if (SolveOntoLevel(field, candidates, isoValue, p, direction, nearReach, tolerance, normal, true))
+  {
+    return true;
+  }
+  field.Gather(p.data(), reach, candidates); // the point stays within the reach
+  return SolveOntoLevel(field, candidates, isoValue, p, direction, reach, tolerance, normal);
 }
 
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,

@@ -185,6 +185,16 @@ void SPHField::ForEachWeight(const double* x, Visit&& visit) const
 /// `normal` is the field's unit normal there, out of f > f_iso; false leaves p unchanged.
 bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, double isoValue,
   Eigen::Vector3d& p, const Eigen::Vector3d& direction, double reach, double tolerance,
+  Eigen::Vector3d& normal, bool newtonOnly = false);
+
+/// SolveOntoLevel within `reach`, to 1e-9 of it, gathering its own candidates: first those for a
+/// quarter of the reach, with Newton's steps only; then, if those leave that quarter or do not
+/// converge, those for the whole reach, as SolveOntoLevel does. Most points lie a small fraction
+/// of the reach from the level, and the small gather holds every sample that contributes
+/// within its quarter, in the same order: the same steps give the same point to the bit, from
+/// a quarter of the candidates (an eighth of the ball's volume, at reach = one support).
+bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vector3d& p,
+  const Eigen::Vector3d& direction, double reach, SPHCandidates& candidates,
   Eigen::Vector3d& normal);
 
 /// The median kernel support over the median neighbourhood radius (distance to the n-th

@@ -195,24 +195,29 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted)
 {
   const std::size_t count = points.size() / 3;
+  std::vector<ValuesOf> values; // read straight from memory where they can be (the same values)
+  for (vtkDataArray* source : sources)
+  {
+    values.emplace_back(source);
+  }
   return ParallelForInBlocks(
     count,
     [&](std::size_t begin, std::size_t end) {
-      std::vector<std::pair<std::uint32_t, double>> weights;
+      std::vector<std::pair<vtkIdType, double>> weights; // input ids and weights
       for (std::size_t i = begin; i < end; ++i)
       {
         weights.clear();
-        field.ForEachWeight(
-          &points[3 * i], [&](std::uint32_t j, double w) { weights.emplace_back(j, w); });
+        field.ForEachWeight(&points[3 * i],
+          [&](std::uint32_t j, double w) { weights.emplace_back(geometry.Order[j], w); });
         for (std::size_t a = 0; a < sources.size(); ++a)
         {
-          const int components = sources[a]->GetNumberOfComponents();
-          for (int c = 0; c < components; ++c)
+          const ValuesOf& source = values[a];
+          for (int c = 0; c < source.Components; ++c)
           {
             double value = 0.0;
             for (const auto& weight : weights)
             {
-              value += weight.second * sources[a]->GetComponent(geometry.Order[weight.first], c);
+              value += weight.second * source(weight.first, c);
             }
             targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);
           }

@@ -149,10 +149,11 @@ bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, Evalu
 /// the reach (the field flattens beyond the outermost particles, where Newton overshoots), the
 /// zero nearest to p is bracketed by steps of reach/16, reach/8, ... on both sides and found by
 /// regula falsi (Illinois). `gradient` is the field's gradient at the result. Returns false
-/// (p unchanged) when no zero lies within the reach.
+/// (p unchanged) when no zero lies within the reach, and with `newtonOnly` also when Newton's
+/// steps alone do not converge inside it (the caller then tries a longer reach).
 template <typename EvaluateFn>
 bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn evaluate,
-  double reach, double tolerance, Eigen::Vector3d& gradient)
+  double reach, double tolerance, Eigen::Vector3d& gradient, bool newtonOnly = false)
 {
   if (!(reach > 0.0) || !std::isfinite(reach) || !(tolerance > 0.0))
   {
@@ -191,6 +192,10 @@ bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn e
       p = start - t * normal;
       return true;
     }
+  }
+  if (newtonOnly)
+  {
+    return false;
   }
   if (value0 == 0.0)
   {
