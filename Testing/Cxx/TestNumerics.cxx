@@ -687,6 +687,17 @@ void TestSolveOnLine()
       !lsi::SolveOnLine(p, out, bump, std::numeric_limits<double>::infinity(), 1e-12, g) &&
       !lsi::SolveOnLine(p, out, bump, std::nan(""), 1e-12, g),
     "SolveOnLine: false for a zero, infinite or NaN reach");
+  // Newton's steps only: from just inside they converge, to the same point as the full solve;
+  // from the flat outside the first step overshoots, so only the bracketing finds the level.
+  Eigen::Vector3d full(0.9, 0, 0), newton(0.9, 0, 0), gFull, gNewton;
+  Check(lsi::SolveOnLine(full, out, bump, 3.0, 1e-12, gFull) &&
+      lsi::SolveOnLine(newton, out, bump, 3.0, 1e-12, gNewton, true) && newton == full &&
+      gNewton == gFull,
+    "SolveOnLine, Newton only: the same point to the bit where Newton's steps converge");
+  p = Eigen::Vector3d(2.5, 0, 0);
+  Check(!lsi::SolveOnLine(p, out, bump, 3.0, 1e-12, g, true) && p.x() == 2.5 &&
+      lsi::SolveOnLine(p, out, bump, 3.0, 1e-12, g) && std::abs(p.x() - 1.0) < 1e-9,
+    "SolveOnLine, Newton only: false (p unchanged) where only the bracketing finds the level");
 }
 
 void TestSlideOntoDataLevel()
