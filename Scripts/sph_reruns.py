@@ -1,0 +1,115 @@
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""pvpython Scripts/sph_reruns.py PLUGIN SHARED_DATA_DIR [REPEATS]
+
+Seconds of the filter on the SPH field of the real snapshots in ../shared/data (the cases and
+isovalues of Scripts/sph_comparison.py), through ParaView's proxies, for the default output
+(splats) and for Isopoints:
+  first    a fresh filter's first run (neighbour search included);
+  method   the method in full after a change of the isovalue by a part in 1e9 (the
+           neighbours kept: what an isovalue change costs with QuickIsoValueChanges off);
+  quick    a change that moves 2% of the particles above the isovalue across it, with
+           QuickIsoValueChanges on, from a fresh filter's first run; `slid` says whether the
+           last surface was slid (1) or the method ran (0).
+The fastest of REPEATS (default 3) of each. One line per case and output; the points and a
+checksum of their coordinates show that two builds give the same output.
+Scripts/run-sph-reruns.sh runs it for a base commit's build and this one's, in turn."""
+import os
+import sys
+import time
+
+import numpy as np
+from paraview import servermanager
+from paraview.simple import Calculator, Delete, LoadPlugin, OpenDataFile
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+
+def fetch(proxy):
+    data = servermanager.Fetch(proxy)
+    if data.IsA("vtkMultiBlockDataSet"):
+        data = data.GetBlock(0)
+    return data
+
+
+def main():
+    plugin, data = sys.argv[1], sys.argv[2]
+    repeats = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    LoadPlugin(plugin, ns=globals())
+
+    def hdf5(path, types):
+        r = OpenDataFile(os.path.join(data, path))
+        r.UpdatePipelineInformation()
+        r.ParticleTypes = types
+        return r
+
+    def tipsy_with_density(path, types):
+        r = OpenDataFile(os.path.join(data, path))
+        r.UpdatePipelineInformation()
+        r.ParticleTypes = types
+        return ParticleDensity(Input=r, NumberOfNeighbors=64)
+
+    # name: (source maker, scalar (None: the density the source marks), isovalue rule)
+    quantile = lambda q: (lambda v: float(np.quantile(v, q)))
+    cases = [
+        ("gadget4-gassphere",
+         lambda: hdf5(os.path.join("gadget4_gassphere", "snapshot_010.hdf5"), ["Gas (PartType0)"]),
+         None, quantile(0.7)),
+        ("evrard-summed",
+         lambda: tipsy_with_density("adiabtophat_glass_28721.bin", ["Gas"]),
+         None, lambda v: 1.0 / np.pi),
+        ("changa-shocktube",
+         lambda: tipsy_with_density("shocktube.std", ["Gas"]),
+         None, lambda v: 0.5 * float(np.median(v))),
+        ("swift-robertsflow-vz",
+         lambda: Calculator(Input=hdf5("swift_robertsflow_g32.hdf5", ["Gas (PartType0)"]),
+                            ResultArrayName="VelocityZ", Function="Velocities_Z"),
+         "VelocityZ", lambda v: 0.7),
+    ]
+    print("%-22s %-9s %9s %9s %9s %5s %9s %14s" % (
+        "case", "output", "first s", "method s", "quick s", "slid", "points", "checksum"))
+    for name, make, scalar, rule in cases:
+        source = make()
+        particles = fetch(source)
+        marked = particles.GetFieldData().GetAbstractArray("DensityArray")
+        scalar = scalar or marked.GetValue(0)
+        values = vtk_to_numpy(particles.GetPointData().GetArray(scalar)).astype(float)
+        x = vtk_to_numpy(particles.GetPoints().GetData())
+        iso = rule(values)
+        seed = list(x[np.argmax(values)]) if name != "evrard-summed" else [0.0, 0.0, 0.0]
+        above = np.sort(values[values > iso])
+        moved = float(above[int(0.02 * len(above))])
+        for output_type, label in ((1, "splats"), (0, "isopoints")):
+            settings = dict(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
+                            SeedCenter=seed, OutputType=output_type)
+            first = method = quick = float("inf")
+            slid = -1
+            for r in range(repeats):
+                f = LevelSetIsosurface(**settings)
+                t = time.time()
+                f.UpdatePipeline()
+                first = min(first, time.time() - t)
+                f.IsoValue = iso * (1.0 + 1e-9 * (r + 1))
+                t = time.time()
+                f.UpdatePipeline()
+                method = min(method, time.time() - t)
+                out = fetch(f)
+                Delete(f)
+                g = LevelSetIsosurface(QuickIsoValueChanges=1, **settings)
+                g.UpdatePipeline()
+                g.IsoValue = moved
+                t = time.time()
+                g.UpdatePipeline()
+                quick = min(quick, time.time() - t)
+                g.UpdatePropertyInformation()
+                slid = g.GetProperty("SlidLastSurface").GetData()
+                Delete(g)
+            points = vtk_to_numpy(out.GetPoints().GetData()) if out.GetNumberOfPoints() else []
+            checksum = float(np.sum(np.asarray(points, dtype=float) * [1.0, 2.0, 3.0]))
+            print("%-22s %-9s %9.3f %9.3f %9.3f %5d %9d %14.8g" % (
+                name, label, first, method, quick, slid, out.GetNumberOfPoints(), checksum),
+                flush=True)
+        Delete(source)
+
+
+if __name__ == "__main__":
+    main()
