@@ -252,13 +252,8 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       Eigen::Vector3d p(&points[3 * i]);
       const Eigen::Vector3d start = p, n(&normals[3 * i]);
       const std::size_t near = geometry.Index->Nearest(p.data(), stride, s.Ids.data(), s.D2.data());
-      const double reach = settings.SPHMaximumMove * field.Support(s.Ids[0]);
-      Eigen::Vector3d normal;
-      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal))
-      {
-        refusal = TooFar;
-        break;
-      }
+      // The samples nearest to where the point starts must lie on both sides of the new flood:
+      // checked before the solve, so that a refused slide costs little.
       bool in = false, out = false;
       for (std::size_t j = 0; j < near; ++j)
       {
@@ -267,6 +262,13 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       if (!in || !out)
       {
         refusal = OneSide;
+        break;
+      }
+      const double reach = settings.SPHMaximumMove * field.Support(s.Ids[0]);
+      Eigen::Vector3d normal;
+      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal))
+      {
+        refusal = TooFar;
         break;
       }
       s.LargestMove = std::max(s.LargestMove, (p - start).norm());
