@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <type_traits>
 
 namespace lsi
 {
@@ -279,8 +280,9 @@ void SPHField::Gather(const double* x, double extra, SPHCandidates& candidates) 
 namespace
 {
 // sum_j c_j W(|x - x_j|, H_j) and its gradient for kernel K over the particles that
-// forEach(add) passes to add(xj, H, c): the one loop behind Evaluate and EvaluateAmong.
-template <SPHKernel K, typename ForEach>
+// forEach(add) passes to add(xj, H, c): the one loop behind Evaluate, ValueAt and EvaluateAmong.
+// Without the gradient (null) the value is the same sum, to the bit, for less work.
+template <SPHKernel K, bool WithGradient, typename ForEach>
 void SumKernels(ForEach&& forEach, const double* x, double& value, double* gradient)
 {
   double v = 0.0, g0 = 0.0, g1 = 0.0, g2 = 0.0;
@@ -296,7 +298,7 @@ void SumKernels(ForEach&& forEach, const double* x, double& value, double* gradi
     KernelShape<K>(r * inverse, w, dw);
     const double scale = c * inverse * inverse * inverse;
     v += scale * w;
-    if (r > 0.0)
+    if (WithGradient && r > 0.0)
     {
       const double slope = scale * inverse * dw / r;
       g0 += slope * d0;
@@ -306,26 +308,40 @@ void SumKernels(ForEach&& forEach, const double* x, double& value, double* gradi
   });
   const double norm = Normalization<K>();
   value = norm * v;
-  gradient[0] = norm * g0;
-  gradient[1] = norm * g1;
-  gradient[2] = norm * g2;
+  if (WithGradient)
+  {
+    gradient[0] = norm * g0;
+    gradient[1] = norm * g1;
+    gradient[2] = norm * g2;
+  }
 }
 
-// SumKernels with the kernel chosen once, outside the loop.
+// SumKernels with the kernel chosen once, outside the loop; no gradient when it is null.
 template <typename ForEach>
 void SumKernels(
   SPHKernel kernel, ForEach&& forEach, const double* x, double& value, double* gradient)
 {
+  auto sum = [&](auto shape) {
+    constexpr SPHKernel K = decltype(shape)::value;
+    if (gradient)
+    {
+      SumKernels<K, true>(forEach, x, value, gradient);
+    }
+    else
+    {
+      SumKernels<K, false>(forEach, x, value, nullptr);
+    }
+  };
   switch (kernel)
   {
     case SPHKernel::QuinticSpline:
-      SumKernels<SPHKernel::QuinticSpline>(forEach, x, value, gradient);
+      sum(std::integral_constant<SPHKernel, SPHKernel::QuinticSpline>());
       break;
     case SPHKernel::WendlandC2:
-      SumKernels<SPHKernel::WendlandC2>(forEach, x, value, gradient);
+      sum(std::integral_constant<SPHKernel, SPHKernel::WendlandC2>());
       break;
     default:
-      SumKernels<SPHKernel::CubicSpline>(forEach, x, value, gradient);
+      sum(std::integral_constant<SPHKernel, SPHKernel::CubicSpline>());
   }
 }
 } // namespace
@@ -337,6 +353,17 @@ void SPHField::Evaluate(const double* x, double& value, double* gradient) const
       [&](std::uint32_t j) { add(this->Geometry.Position(j), this->H[j], this->Coefficient[j]); });
   };
   SumKernels(this->Kernel, forEach, x, value, gradient);
+}
+
+double SPHField::ValueAt(const double* x) const
+{
+  auto forEach = [&](auto&& add) {
+    this->ForEachSupportHolding(x,
+      [&](std::uint32_t j) { add(this->Geometry.Position(j), this->H[j], this->Coefficient[j]); });
+  };
+  double value;
+  SumKernels(this->Kernel, forEach, x, value, nullptr);
+  return value;
 }
 
 void SPHField::EvaluateAmong(
@@ -440,9 +467,7 @@ bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, d
     [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j)
       {
-        double value, gradient[3];
-        field.Evaluate(geometry.Position(j), value, gradient);
-        dataOffsets[j] = value - isoValue;
+        dataOffsets[j] = field.ValueAt(geometry.Position(j)) - isoValue;
         dataSign[j] = Sign(dataOffsets[j]);
       }
     },

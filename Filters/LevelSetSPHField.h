@@ -88,6 +88,9 @@ public:
   /// The field f(x) and its gradient.
   void Evaluate(const double* x, double& value, double* gradient) const;
 
+  /// The field f(x) alone: Evaluate's value, to the bit, without the gradient's work.
+  double ValueAt(const double* x) const;
+
   /// The samples whose support reaches within `extra` of x: every sample that contributes
   /// anywhere in the ball of radius `extra` around x. Many evaluations near one place (a
   /// point's refinement, a splat's corners) then skip the tree walk (EvaluateAmong).

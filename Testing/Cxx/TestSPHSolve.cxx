@@ -6,7 +6,8 @@
 // of particles with varied smoothing lengths (a Gaussian bump of density), from points at
 // every distance from the level up to the reach and beyond, along tilted directions:
 //   - the same success, point and normal, to the bit, for every start;
-//   - both ways taken: starts the quarter-reach gather settles and starts it hands over.
+//   - both ways taken: starts the quarter-reach gather settles and starts it hands over;
+// and ValueAt (the field without its gradient) against Evaluate's value, to the bit.
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetSPHField.h"
 #include "TestCheck.h"
@@ -16,6 +17,7 @@
 #include "vtkPoints.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 #include <random>
 #include <string>
@@ -100,6 +102,25 @@ void TestSameAsWholeReach()
   Check(same == starts, "the same success, point and normal as the whole-reach solve, to the bit");
   Check(settledNear > starts / 10 && handedOver > starts / 10 && solved < starts,
     "both ways taken, and some starts out of reach");
+
+  // The value alone, at the samples (as the flood's offsets take it) and between them.
+  int sameValue = 0, positive = 0, tried = 0;
+  for (std::size_t j = 0; j < geometry.NumberOfSamples; j += 7)
+  {
+    const double* x = geometry.Position(j);
+    const double between[3] = { x[0] + 0.3 * spacing, x[1] - 0.2 * spacing, x[2] };
+    for (const double* at : { x, between })
+    {
+      double value, gradient[3];
+      field.Evaluate(at, value, gradient);
+      const double alone = field.ValueAt(at);
+      sameValue += alone == value ? 1 : 0;
+      positive += value > 0.0 ? 1 : 0;
+      ++tried;
+    }
+  }
+  Check(sameValue == tried && positive > tried / 2,
+    "ValueAt gives Evaluate's value to the bit (" + std::to_string(tried) + " points)");
 }
 } // namespace
 
