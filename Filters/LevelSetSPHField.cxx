@@ -406,7 +406,8 @@ bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vect
 {
   const double tolerance = 1e-9 * reach; // of the whole reach in both tries: the same steps
   const double nearReach = 0.25 * reach;
-  field.Gather(p.data(), nearReach, candidates);
+  // (Gathered a millionth wider: a direction a rounding off unit length moves a little further.)
+  field.Gather(p.data(), 1.000001 * nearReach, candidates);
   if (SolveOntoLevel(field, candidates, isoValue, p, direction, nearReach, tolerance, normal, true))
   {
     return true;

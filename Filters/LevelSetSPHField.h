@@ -195,7 +195,7 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
 /// converge, those for the whole reach, as SolveOntoLevel does. Most points lie a small fraction
 /// of the reach from the level, and the small gather holds every sample that contributes
 /// within its quarter, in the same order: the same steps give the same point to the bit, from
-/// a quarter of the candidates (an eighth of the ball's volume, at reach = one support).
+/// a quarter of the candidates (at reach = one support: a ball of 1.25 supports, not 2).
 bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vector3d& p,
   const Eigen::Vector3d& direction, double reach, SPHCandidates& candidates,
   Eigen::Vector3d& normal);
