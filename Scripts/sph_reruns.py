@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """pvpython Scripts/sph_reruns.py PLUGIN SHARED_DATA_DIR [REPEATS]
 
-Seconds of the filter on the SPH field of the real snapshots in ../shared/data (the cases and
-isovalues of Scripts/sph_comparison.py), through ParaView's proxies, for the default output
-(splats) and for Isopoints:
+Seconds of the filter on the SPH field of the real snapshots in ../shared/data, through
+ParaView's proxies, for the default output (splats) and for Isopoints. The cases and isovalue
+rules are Scripts/sph_comparison.py's, but taken on the scalar array the source carries (the
+comparison takes its 70th percentile, median and seed on the field it sums itself), so the
+GADGET-4 isovalue and the seeds can differ slightly from the comparison's:
   first    a fresh filter's first run (neighbour search included);
   method   the method in full after a change of the isovalue by a part in 1e9 (the
            neighbours kept: what an isovalue change costs with QuickIsoValueChanges off);
