@@ -83,12 +83,12 @@ int main(int argc, char* argv[])
   // Uniform random samples in a unit cube, into Morton order, into the tree (its leaf order).
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> positions(3 * samples);
+  lsi::UninitializedVector<double> positions(3 * samples);
   for (double& x : positions)
   {
     x = unit(random);
   }
-  std::vector<std::uint32_t> oldIndex;
+  lsi::UninitializedVector<std::uint32_t> oldIndex;
   const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(positions, oldIndex);
   const lsi::PointCloudIndex& index = *tree;
 

@@ -29,7 +29,7 @@ LevelSetEvolution::LevelSetEvolution(const Neighborhoods& geometry,
   , DataSign(dataSign)
   , DataOffsets(dataOffsets)
   , Phi(phi)
-  , Gradient(3 * geometry.NumberOfSamples, 0.0)
+  , Gradient(FilledInParallel(3 * geometry.NumberOfSamples, 0.0))
   , Collector(geometry)
   , Reinitializer(geometry, Collector)
 {

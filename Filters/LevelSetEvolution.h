@@ -64,7 +64,7 @@ private:
   const std::vector<double>& DataSign;
   const std::vector<double>& DataOffsets;
   std::vector<double>& Phi;
-  std::vector<double> Gradient; // 3 per sample, valid where last computed
+  UninitializedVector<double> Gradient; // 3 per sample, valid where last computed
   BandCollector Collector;
   Reinitialization Reinitializer;
   std::vector<std::size_t> Band, Region, Scratch, Front;

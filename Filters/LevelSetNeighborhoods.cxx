@@ -68,7 +68,7 @@ void WithTypedCoordinates(vtkDataArray* coordinates, F&& f)
 // Counts the samples at exactly the position of another one (out.DuplicateSamples, and the
 // smallest input id among them). Coincident samples share a Morton cell, so only the runs of
 // sorted words with the same cell are compared, after sorting each by position.
-void FindDuplicates(const std::vector<std::uint64_t>& words, Neighborhoods& out)
+void FindDuplicates(const UninitializedVector<std::uint64_t>& words, Neighborhoods& out)
 {
   const std::size_t n = words.size();
   std::vector<std::size_t> run;
@@ -170,7 +170,7 @@ namespace
 {
 // Fills out.Order and out.Positions: the points sorted by Morton key over the cube around their
 // bounding box (cubic cells, whose halvings are the kd-tree's cuts). Returns the sorted words.
-std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
+UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
 {
   const std::size_t n = out.NumberOfSamples;
   vtkDataArray* coordinates = points->GetData();
@@ -180,7 +180,7 @@ std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
   const double side =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
   const double size[3] = { side, side, side };
-  std::vector<std::uint64_t> words(n);
+  UninitializedVector<std::uint64_t> words(n);
   auto makeKeys = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
@@ -194,7 +194,7 @@ std::vector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhoods& out)
   };
   WithTypedCoordinates(coordinates, makeKeys);
   {
-    std::vector<std::uint64_t> scratch;
+    UninitializedVector<std::uint64_t> scratch;
     // Two pieces per thread, counted and scattered in parallel (the same order on any count).
     const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
     RadixSortPacked(words, scratch, 2 * static_cast<std::size_t>(threads),
@@ -393,9 +393,9 @@ namespace
 // on its own and frees its memory, which it owns through the shared pointer.
 struct TreeBuild
 {
-  std::vector<double> Positions;
-  std::vector<std::uint64_t> MortonWords; // of Positions, in their order
-  std::vector<std::uint32_t> TreeOrder;   // the tree's reordering of Positions
+  UninitializedVector<double> Positions;
+  UninitializedVector<std::uint64_t> MortonWords; // of Positions, in their order
+  UninitializedVector<std::uint32_t> TreeOrder;   // the tree's reordering of Positions
   std::unique_ptr<PointCloudIndex> Index;
   std::atomic<bool> Done{ false };
   // Wakes the waiting thread as soon as the build is done (a sleep between abort checks would
@@ -441,7 +441,7 @@ private:
 };
 
 bool BuildTree(
-  Neighborhoods& out, std::vector<std::uint64_t> mortonWords, const AbortCheck& aborted)
+  Neighborhoods& out, UninitializedVector<std::uint64_t> mortonWords, const AbortCheck& aborted)
 {
   auto build = std::make_shared<TreeBuild>();
   build->Positions = std::move(out.Positions); // the buffer moves, the index will point into it
@@ -453,7 +453,7 @@ bool BuildTree(
   std::thread worker([build, threads]() {
     build->Index.reset(new PointCloudIndex(build->Positions, build->MortonWords, build->TreeOrder,
       [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); }));
-    std::vector<std::uint64_t>().swap(build->MortonWords);
+    UninitializedVector<std::uint64_t>().swap(build->MortonWords);
     {
       std::lock_guard<std::mutex> lock(build->Mutex);
       build->Done = true;
@@ -476,7 +476,7 @@ bool BuildTree(
   out.Index = std::move(build->Index);
   // The build moved the samples into the tree's leaf order (a spatial order, like the Morton
   // order it refines): map each back to its input point id.
-  std::vector<std::uint32_t> order(n);
+  UninitializedVector<std::uint32_t> order(n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -497,7 +497,7 @@ bool BuildNeighborhoods(
   out.NumberOfSamples = n;
   out.Stride = stride;
   auto start = Clock::now();
-  std::vector<std::uint64_t> mortonWords = SortSpatially(points, out);
+  UninitializedVector<std::uint64_t> mortonWords = SortSpatially(points, out);
   out.SortSeconds = SecondsSince(start);
   if (Aborted(aborted, 0.25))
   {

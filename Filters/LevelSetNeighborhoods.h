@@ -9,6 +9,7 @@
 #include "LevelSetParallel.h"
 #include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
+#include "UninitializedVector.h"
 
 #include <algorithm>
 #include <atomic>
@@ -24,34 +25,6 @@ class vtkPoints;
 namespace lsi
 {
 
-/// A std::vector allocator that leaves new elements uninitialised: resizing a multi-gigabyte
-/// array then costs nothing up front, and its pages are zeroed by the kernel on first touch,
-/// inside the parallel loop that fills them, instead of by one thread in resize().
-template <typename T>
-struct UninitializedAllocator : std::allocator<T>
-{
-  template <typename U>
-  struct rebind
-  {
-    using other = UninitializedAllocator<U>;
-  };
-  UninitializedAllocator() = default;
-  template <typename U>
-  UninitializedAllocator(const UninitializedAllocator<U>&)
-  {
-  }
-  template <typename U>
-  void construct(U* p)
-  {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
 /// The geometry of the sample cloud. Neighbour lists are computed when first asked for
 /// (NeighborsOf, RadiusOf), from any thread: the method only ever visits the seeded
 /// components and a band around their front, a few percent of a large snapshot's particles,
@@ -66,8 +39,9 @@ struct Neighborhoods
   // Samples are stored in the kd-tree's leaf order (after a Morton sort, SpatialOrder.h), so
   // that neighbours are near in memory.
   // Every index below is an index in that order; Order maps it back to the input point id.
-  std::vector<std::uint32_t> Order;
-  std::vector<double> Positions; // 3 per sample
+  // Both are filled in parallel (UninitializedVector.h).
+  UninitializedVector<std::uint32_t> Order;
+  UninitializedVector<double> Positions; // 3 per sample
   std::unique_ptr<PointCloudIndex> Index;
 
   // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
@@ -236,8 +210,8 @@ struct Neighborhoods
     std::unique_ptr<std::atomic<unsigned char>[]> State;
     std::atomic<std::size_t> Computed{ 0 };
   };
-  mutable std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Ids; // Stride each
-  mutable std::vector<double, UninitializedAllocator<double>> Radii;
+  mutable UninitializedVector<std::uint32_t> Ids; // Stride each
+  mutable UninitializedVector<double> Radii;
   std::unique_ptr<RowStates> Rows;
   // The last fixed sample RadiusSampleWhere chose, and its `every` (0: none yet).
   mutable std::vector<std::uint32_t> Sample;

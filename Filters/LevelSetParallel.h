@@ -5,6 +5,8 @@
 #ifndef LevelSetParallel_h
 #define LevelSetParallel_h
 
+#include "UninitializedVector.h"
+
 #include "vtkSMPTools.h"
 
 #include <algorithm>
@@ -93,6 +95,18 @@ std::unique_ptr<std::atomic<T>[]> FilledAtomics(std::size_t count, T value) {
     }
   });
   return marks;
+}
+
+/// `count` copies of `value`, written in parallel: the first write to fresh memory faults its
+/// pages in, which then happens on every thread at once (UninitializedVector.h).
+template <typename T>
+UninitializedVector<T> FilledInParallel(std::size_t count, T value)
+{
+  UninitializedVector<T> values(count);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    std::fill(values.begin() + begin, values.begin() + end, value);
+  });
+  return values;
 }
 
 /// The indices i < count for which keep(i) holds, in increasing order: found in fixed chunks

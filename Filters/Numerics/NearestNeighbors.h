@@ -6,6 +6,7 @@
 #define NearestNeighbors_h
 
 #include "TaskRunner.h"
+#include "UninitializedVector.h"
 
 #include <nanoflann.hpp>
 
@@ -38,8 +39,9 @@ public:
   /// The points in `xyz` are moved into the tree's leaf order (which differs from the Morton
   /// order only inside such cells); `oldIndex[i]` receives the position in `xyz` of what is now
   /// point i. `xyz` must outlive the index and keep its buffer.
-  PointCloudIndex(std::vector<double>& xyz, const std::vector<std::uint64_t>& mortonWords,
-    std::vector<std::uint32_t>& oldIndex, const TaskRunner& run);
+  PointCloudIndex(UninitializedVector<double>& xyz,
+    const UninitializedVector<std::uint64_t>& mortonWords,
+    UninitializedVector<std::uint32_t>& oldIndex, const TaskRunner& run);
 
   /// The k points nearest to `query`, closest first: indices and squared distances.
   /// Returns how many were found (fewer than k only when the cloud is smaller).
@@ -100,8 +102,8 @@ private:
   using Box = Tree3D::BoundingBox;
 
   // Moves the points into the order of the leaves (the median cuts' order within a Morton cell).
-  void MoveIntoLeafOrder(
-    std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, const TaskRunner& run);
+  void MoveIntoLeafOrder(UninitializedVector<double>& xyz,
+    UninitializedVector<std::uint32_t>& oldIndex, const TaskRunner& run);
   using Pool = nanoflann::PooledAllocator;
   // A crowded Morton cell left for later, to be cut at medians on some thread: its node is
   // allocated already (Stub) and receives the subtree's root.
@@ -176,17 +178,20 @@ inline bool StillNearest(double farthest, double step, double outerRadius)
 static_assert(
   NANOFLANN_VERSION == 0x142, "PointCloudIndex's Morton build was written for nanoflann 1.4.2");
 
-inline void PointCloudIndex::MoveIntoLeafOrder(
-  std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex, const TaskRunner& run)
+inline void PointCloudIndex::MoveIntoLeafOrder(UninitializedVector<double>& xyz,
+  UninitializedVector<std::uint32_t>& oldIndex, const TaskRunner& run)
 {
   std::vector<std::uint32_t>& leafOrder = this->Tree.vAcc;
   const std::size_t count = leafOrder.size();
-  oldIndex = leafOrder;
+  oldIndex.resize(count);
+  InChunks(count, 8, run, [&](std::size_t begin, std::size_t end) {
+    std::copy(leafOrder.begin() + begin, leafOrder.begin() + end, oldIndex.begin() + begin);
+  });
   if (!this->Reordered)
   {
     return; // no median cut: the leaves are in Morton order already
   }
-  std::vector<double> moved(3 * count);
+  UninitializedVector<double> moved(3 * count);
   InChunks(count, 8, run, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
@@ -198,9 +203,9 @@ inline void PointCloudIndex::MoveIntoLeafOrder(
   this->Cloud.Points = xyz.data();
 }
 
-inline PointCloudIndex::PointCloudIndex(std::vector<double>& xyz,
-  const std::vector<std::uint64_t>& mortonWords, std::vector<std::uint32_t>& oldIndex,
-  const TaskRunner& run)
+inline PointCloudIndex::PointCloudIndex(UninitializedVector<double>& xyz,
+  const UninitializedVector<std::uint64_t>& mortonWords,
+  UninitializedVector<std::uint32_t>& oldIndex, const TaskRunner& run)
   : Cloud{ xyz.data(), xyz.size() / 3 }
   , Tree(3, Cloud,
       nanoflann::KDTreeSingleIndexAdaptorParams(

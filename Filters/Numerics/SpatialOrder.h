@@ -55,12 +55,14 @@ inline std::uint64_t PackedMortonKey(
 /// Sorts words made by PackedMortonKey: a least-significant-digit radix sort over the key bits
 /// (three passes of 10-bit digits; 1024 buckets keep each pass's writes in cache). Stable, so
 /// ids given in increasing order stay so within a cell and the words end fully sorted.
-/// `scratch` is resized to the same length. Each pass counts, then scatters, `chunks` contiguous
+/// `scratch` is resized to the same length (Words: a std::vector of std::uint64_t, with any
+/// allocator). Each pass counts, then scatters, `chunks` contiguous
 /// pieces of the words as tasks given to `run` (which may run them at once). Each piece's words
 /// go after the previous pieces' words of the same digit, so the result is the same for any
 /// number of pieces.
-inline void RadixSortPacked(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch,
-  std::size_t chunks = 1, const TaskRunner& run = RunInTurn)
+template <typename Words>
+void RadixSortPacked(
+  Words& words, Words& scratch, std::size_t chunks = 1, const TaskRunner& run = RunInTurn)
 {
   constexpr std::size_t Buckets = 1 << 10;
   const std::size_t n = words.size();

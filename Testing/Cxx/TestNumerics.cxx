@@ -488,8 +488,8 @@ void TestMortonTree()
         original[3 * i] = 0.5;
       }
     }
-    std::vector<double> xyz = original;
-    std::vector<std::uint32_t> oldIndex;
+    lsi::UninitializedVector<double> xyz(original.begin(), original.end());
+    lsi::UninitializedVector<std::uint32_t> oldIndex;
     const std::unique_ptr<lsi::PointCloudIndex> index = lsi::MortonTree(xyz, oldIndex);
     bool samePoints = oldIndex.size() == n;
     std::vector<char> seen(n, 0);
@@ -618,12 +618,12 @@ void TestStillNearest()
 void TestBoundedSearchKeepsTies()
 {
   const int side = 14;
-  std::vector<double> xyz;
+  lsi::UninitializedVector<double> xyz;
   for (int x = 0; x < side; ++x)
     for (int y = 0; y < side; ++y)
       for (int z = 0; z < side; ++z)
         xyz.insert(xyz.end(), { double(x), double(y), double(z) });
-  std::vector<std::uint32_t> oldIndex;
+  lsi::UninitializedVector<std::uint32_t> oldIndex;
   const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(xyz, oldIndex);
   const lsi::PointCloudIndex& index = *tree;
   const std::size_t n = xyz.size() / 3, k = 11;

@@ -19,7 +19,7 @@ namespace lsi
 // points put in their order, then the tree built from that order. oldIndex[i] receives the
 // original position of what is now point i.
 inline std::unique_ptr<PointCloudIndex> MortonTree(
-  std::vector<double>& xyz, std::vector<std::uint32_t>& oldIndex)
+  UninitializedVector<double>& xyz, UninitializedVector<std::uint32_t>& oldIndex)
 {
   const std::size_t n = xyz.size() / 3;
   double lower[3] = { xyz[0], xyz[1], xyz[2] }, side = 1e-300;
@@ -34,20 +34,20 @@ inline std::unique_ptr<PointCloudIndex> MortonTree(
     side = std::max(side, high - lower[a]);
   }
   const double size[3] = { side, side, side };
-  std::vector<std::uint64_t> words(n), scratch;
+  UninitializedVector<std::uint64_t> words(n), scratch;
   for (std::size_t i = 0; i < n; ++i)
   {
     words[i] = PackedMortonKey(&xyz[3 * i], lower, size, static_cast<std::uint32_t>(i));
   }
   RadixSortPacked(words, scratch);
-  std::vector<double> sorted(3 * n);
+  UninitializedVector<double> sorted(3 * n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const std::uint32_t id = static_cast<std::uint32_t>(words[i]);
     std::copy(&xyz[3 * id], &xyz[3 * id] + 3, &sorted[3 * i]);
   }
   xyz.swap(sorted);
-  std::vector<std::uint32_t> treeOrder;
+  UninitializedVector<std::uint32_t> treeOrder;
   std::unique_ptr<PointCloudIndex> index(new PointCloudIndex(xyz, words, treeOrder, RunInTurn));
   oldIndex.resize(n);
   for (std::size_t i = 0; i < n; ++i)
