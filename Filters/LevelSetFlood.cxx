@@ -299,7 +299,8 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   // distances throughout (the same order, no square roots in the inner loop).
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
-  std::vector<double> distance(n, HUGE_VAL); // squared
+  std::vector<double> distance; // squared
+  ResizeMapped(distance, n, HUGE_VAL);
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;

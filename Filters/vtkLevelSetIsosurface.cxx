@@ -400,7 +400,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.FitCentres.clear();
   if (last.SlideReady)
   {
-    last.Values.resize(dataOffsets.size());
+    lsi::ResizeMapped(last.Values, dataOffsets.size());
     const double isoValue = this->IsoValue;
     const bool onField = field != nullptr;
     vtkSMPTools::For(

@@ -1,19 +1,27 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Per-sample arrays whose new elements are left uninitialised, for arrays that a parallel loop
-// fills (or that are written only near the surface). A std::vector zeroes new elements in
-// resize(), on one thread, and that first write to fresh memory is what faults its pages in:
-// measured on a virtual machine here, 2M doubles (16 MB) cost 0.047 s in resize() against 0.025 s
-// when two threads touch the halves, and the faults of the first run's arrays were a fifth of a
-// 2M-particle run, most of it with the second core idle. Left uninitialised, the pages fault in
-// inside the parallel loop that writes them, on every thread at once, and pages that are never
-// written cost neither time nor memory.
+// Per-sample arrays and page faults. The first write to fresh memory faults its pages in, and
+// measured on a virtual machine here that costs more than the writes: the first run's faults
+// were a fifth of a 2M-particle run, mostly on one thread while the other core waited. Two ways
+// around it:
+// - UninitializedVector: a std::vector whose resize(n) leaves new elements uninitialised, for
+//   arrays that a parallel loop fills (or that are written only near the surface): their pages
+//   fault in inside that loop, and pages never written cost neither time nor memory. (A
+//   std::vector zeroes new elements in resize(), on one thread.)
+// - ResizeMapped: for arrays that stay std::vector<double>, maps the new storage's pages in one
+//   call before resize() writes them, at half the cost of faulting them in one by one.
 #ifndef UninitializedVector_h
 #define UninitializedVector_h
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace lsi
 {
@@ -49,6 +57,44 @@ struct UninitializedAllocator : std::allocator<T>
 /// before it is read.
 template <typename T>
 using UninitializedVector = std::vector<T, UninitializedAllocator<T>>;
+
+/// Asks the kernel to map the pages inside [begin, begin + bytes) now, in one call (Linux 5.14's
+/// MADV_POPULATE_WRITE; elsewhere, or when refused, nothing happens and the writes fault them in
+/// as usual). For fresh memory that one thread is about to write: measured on a virtual machine
+/// here, 16 MB took 0.025 s this way against 0.047 s when the writes faulted each page in, and
+/// writes by two threads at once faulted no faster (0.025 s).
+inline void MapPagesNow(void* begin, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr std::uintptr_t Page = 4096; // whole pages inside the range only
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + Page - 1) & ~(Page - 1);
+  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(begin) + bytes) & ~(Page - 1);
+  if (bytes >= (std::size_t(1) << 20) && last > first)
+  {
+    madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+  }
+#else
+  (void)begin;
+  (void)bytes;
+#endif
+}
+
+/// values.resize(count, value), with the pages of new storage mapped first (MapPagesNow): for the
+/// per-sample arrays that a std::vector fills on one thread.
+template <typename Vector>
+void ResizeMapped(Vector& values, std::size_t count, const typename Vector::value_type& value = {})
+{
+  if (count > values.capacity())
+  {
+    values.reserve(count);
+  }
+  if (count > values.size())
+  {
+    MapPagesNow(
+      values.data() + values.size(), (count - values.size()) * sizeof(typename Vector::value_type));
+  }
+  values.resize(count, value);
+}
 
 } // namespace lsi
 
