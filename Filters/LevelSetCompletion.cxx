@@ -4,6 +4,7 @@
 
 #include "NearestNeighbors.h"
 #include "TangentPlaneCompletion.h"
+#include "UninitializedVector.h"
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -25,7 +26,8 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
   const std::size_t perPoint = static_cast<std::size_t>(side * side - 1);
   const std::size_t neighbors = std::min<std::size_t>(count, 2 * perPoint);
   PointCloudIndex index(current.Points.data(), count);
-  candidates.assign(3 * perPoint * count, 0.0);
+  candidates.clear();
+  ResizeMapped(candidates, 3 * perPoint * count, 0.0);
   valid.assign(perPoint * count, 0);
   struct Scratch
   {

@@ -8,6 +8,7 @@
 
 #include "LevelSetEnclosedSums.h"
 #include "LevelSetParallel.h"
+#include "UninitializedVector.h"
 
 #include "vtkSMPTools.h"
 #include "vtkTable.h"
@@ -94,7 +95,8 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     IndicesWhere<std::uint32_t>(n, [&](std::size_t i) { return DeepInside(in, i); });
   // The groups: the deep samples joined through their neighbour lists (as the touching ones
   // are in the full route: from the samples whose lists are whole), numbered in storage order.
-  deep.Group.assign(n, EnclosedDeepInside::None);
+  deep.Group.clear();
+  ResizeMapped(deep.Group, n, EnclosedDeepInside::None);
   for (std::size_t k = 0; k < inside.size(); ++k)
   {
     deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
