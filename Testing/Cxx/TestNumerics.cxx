@@ -13,6 +13,7 @@
 #include "Splats.h"
 #include "TangentBasis.h"
 #include "TangentPlaneCompletion.h"
+#include "UninitializedVector.h"
 
 #include "MortonTree.h"
 
@@ -926,8 +927,40 @@ void TestIsoValueShift()
     "a zero gradient moves phi by the cap, in the change's direction");
 }
 
+// The per-sample arrays of UninitializedVector.h hold what resize() would have put there: the
+// kept elements and the given value (pages mapped ahead or not); explicit values are written.
+void TestSampleArrays()
+{
+  for (const std::size_t count : { std::size_t(10), std::size_t(300000), std::size_t(1) << 21 })
+  {
+    std::vector<double> values = { 1.5, -2.0, 3.25 };
+    lsi::ResizeMapped(values, count, 7.0);
+    bool kept =
+      values.size() == count && values[0] == 1.5 && values[1] == -2.0 && values[2] == 3.25;
+    bool filled = std::all_of(values.begin() + 3, values.end(), [](double v) { return v == 7.0; });
+    Check(kept && filled, "ResizeMapped keeps the elements and fills the new ones");
+    lsi::ResizeMapped(values, 2);
+    Check(values.size() == 2 && values[1] == -2.0, "ResizeMapped shrinks like resize");
+    std::vector<std::uint32_t> ids;
+    lsi::ResizeMapped(ids, count);
+    Check(std::all_of(ids.begin(), ids.end(), [](std::uint32_t v) { return v == 0; }),
+      "ResizeMapped value-initialises by default");
+    lsi::UninitializedVector<double> explicitValues(count, -1.25);
+    Check(std::all_of(
+            explicitValues.begin(), explicitValues.end(), [](double v) { return v == -1.25; }),
+      "UninitializedVector writes explicit values");
+  }
+  // Written memory, mapped again over a range that starts and ends inside pages: unchanged.
+  std::vector<char> written(std::size_t(3) << 20, 'x');
+  lsi::MapPagesNow(written.data() + 3, written.size() - 10);
+  lsi::MapPagesNow(written.data(), 10);
+  Check(std::all_of(written.begin(), written.end(), [](char c) { return c == 'x'; }),
+    "MapPagesNow leaves the contents as they are");
+}
+
 int main()
 {
+  TestSampleArrays();
   TestIsoValueShift();
   TestTangentBasis();
   TestSPHKernels();
