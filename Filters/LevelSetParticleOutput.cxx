@@ -3,7 +3,6 @@
 #include "LevelSetParticleOutput.h"
 
 #include "LevelSetVertexCells.h"
-#include "UninitializedVector.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
@@ -33,7 +32,6 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
   double* out = levelSet->GetPointer(0);
-  MapPagesNow(out, static_cast<std::size_t>(n) * sizeof(double));
   const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
   if (mergedId.empty())
   {

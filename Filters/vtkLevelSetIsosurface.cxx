@@ -335,7 +335,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.InSeed.clear();
     last.SeedSpheres.clear();
   }
-  std::vector<double>().swap(last.DataOffsets); // this run's, moved there at its end
+  last.DataOffsets = last.QuickCheck ? dataOffsets : std::vector<double>();
   last.Spacing = settings.Spacing;
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
   if (!this->Evolve(*geometry, dataSign, dataOffsets, settings, phi, iterations))
@@ -418,10 +418,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Settings = isopointSettings;
     last.HalfWidth = halfWidth;
     last.Slid = 0.0;
-  }
-  if (last.QuickCheck) // (moved, not copied: a copy faults 16 MB of fresh pages in at 2M samples)
-  {
-    last.DataOffsets = std::move(dataOffsets);
   }
   this->LastRunTime = this->GetMTime();
   return true;
