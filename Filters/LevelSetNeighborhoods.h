@@ -217,8 +217,8 @@ struct Neighborhoods
   mutable std::vector<std::uint32_t> Sample;
   mutable std::uint64_t SampleEvery = 0;
   // The fixed sample's lists (FixedSampleRow), for the sample of SampleRowsEvery.
-  mutable std::vector<std::uint32_t> SampleIds;
-  mutable std::vector<double> SampleRadii;
+  mutable UninitializedVector<std::uint32_t> SampleIds; // filled in parallel
+  mutable UninitializedVector<double> SampleRadii;
   mutable std::uint64_t SampleRowsEvery = 0;
 
 private:
