@@ -6,7 +6,8 @@
 //   - resize:            std::vector's resize() (zeroes on one thread, faulting page by page);
 //   - touch, 2 threads:  uninitialised storage, each half zeroed by a thread of its own;
 //   - mapped, resize:    the pages mapped in one call (MapPagesNow), then resize();
-//   - mapped, 2 threads: each half mapped by a thread of its own, then resize().
+//   - mapped, 2 threads: each half mapped by a thread of its own, then resize();
+//   - resident:          the same writes again into the first array, whose pages are mapped.
 // Every array is kept until the end, so each one gets fresh pages. Median of REPEATS (default 9).
 // Reports numbers and asserts nothing.
 //   LevelSetPageFaults [REPEATS]
@@ -52,7 +53,7 @@ int main(int argc, char* argv[])
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 9;
   std::vector<std::vector<double>> kept;
   std::vector<lsi::UninitializedVector<double>> keptUninitialized;
-  std::vector<double> resize, touch, mapped, mappedTwo;
+  std::vector<double> resize, touch, mapped, mappedTwo, resident;
   const std::size_t half = Count / 2;
   for (int r = 0; r < repeats; ++r)
   {
@@ -77,11 +78,13 @@ int main(int argc, char* argv[])
         [&](int k) { lsi::MapPagesNow(values.data() + k * half, half * sizeof(double)); });
       values.resize(Count);
     }));
+    resident.push_back(Seconds([&]() { kept.front().assign(Count, static_cast<double>(r)); }));
   }
   std::printf("fresh 16 MB array (2M doubles), median of %d, seconds\n", repeats);
   std::printf("%-20s %.4f\n", "resize", Median(resize));
   std::printf("%-20s %.4f\n", "touch, 2 threads", Median(touch));
   std::printf("%-20s %.4f\n", "mapped, resize", Median(mapped));
   std::printf("%-20s %.4f\n", "mapped, 2 threads", Median(mappedTwo));
+  std::printf("%-20s %.4f\n", "resident", Median(resident));
   return EXIT_SUCCESS;
 }

@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Per-sample arrays and page faults. The first write to fresh memory faults its pages in, and
-// measured on a virtual machine here that costs more than the writes: the first run's faults
-// were a fifth of a 2M-particle run, mostly on one thread while the other core waited. Two ways
-// around it:
+// Per-sample arrays and page faults. The first write to fresh memory faults its pages in, and on
+// a virtual machine here that costs far more than the writes (Benchmarks/LevelSetPageFaults:
+// 16 MB zeroed by resize() in 0.045-0.051 s, the same writes into mapped pages in 0.0006 s);
+// done by one thread, it leaves the other cores idle. Two ways around it:
 // - UninitializedVector: a std::vector whose resize(n) leaves new elements uninitialised, for
 //   arrays that a parallel loop fills (or that are written only near the surface): their pages
 //   fault in inside that loop, and pages never written cost neither time nor memory. (A
