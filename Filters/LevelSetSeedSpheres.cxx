@@ -39,7 +39,7 @@ std::vector<double> SeedSpheres(const double center[3], double radius,
   std::vector<double> spheres;
   if (radius > 0.0)
   {
-    spheres.insert(spheres.end(), { center[0], center[1], center[2], radius });
+    spheres = { center[0], center[1], center[2], radius }; // (insert: GCC 12 warned falsely)
     spheres.insert(spheres.end(), additional.begin(), additional.end());
   }
   return spheres;
