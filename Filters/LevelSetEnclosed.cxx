@@ -88,11 +88,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // Each real particle's own sample (not an image's), and its shell width: one local spacing.
   // (0 for a particle merged into another.) Filled in parallel: at 20M particles these arrays
   // are 160 MB each.
-  std::vector<std::size_t, UninitializedAllocator<std::size_t>> sampleOf(
-    static_cast<std::size_t>(n));
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    std::fill(sampleOf.begin() + begin, sampleOf.begin() + end, std::size_t(0));
-  });
+  UninitializedVector<std::size_t> sampleOf =
+    FilledInParallel(static_cast<std::size_t>(n), std::size_t(0));
   const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
   vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
@@ -183,7 +180,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   }
   // Each component is named by its lowest slot, as a union-find over the slots names it: its
   // root sample (the lowest index, so met first below) takes the lowest slot of its members.
-  std::vector<vtkIdType, UninitializedAllocator<vtkIdType>> lowest(geometry.NumberOfSamples);
+  UninitializedVector<vtkIdType> lowest(geometry.NumberOfSamples);
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
     if (touches(i))
@@ -233,7 +230,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // surface); the sums below are serial, in particle order, so they do not depend on threads.
   const std::vector<std::uint32_t> touchingSamples = IndicesWhere<std::uint32_t>(
     geometry.NumberOfSamples, [&](std::size_t i) { return touching[i] != 0; });
-  std::vector<double, UninitializedAllocator<double>> distances(geometry.NumberOfSamples);
+  UninitializedVector<double> distances(geometry.NumberOfSamples);
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(touchingSamples.size()), 256, [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)

@@ -62,7 +62,7 @@ inline bool Touches(const EnclosedInputs& in, std::size_t i)
 /// lowest member). The links start in parallel: at 20M samples they are 80 MB.
 struct Links
 {
-  std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>> Parent;
+  UninitializedVector<std::uint32_t> Parent;
   explicit Links(std::size_t n);
   std::uint32_t Find(std::uint32_t i)
   {
