@@ -4,31 +4,50 @@
 
 #include "NearestNeighbors.h"
 #include "TangentPlaneCompletion.h"
-#include "UninitializedVector.h"
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 
 namespace lsi
 {
 
 namespace
 {
-// Completion candidates: centres of the empty tangent-plane cells around each isopoint.
-void CompletionCandidates(const IsopointSet& current, const IsopointSettings& settings,
-  std::vector<double>& candidates, std::vector<char>& valid)
+// The voxels that the isopoints occupy, sorted.
+std::vector<std::uint64_t> OccupiedVoxels(const IsopointSet& current, double cell)
+{
+  std::vector<std::uint64_t> keys(current.Points.size() / 3);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(keys.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      keys[i] = VoxelKey(&current.Points[3 * i], cell);
+    }
+  });
+  ParallelSort(keys.begin(), keys.end(), std::less<std::uint64_t>());
+  return keys;
+}
+
+// Completion candidates: centres of the empty tangent-plane cells around each isopoint, in the
+// order of the isopoints and of their cells. A proposal in a voxel an isopoint already occupies
+// is left out at once: the isopoint keeps its voxel (ThinnedVoxels' preferred points), so the
+// proposal could never be kept. (At 2M samples 290,000 proposals, most of them there.)
+std::vector<double> CompletionCandidates(
+  const IsopointSet& current, const IsopointSettings& settings)
 {
   const std::size_t count = current.Points.size() / 3;
   const int side = 2 * settings.CompletionHalfCells + 1;
   const std::size_t perPoint = static_cast<std::size_t>(side * side - 1);
   const std::size_t neighbors = std::min<std::size_t>(count, 2 * perPoint);
+  const std::vector<std::uint64_t> occupied = OccupiedVoxels(current, settings.CellSize);
   PointCloudIndex index(current.Points.data(), count);
-  candidates.clear();
-  ResizeMapped(candidates, 3 * perPoint * count, 0.0);
-  valid.assign(perPoint * count, 0);
+  // Fixed blocks of isopoints, each with its own list, joined in block order: the same list on
+  // any number of threads, without a slot for every cell of every isopoint.
+  constexpr std::size_t Block = 512;
+  std::vector<std::vector<double>> found((count + Block - 1) / Block);
   struct Scratch
   {
     std::vector<std::uint32_t> Ids;
@@ -36,66 +55,63 @@ void CompletionCandidates(const IsopointSet& current, const IsopointSettings& se
     std::vector<Eigen::Vector3d> Cells;
   };
   vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    Scratch& s = scratch.Local();
-    s.Ids.resize(neighbors);
-    s.D2.resize(neighbors);
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const Eigen::Vector3d p(&current.Points[3 * i]);
-      const Eigen::Vector3d n(&current.Normals[3 * i]);
-      const std::size_t found = index.Nearest(p.data(), neighbors, s.Ids.data(), s.D2.data());
-      s.Cells.clear();
-      EmptyTangentCells(
-        p, n, settings.CellSize, settings.CompletionHalfCells, settings.CellSize, found,
-        [&](std::size_t j) { return Eigen::Vector3d(&current.Points[3 * s.Ids[j]]); }, s.Cells);
-      for (std::size_t c = 0; c < s.Cells.size() && c < perPoint; ++c)
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(found.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      Scratch& s = scratch.Local();
+      s.Ids.resize(neighbors);
+      s.D2.resize(neighbors);
+      for (vtkIdType b = first; b < last; ++b)
       {
-        const std::size_t slot = perPoint * i + c;
-        for (int d = 0; d < 3; ++d)
+        std::vector<double>& out = found[static_cast<std::size_t>(b)];
+        const std::size_t end = std::min(count, (static_cast<std::size_t>(b) + 1) * Block);
+        for (std::size_t i = static_cast<std::size_t>(b) * Block; i < end; ++i)
         {
-          candidates[3 * slot + d] = s.Cells[c][d];
+          const Eigen::Vector3d p(&current.Points[3 * i]);
+          const Eigen::Vector3d n(&current.Normals[3 * i]);
+          const std::size_t near = index.Nearest(p.data(), neighbors, s.Ids.data(), s.D2.data());
+          s.Cells.clear();
+          EmptyTangentCells(
+            p, n, settings.CellSize, settings.CompletionHalfCells, settings.CellSize, near,
+            [&](std::size_t j) { return Eigen::Vector3d(&current.Points[3 * s.Ids[j]]); }, s.Cells);
+          for (std::size_t c = 0; c < s.Cells.size() && c < perPoint; ++c)
+          {
+            if (!std::binary_search(
+                  occupied.begin(), occupied.end(), VoxelKey(s.Cells[c].data(), settings.CellSize)))
+            {
+              out.insert(out.end(), s.Cells[c].data(), s.Cells[c].data() + 3);
+            }
+          }
         }
-        valid[slot] = 1;
       }
-    }
-  });
-}
-// Neighbouring isopoints propose the same empty cells: before the costly refinement, keep one
-// proposal per voxel, and none in a voxel that an isopoint already occupies.
-void DropProposalsInOccupiedVoxels(const IsopointSet& current, double cell,
-  const std::vector<double>& candidates, std::vector<char>& valid)
-{
-  const std::size_t existing = current.Points.size() / 3;
-  std::vector<double> all(current.Points);
-  std::vector<std::size_t> candidateOf;
-  for (std::size_t c = 0; c < valid.size(); ++c)
+    });
+  std::vector<double> candidates;
+  std::size_t total = 0;
+  for (const std::vector<double>& part : found)
   {
-    if (valid[c])
-    {
-      all.insert(all.end(), &candidates[3 * c], &candidates[3 * c + 3]);
-      candidateOf.push_back(c);
-    }
+    total += part.size();
   }
-  std::fill(valid.begin(), valid.end(), 0);
-  for (std::size_t k : ThinByVoxels(all, cell, existing)) // existing points win
+  candidates.reserve(total);
+  for (const std::vector<double>& part : found)
   {
-    if (k >= existing)
-    {
-      valid[candidateOf[k - existing]] = 1;
-    }
+    candidates.insert(candidates.end(), part.begin(), part.end());
   }
+  return candidates;
 }
-
 } // namespace
 
 bool CompleteIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
   const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
 {
-  std::vector<double> candidates, candidateNormals;
-  std::vector<char> candidateValid;
-  CompletionCandidates(out, settings, candidates, candidateValid);
-  DropProposalsInOccupiedVoxels(out, settings.CellSize, candidates, candidateValid);
+  // Neighbouring isopoints propose the same empty cells: before the costly projection, one
+  // proposal per voxel (the same one as thinning them with the isopoints would keep).
+  const std::vector<double> proposals = CompletionCandidates(out, settings);
+  const std::vector<std::size_t> distinct = ThinByVoxels(proposals, settings.CellSize);
+  std::vector<double> candidates(3 * distinct.size()), candidateNormals;
+  for (std::size_t k = 0; k < distinct.size(); ++k)
+  {
+    std::copy_n(&proposals[3 * distinct[k]], 3, &candidates[3 * k]);
+  }
+  std::vector<char> candidateValid(distinct.size(), 1);
   NewtonSettings newton = settings.Newton;
   newton.MaximumDistance = 2.0 * settings.CellSize; // stay near the cell it was proposed for
   if (!ProjectCandidates(geometry, phi, newton, NormalFitScaleFor(settings), candidates,

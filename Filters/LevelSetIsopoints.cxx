@@ -17,58 +17,29 @@
 namespace lsi
 {
 
+std::uint64_t VoxelKey(const double* x, double cell)
+{
+  std::uint64_t key = 0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const auto v = static_cast<std::int64_t>(std::floor(x[d] / cell)) + (1 << 20);
+    key = (key << 21) | (static_cast<std::uint64_t>(v) & ((1u << 21) - 1));
+  }
+  return key;
+}
+
 std::vector<std::size_t> ThinByVoxels(
   const std::vector<double>& points, double cell, std::size_t preferred)
 {
-  const std::size_t count = points.size() / 3;
-  std::vector<std::uint64_t> keys(count);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      std::uint64_t key = 0;
-      for (int d = 0; d < 3; ++d)
-      {
-        const auto v = static_cast<std::int64_t>(std::floor(points[3 * i + d] / cell)) + (1 << 20);
-        key = (key << 21) | (static_cast<std::uint64_t>(v) & ((1u << 21) - 1));
-      }
-      keys[i] = key;
-    }
-  });
-  std::vector<std::size_t> order(count);
-  std::iota(order.begin(), order.end(), 0);
-  // In each voxel the first of the preferred points wins, else the point with the smallest
-  // coordinates: a choice that does not depend on the order in which points were found (which
-  // differs between thread counts and between MPI ranks).
-  auto before = [&](std::size_t a, std::size_t b) {
-    if (keys[a] != keys[b])
-    {
-      return keys[a] < keys[b];
-    }
-    const bool pa = a < preferred, pb = b < preferred;
-    if (pa != pb || (pa && pb))
-    {
-      return pa != pb ? pa : a < b;
-    }
-    const double* x = &points[3 * a];
-    const double* y = &points[3 * b];
-    return std::lexicographical_compare(x, x + 3, y, y + 3) || (std::equal(x, x + 3, y) && a < b);
-  };
-  ParallelSort(order.begin(), order.end(), before);
-  std::vector<std::size_t> kept;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    if (k == 0 || keys[order[k]] != keys[order[k - 1]])
-    {
-      kept.push_back(order[k]);
-    }
-  }
-  std::sort(kept.begin(), kept.end());
-  return kept;
+  return ThinnedVoxels(
+    points.size() / 3, [&](std::size_t k) { return &points[3 * k]; }, cell, preferred);
 }
 
 void AppendSelected(const std::vector<double>& points, const std::vector<double>& normals,
   const std::vector<std::size_t>& selected, IsopointSet& out)
 {
+  out.Points.reserve(out.Points.size() + 3 * selected.size());
+  out.Normals.reserve(out.Normals.size() + 3 * selected.size());
   for (std::size_t i : selected)
   {
     out.Points.insert(out.Points.end(), &points[3 * i], &points[3 * i + 3]);

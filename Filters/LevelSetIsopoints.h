@@ -12,6 +12,9 @@
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
+#include "vtkSMPTools.h"
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -128,10 +131,59 @@ bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field,
 
 // Pieces shared by the three steps.
 
-/// Indices (ascending) of one point per cubic voxel of side `cell` (points: 3 doubles each): the
-/// first of the `preferred` leading points in the voxel, else the one with the smallest
-/// coordinates, so the choice does not depend on the order of the points. Removes
-/// near-duplicates and bounds the output's density.
+/// The cubic voxel of side `cell` that holds x, as one key (21 bits per axis).
+std::uint64_t VoxelKey(const double* x, double cell);
+
+/// Indices (ascending, below `count`) of one point per cubic voxel of side `cell` (point k at
+/// pointOf(k), 3 doubles): the first of the `preferred` leading points in the voxel, else the
+/// one with the smallest coordinates (the lowest index among equal ones), so the choice does
+/// not depend on the order of the points. Removes near-duplicates and bounds the output's
+/// density.
+template <typename PointOf>
+std::vector<std::size_t> ThinnedVoxels(
+  std::size_t count, PointOf&& pointOf, double cell, std::size_t preferred = 0)
+{
+  // The keys are sorted with their points' indices beside them (not the indices by a key looked
+  // up elsewhere: a cache miss per comparison); each voxel's points are then one run, in index
+  // order, whose winner one scan finds.
+  struct Entry
+  {
+    std::uint64_t Key;
+    std::size_t Index;
+  };
+  std::vector<Entry> entries(count);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const std::size_t i = static_cast<std::size_t>(k);
+      entries[i] = { VoxelKey(pointOf(i), cell), i };
+    }
+  });
+  ParallelSort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.Key < b.Key || (a.Key == b.Key && a.Index < b.Index);
+  });
+  std::vector<std::size_t> kept;
+  for (std::size_t first = 0; first < count;)
+  {
+    std::size_t winner = entries[first].Index, k = first + 1;
+    for (; k < count && entries[k].Key == entries[first].Key; ++k)
+    {
+      // (A preferred point, the lowest index, comes first in its run and keeps the voxel.)
+      const double* x = pointOf(entries[k].Index);
+      const double* best = pointOf(winner);
+      if (winner >= preferred && std::lexicographical_compare(x, x + 3, best, best + 3))
+      {
+        winner = entries[k].Index;
+      }
+    }
+    kept.push_back(winner);
+    first = k;
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+/// ThinnedVoxels over `points` (3 doubles each).
 std::vector<std::size_t> ThinByVoxels(
   const std::vector<double>& points, double cell, std::size_t preferred = 0);
 
