@@ -83,9 +83,11 @@ struct LastOutputs
   vtkSmartPointer<vtkTable> Convergence, Enclosed;
   int Iterations = 0;
   bool Converged = false;
-  // For the quick check of a seed move (serial runs with the flood start, no periodic box and
-  // no merged duplicates): the flooded samples, f - f_iso and the spacing, in storage order.
+  // For the quick check of a seed move (serial runs with the flood start and no merged
+  // duplicates): the flooded samples, f - f_iso and the spacing, in storage order; in a
+  // periodic box, the particles with their images (the samples are theirs).
   bool QuickCheck = false;
+  vtkSmartPointer<vtkPointSet> Work;
   std::vector<char> Inside;
   std::vector<double> DataOffsets;
   double Spacing = 0.0;
@@ -103,7 +105,7 @@ struct LastOutputs
   std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
   double IsoValue = 0.0;
   std::vector<double> Phi;
-  IsopointSet Isopoints;
+  IsopointSet Isopoints;          // in a periodic box all of them, before the periodic cell is cut
   std::vector<double> FitCentres; // where FitSamples were gathered (empty: at the points)
   IsopointSettings Settings;
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one

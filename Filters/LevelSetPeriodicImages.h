@@ -81,6 +81,39 @@ vtkSmartPointer<vtkPolyData> WithPeriodicImages(
 std::vector<vtkIdType> OriginalIds(
   const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf);
 
+/// The flood runs again at most this many times to follow a component through the faces (one
+/// that wraps through several faces takes a few rounds).
+constexpr int FloodRoundsAcrossFaces = 8;
+
+/// A particle and its images are one particle: where the flood reached one of them
+/// (`reached(i)` for sample i), its other samples with f > f_iso (`dataOffsets`) not reached yet
+/// become seeds (`inSeed`), for the flood to run again. `original`: OriginalIds. Returns whether
+/// any seed was added.
+template <typename Reached>
+bool SeedImagesOfReached(const std::vector<vtkIdType>& original, vtkIdType originalCount,
+  const std::vector<double>& dataOffsets, Reached&& reached, std::vector<char>& inSeed)
+{
+  std::vector<char> particleReached(static_cast<std::size_t>(originalCount), 0);
+  for (std::size_t i = 0; i < original.size(); ++i)
+  {
+    if (original[i] >= 0) // not another rank's ghost
+    {
+      particleReached[original[i]] |= reached(i) ? 1 : 0;
+    }
+  }
+  bool added = false;
+  for (std::size_t i = 0; i < original.size(); ++i)
+  {
+    if (original[i] >= 0 && particleReached[original[i]] && !inSeed[i] && !reached(i) &&
+      dataOffsets[i] > 0.0)
+    {
+      inSeed[i] = 1;
+      added = true;
+    }
+  }
+  return added;
+}
+
 /// How many original samples have a neighbourhood (or an SPH support, `supports` per sample in
 /// storage order, may be empty) that reaches past the images: their neighbourhoods are cut, so
 /// the margin is too small for the sampling near the faces. `needed` receives the margin (as a

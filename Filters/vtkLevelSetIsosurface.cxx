@@ -327,8 +327,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   // What a later seed move needs to recognise the same flood (ReuseAfterSeedMove): serial runs
   // with the flood start only (a periodic cell around the seed moves with it).
-  last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() &&
-    !this->Internal->Box.Enabled && mergedId.empty();
+  last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() && mergedId.empty();
+  // In a periodic box the method ran on the particles and their images: a re-run needs them.
+  last.Work = last.QuickCheck && this->Internal->Box.Enabled ? input : nullptr;
   last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
   if (!last.QuickCheck)
   {
@@ -351,6 +352,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   this->KeepOwnedIsopoints(*geometry, isopoints);
+  // In a periodic box a slide moves every point found, the images' too, and cuts the cell anew.
+  lsi::IsopointSet uncut;
+  if (this->Internal->Box.Enabled && this->QuickIsoValueChanges && last.QuickCheck)
+  {
+    uncut = isopoints;
+  }
   this->KeepPeriodicCell(isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
   // One search index over the final isopoints, for the splat radii and the Enclosed table.
@@ -388,7 +395,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Converged = this->Converged;
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
   last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
-    isopointSettings.RefineOnData && (field || isopoints.FitSize > 0);
+    isopointSettings.RefineOnData && (field || isopoints.FitSize > 0) &&
+    (!this->Internal->Box.Enabled || !uncut.Points.empty());
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
@@ -414,7 +422,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Field = std::move(field);
     last.IsoValue = this->IsoValue;
     last.Phi = std::move(phi);
-    last.Isopoints = std::move(isopoints);
+    last.Isopoints = this->Internal->Box.Enabled ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
     last.HalfWidth = halfWidth;
     last.Slid = 0.0;
@@ -686,27 +694,11 @@ bool vtkLevelSetIsosurface::FollowAcrossFaces(const lsi::Neighborhoods& geometry
   // through several faces takes a few rounds).
   const std::vector<vtkIdType> original =
     lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf);
-  for (int round = 0; round < 8; ++round)
+  for (int round = 0; round < lsi::FloodRoundsAcrossFaces; ++round)
   {
-    std::vector<char> reached(static_cast<std::size_t>(internal.OriginalCount), 0);
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      if (original[i] >= 0) // not another rank's ghost
-      {
-        reached[original[i]] |= phi[i] > 0.0 ? 1 : 0;
-      }
-    }
-    bool added = false;
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      if (original[i] >= 0 && reached[original[i]] && !inSeed[i] && !(phi[i] > 0.0) &&
-        dataOffsets[i] > 0.0)
-      {
-        inSeed[i] = 1;
-        added = true;
-      }
-    }
-    if (!added)
+    if (!lsi::SeedImagesOfReached(
+          original, internal.OriginalCount, dataOffsets,
+          [&](std::size_t i) { return phi[i] > 0.0; }, inSeed))
     {
       return true;
     }
@@ -735,15 +727,61 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   {
     kept[i] = lsi::InKeptCell(&isopoints.Points[3 * i], internal.Box, nullptr) ? 1 : 0;
   }
+  const std::vector<std::size_t> selected = lsi::ValidIndices(kept);
   lsi::IsopointSet inCell;
-  lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), inCell);
+  lsi::AppendSelected(isopoints.Points, isopoints.Normals, selected, inCell);
+  // The kept points keep their fits' samples and models (for the arrays interpolated onto them),
+  // unless they move by whole boxes: their samples then lie a box away.
+  const std::size_t fit = isopoints.FitSize;
+  const bool withFits = this->PeriodicOutput != AROUND_SEED && fit > 0 &&
+    isopoints.FitSamples.size() == fit * kept.size() &&
+    isopoints.FitModels.size() == lsi::ModelSize * kept.size();
+  for (std::size_t k = 0; withFits && k < selected.size(); ++k)
+  {
+    const std::size_t i = selected[k];
+    inCell.FitSamples.insert(inCell.FitSamples.end(), &isopoints.FitSamples[fit * i],
+      &isopoints.FitSamples[fit * i] + fit);
+    inCell.FitModels.insert(inCell.FitModels.end(), &isopoints.FitModels[lsi::ModelSize * i],
+      &isopoints.FitModels[lsi::ModelSize * i] + lsi::ModelSize);
+  }
   isopoints.Points.swap(inCell.Points);
   isopoints.Normals.swap(inCell.Normals);
-  isopoints.FitSamples.clear(); // dropped and moved points: their nearest samples are others
-  isopoints.FitModels.clear();
+  isopoints.FitSamples.swap(inCell.FitSamples);
+  isopoints.FitModels.swap(inCell.FitModels);
   if (this->PeriodicOutput == AROUND_SEED)
   {
     lsi::IntoCellAround(isopoints.Points, internal.Box, internal.SeedCenter);
+    this->WarnBeyondImages(isopoints.Points);
+  }
+}
+
+void vtkLevelSetIsosurface::WarnBeyondImages(const std::vector<double>& points)
+{
+  // The data are sampled where the points are: beyond the images there are no particles.
+  const lsi::PeriodicBox& box = this->Internal->Box;
+  std::size_t beyond = 0;
+  for (std::size_t i = 0; i < points.size(); i += 3)
+  {
+    bool out = false;
+    for (int d = 0; d < 3; ++d)
+    {
+      const double reach = this->PeriodicMargin * box.Size[d];
+      out = out || points[i + d] < box.Origin[d] - reach ||
+        points[i + d] > box.Origin[d] + box.Size[d] + reach;
+    }
+    beyond += out ? 1 : 0;
+  }
+  if (beyond > 0 && this->ReportsForAll())
+  {
+    vtkWarningMacro(<< beyond << " of the " << points.size() / 3
+                    << " surface points lie, in the cell around the seed (PeriodicOutput), "
+                       "farther beyond the box's faces than its ghost images reach "
+                       "(PeriodicMargin "
+                    << this->PeriodicMargin
+                    << "): the arrays interpolated onto them, and on the SPH field their "
+                       "splats' corners, come from the nearest particles inside the images, not "
+                       "from their own neighbourhood. PeriodicOutput IN_BOX, or a larger "
+                       "PeriodicMargin, gives them their own.");
   }
 }
 

@@ -123,7 +123,8 @@ public:
    * change only next to the slid surface; every point must land within two spacings (on the MLS
    * fit, in steps of half a spacing, each from the samples nearest to where it starts), between the
    * new inside and outside. Otherwise (a larger change, a component joined or lost, a cavity
-   * opened, a periodic box, MPI) the method runs in full. The points then lie on the same level as
+   * opened, MPI) the method runs in full; in a periodic box every point slides, those beyond the
+   * faces too, and the kept cell is cut anew. The points then lie on the same level as
    * the full method's, spread as the last run left them; the LevelSet array is the last one moved
    * by the change over the data's gradient (within the band), so it and the Enclosed table match a
    * full run to first order in the change. The surface may slide two spacings in all before the
@@ -140,7 +141,8 @@ public:
    * tenth of the data's largest extent (ParaView's default: a script that creates the filter
    * before its input has bounds gets -0.2 from the bounds domain). Default centre (0, 0, 0).
    * With the flood start, a re-run that only moved the seeds and floods the same samples
-   * hands on the last outputs (ReusedLastOutputs). */
+   * hands on the last outputs (ReusedLastOutputs); in a periodic box with PeriodicOutput
+   * AROUND_SEED, only if the main seed's centre did not move (the kept cell follows it). */
   void SetSeedCenter(double x, double y, double z);
   void SetSeedCenter(const double center[3])
   {
@@ -544,6 +546,9 @@ private:
   // samples are flooded, hands on the last outputs. False: run the method.
   bool ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
     vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
+  // Whether the kept periodic cell is the last run's (PeriodicOutput AROUND_SEED centres it on
+  // the main seed of the last flood's spheres).
+  bool SameKeptCell() const;
   // Likewise for IsoValue: IsoValueOnlyTime is the modification time after an isovalue change
   // when nothing else changed since the last run.
   vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0, IsoValueOnlyTime = 0;
@@ -590,6 +595,8 @@ private:
   bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
+  // Warns when points moved into the cell around the seed lie beyond the ghost images.
+  void WarnBeyondImages(const std::vector<double>& points);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
   const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);

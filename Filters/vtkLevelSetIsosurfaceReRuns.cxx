@@ -10,6 +10,7 @@
 #include "LevelSetFlood.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsoValueSlide.h"
+#include "LevelSetPeriodicImages.h"
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetTiming.h"
 
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -68,9 +70,9 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
     return nullptr;
   }
   bool searched = false;
-  const lsi::Neighborhoods* geometry =
-    this->Internal->Cache.Get(input->GetPoints(), this->NumberOfNeighbors,
-      static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
+  vtkPoints* points = last.Work ? last.Work->GetPoints() : input->GetPoints();
+  const lsi::Neighborhoods* geometry = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
+    static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
   return geometry && !searched && geometry->NumberOfSamples == last.Inside.size() ? geometry
                                                                                   : nullptr;
 }
@@ -109,10 +111,61 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     last.SeedSpheres = spheres;
     last.InSeed = std::move(seeds.InSeed);
   }
-  lsi::FloodResult flood;
-  inside = lsi::FloodedInside(geometry, dataOffsets, last.InSeed,
-    static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-  return !flood.Aborted && flood.SeedSamples > 0;
+  // As the method floods (Initialize, FollowAcrossFaces): in a periodic box, a particle the
+  // flood reached seeds its images, and the flood runs again.
+  std::vector<char> inSeed;
+  const std::vector<char>* seeds = &last.InSeed;
+  const lsi::PeriodicBox& box = this->Internal->Box;
+  const std::vector<vtkIdType> original = box.Enabled
+    ? lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf)
+    : std::vector<vtkIdType>();
+  std::size_t seedSamples = 0;
+  for (int round = 0; round <= (box.Enabled ? lsi::FloodRoundsAcrossFaces : 0); ++round)
+  {
+    if (round > 0)
+    {
+      if (round == 1)
+      {
+        inSeed = last.InSeed;
+        seeds = &inSeed;
+      }
+      if (!lsi::SeedImagesOfReached(
+            original, this->Internal->OriginalCount, dataOffsets,
+            [&](std::size_t i) { return inside[i] != 0; }, inSeed))
+      {
+        break;
+      }
+    }
+    lsi::FloodResult flood;
+    inside = lsi::FloodedInside(geometry, dataOffsets, *seeds,
+      static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
+    if (flood.Aborted)
+    {
+      return false;
+    }
+    seedSamples = round == 0 ? flood.SeedSamples : seedSamples;
+  }
+  return seedSamples > 0;
+}
+
+bool vtkLevelSetIsosurface::SameKeptCell() const
+{
+  // The cell centred on the main seed moves with it (as Initialize places it).
+  const lsi::PeriodicBox& box = this->Internal->Box;
+  if (!box.Enabled || this->PeriodicOutput != AROUND_SEED)
+  {
+    return true;
+  }
+  const std::vector<double>& spheres = this->Internal->Last.SeedSpheres;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double centre = spheres.empty() ? box.Origin[d] + 0.5 * box.Size[d] : spheres[d];
+    if (centre != this->Internal->SeedCenter[d])
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
@@ -123,7 +176,7 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* 
   // (The isovalue and the data are those of the last run, which checked them.)
   std::vector<char> inside;
   if (!geometry || !this->FloodFromSeeds(*geometry, last.DataOffsets, inside) ||
-    inside != last.Inside)
+    inside != last.Inside || !this->SameKeptCell())
   {
     return false;
   }
@@ -231,22 +284,37 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   std::vector<double>& phi = last.Phi;
   lsi::ShiftLevelSet(
     *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
+  // In a periodic box the outputs show the kept cell's points, with a search index of their
+  // own, and the particles' arrays are the images' too.
+  vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
+  const lsi::IsopointSet* shown = &isopoints;
+  const lsi::PointCloudIndex* shownIndex = surfaceIndex.get();
+  lsi::IsopointSet cut;
+  std::unique_ptr<lsi::PointCloudIndex> cutIndex;
+  if (this->Internal->Box.Enabled)
+  {
+    cut = isopoints;
+    this->KeepPeriodicCell(cut);
+    cutIndex = lsi::IndexOfPoints(cut.Points);
+    shown = &cut;
+    shownIndex = cutIndex.get();
+  }
   this->IsopointSeconds = lsi::SecondsSince(start);
   if (!this->MakeSurfaceOutput(
-        input, *geometry, isopoints, last.Field.get(), surfaceIndex.get(), surfaceOutput))
+        work, *geometry, *shown, last.Field.get(), shownIndex, surfaceOutput))
   {
     return false;
   }
   start = lsi::Clock::now();
-  this->MakeParticleOutputs(input, input, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
-    isopoints, surfaceIndex.get(), particleOutput, enclosed, nullptr, &last.DeepInside);
+  this->MakeParticleOutputs(input, work, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
+    *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (this->CheckAbort())
   {
     return false;
   }
-  this->NumberOfIsopoints = static_cast<vtkIdType>(isopoints.Points.size() / 3);
+  this->NumberOfIsopoints = static_cast<vtkIdType>(shown->Points.size() / 3);
   this->NumberOfIterationsPerformed = last.Iterations;
   this->Converged = last.Converged;
   this->SlidLastSurface = true;

@@ -6,6 +6,7 @@
 // method in full, with exactly its outputs.
 #include "vtkLevelSetIsosurface.h"
 
+#include "MessageCounter.h"
 #include "TestCheck.h"
 
 #include "vtkDataArray.h"
@@ -29,6 +30,7 @@
 namespace
 {
 using lsi::test::Check;
+using lsi::test::MessageCounter;
 
 // `count` random points of [0, length] x [0, 60]^2 (a spacing of about 1 for 60 points per 60
 // length units) with f = field(x).
@@ -360,6 +362,114 @@ void TestUnitsOfLengthAndValue()
       std::to_string(scaledVolume) + ")");
 }
 
+// The distance of x from c in the periodic box [0, 60)^3 (to the nearest image of c).
+double PeriodicDistance(const double* x, const double* c)
+{
+  double sum = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    double offset = std::abs(x[d] - c[d]);
+    offset = std::min(offset, 60.0 - offset);
+    sum += offset * offset;
+  }
+  return std::sqrt(sum);
+}
+
+// A periodic box (cosmological runs): a ball of radius 12 across the face x = 0 of the box
+// [0, 60)^3, seeded inside the box. A small change slides, as without a box: the kept cell's
+// points lie on the new level as closely as the method's, as many, with the method's enclosed
+// volume; a seed move inside the ball hands on the outputs (the kept cell is the box), and
+// with PeriodicOutput AROUND_SEED it does not (the cell moves with the seed): the method runs.
+void TestPeriodicBox()
+{
+  const double centre[3] = { 5.0, 30.0, 30.0 };
+  vtkSmartPointer<vtkPolyData> data =
+    Sampled(216000, 60.0, 13, [&](const double* x) { return 12.0 - PeriodicDistance(x, centre); });
+  auto configure = [&](vtkLevelSetIsosurface* filter, double isoValue) {
+    Configure(filter, data, isoValue);
+    filter->SetBoxSize(60, 60, 60);
+    filter->SetSeedCenter(centre[0], centre[1], centre[2]);
+    filter->SetSeedRadius(3);
+  };
+  vtkNew<vtkLevelSetIsosurface> quick;
+  configure(quick, 0.0);
+  quick->QuickIsoValueChangesOn();
+  quick->Update();
+  auto sphereError = [&](vtkPolyData* surface, double isoValue) {
+    return MeanOver(
+      surface, [&](const double* x) { return PeriodicDistance(x, centre) - (12.0 - isoValue); });
+  };
+  auto pointsAcrossFace = [](vtkPolyData* surface) {
+    vtkIdType count = 0;
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      count += surface->GetPoint(i)[0] > 30.0 ? 1 : 0; // the ball's part past the face x = 0
+    }
+    return count;
+  };
+  const double isoValue = 0.15;
+  quick->SetIsoValue(isoValue);
+  quick->Update();
+  vtkNew<vtkLevelSetIsosurface> full;
+  configure(full, isoValue);
+  full->Update();
+  Check(quick->GetSlidLastSurface(), "periodic box: a small change slides");
+  vtkPolyData* slid = quick->GetOutput(0);
+  const double slidError = sphereError(slid, isoValue);
+  const double fullError = sphereError(full->GetOutput(0), isoValue);
+  Check(slidError < 1.2 * fullError + 1e-3,
+    "periodic box: the slid points lie on the new level as closely as the method's (" +
+      std::to_string(slidError) + " against " + std::to_string(fullError) + ")");
+  const double count = static_cast<double>(slid->GetNumberOfPoints());
+  const double fullCount = static_cast<double>(full->GetOutput(0)->GetNumberOfPoints());
+  Check(std::abs(count - fullCount) < 0.05 * fullCount && pointsAcrossFace(slid) > 100,
+    "periodic box: as many points as the method's within 5%, on both sides of the face (" +
+      std::to_string(count) + " and " + std::to_string(fullCount) + ", " +
+      std::to_string(pointsAcrossFace(slid)) + " across the face)");
+  const double volume = EnclosedVolume(quick), fullVolume = EnclosedVolume(full);
+  Check(std::abs(volume - fullVolume) < 0.002 * fullVolume,
+    "periodic box: the enclosed volume is the method's within 0.2% (" + std::to_string(volume) +
+      " and " + std::to_string(fullVolume) + ")");
+  Check(quick->GetNumberOfIsopoints() == slid->GetNumberOfPoints(),
+    "periodic box: NumberOfIsopoints counts the kept cell's points");
+
+  quick->SetSeedCenter(centre[0] + 2.0, centre[1], centre[2]);
+  quick->Update();
+  Check(quick->GetReusedLastOutputs() &&
+      quick->GetOutput(0)->GetNumberOfPoints() == slid->GetNumberOfPoints(),
+    "periodic box: a seed move inside the ball hands on the outputs");
+
+  // (The cell around the seed at x = 5 reaches to x = -25, past the images at x = -6: the
+  // ball's points between x = -7 and -6 are sampled where there are no particles, and a
+  // warning says so.)
+  vtkNew<vtkLevelSetIsosurface> around;
+  configure(around, 0.0);
+  around->SetPeriodicOutput(vtkLevelSetIsosurface::AROUND_SEED);
+  vtkNew<MessageCounter> warnings;
+  around->AddObserver(vtkCommand::WarningEvent, warnings);
+  around->Update();
+  Check(
+    warnings->All.find("beyond the box's faces than its ghost images reach") != std::string::npos,
+    "periodic box, the cell around the seed: a warning for the points beyond the images");
+  around->SetSeedCenter(centre[0] + 2.0, centre[1], centre[2]);
+  around->Update();
+  vtkNew<vtkLevelSetIsosurface> aroundFull;
+  configure(aroundFull, 0.0);
+  aroundFull->SetPeriodicOutput(vtkLevelSetIsosurface::AROUND_SEED);
+  aroundFull->SetSeedCenter(centre[0] + 2.0, centre[1], centre[2]);
+  aroundFull->Update();
+  bool same = !around->GetReusedLastOutputs() &&
+    around->GetOutput(0)->GetNumberOfPoints() == aroundFull->GetOutput(0)->GetNumberOfPoints();
+  for (vtkIdType i = 0; same && i < around->GetOutput(0)->GetNumberOfPoints(); ++i)
+  {
+    const double* a = around->GetOutput(0)->GetPoint(i);
+    const double* b = aroundFull->GetOutput(0)->GetPoint(i);
+    same = a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+  }
+  Check(
+    same, "periodic box, the cell around the seed: a seed move runs the method, with its outputs");
+}
+
 } // namespace
 
 int main()
@@ -368,6 +478,7 @@ int main()
   TestComponentsJoinedOrLost();
   TestCavityOpening();
   TestUnitsOfLengthAndValue();
+  TestPeriodicBox();
   std::cout << (lsi::test::Failures() ? "quick isovalue tests FAILED\n"
                                       : "quick isovalue tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
