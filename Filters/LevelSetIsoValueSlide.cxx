@@ -289,10 +289,13 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 }
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const PointCloudIndex& index, double reach, std::size_t& changed)
+  const std::vector<char>& after, const PointCloudIndex& index, double reach, std::size_t& changed,
+  vtkIdType particles)
 {
-  const std::vector<std::uint32_t> moved = IndicesWhere<std::uint32_t>(
-    geometry.NumberOfSamples, [&](std::size_t i) { return before[i] != after[i]; });
+  const std::vector<std::uint32_t> moved =
+    IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
+      return before[i] != after[i] && static_cast<vtkIdType>(geometry.Order[i]) < particles;
+    });
   changed = moved.size();
   if (moved.empty())
   {

@@ -272,7 +272,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
     slid.Accepted ? lsi::IndexOfPoints(isopoints.Points) : nullptr;
   const bool accepted = slid.Accepted && surfaceIndex &&
     last.Slid + slid.LargestMove <= MostSlidSpacings * last.Spacing &&
-    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, *surfaceIndex, reach, changed);
+    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, *surfaceIndex, reach, changed,
+      this->Internal->Box.Enabled ? this->Internal->OriginalCount : VTK_ID_MAX);
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
                 << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
                 << slid.LargestMove << ", " << changed << " samples changed sides");

@@ -255,6 +255,31 @@ void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double
       Check(high == 0, "periodic box, around the seed: one piece about the seed");
     }
   }
+  // QuickIsoValueChanges in the box: a 2% higher isovalue slides the whole surface (the part
+  // beyond the face too) onto the level r = 0.5 / 1.02, as close as the method's surface there.
+  {
+    auto meanRadius = [&](vtkPolyData* surface) {
+      double sum = 0.0;
+      for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+      {
+        sum += radiusAbout(surface->GetPoint(i), true);
+      }
+      return sum / std::max<vtkIdType>(1, surface->GetNumberOfPoints());
+    };
+    vtkNew<vtkLevelSetIsosurface> quick;
+    quick->QuickIsoValueChangesOn();
+    Run(box, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
+    auto slid = Run(box, 1.02 * iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
+    auto full = Run(box, 1.02 * iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS);
+    const double n = static_cast<double>(slid->GetNumberOfPoints());
+    const double fullCount = static_cast<double>(full->GetNumberOfPoints());
+    std::cout << "Periodic box, isovalue 2% higher: slid " << quick->GetSlidLastSurface() << ", "
+              << n << " points, mean radius " << meanRadius(slid) << " (the method's: " << fullCount
+              << " points, " << meanRadius(full) << ")\n";
+    Check(quick->GetSlidLastSurface() && std::abs(n - fullCount) < 0.05 * fullCount &&
+        std::abs(meanRadius(slid) - meanRadius(full)) < 1e-3,
+      "periodic box: a 2% isovalue change slides onto the method's level");
+  }
   // The same box centred on 0 ([-1.5, 1.5)^3, as Tipsy's cosmological boxes are): the filter
   // places the box on the particles.
   auto centred = vtkSmartPointer<vtkPolyData>::New();
