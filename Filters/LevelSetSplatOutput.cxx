@@ -135,4 +135,31 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   return true;
 }
 
+void MoveSplatCorners(
+  const std::vector<double>& from, const std::vector<double>& to, int sides, vtkPolyData* splats)
+{
+  vtkPoints* corners = splats->GetPoints();
+  const vtkIdType count = static_cast<vtkIdType>(from.size() / 3);
+  if (!corners || corners->GetNumberOfPoints() != count * sides)
+  {
+    return;
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const double shift[3] = { to[3 * i] - from[3 * i], to[3 * i + 1] - from[3 * i + 1],
+      to[3 * i + 2] - from[3 * i + 2] };
+    if (shift[0] == 0.0 && shift[1] == 0.0 && shift[2] == 0.0)
+    {
+      continue;
+    }
+    for (vtkIdType k = i * sides; k < (i + 1) * sides; ++k)
+    {
+      double x[3];
+      corners->GetPoint(k, x);
+      corners->SetPoint(k, x[0] + shift[0], x[1] + shift[1], x[2] + shift[2]);
+    }
+  }
+  corners->Modified();
+}
+
 } // namespace lsi

@@ -8,6 +8,8 @@
 
 #include "LevelSetParallel.h"
 
+#include <vector>
+
 class vtkPolyData;
 
 namespace lsi
@@ -23,6 +25,12 @@ class SPHField;
 /// instead of tangent-plane approximations. Returns false only when aborted.
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
   vtkPolyData* splats, const AbortCheck& aborted);
+
+/// Moves the `sides` corners of each splat of `splats` (made by MakeSplatPolygons) as its centre
+/// moved, from `from` to `to` (3 doubles per point): a periodic box's points moved by whole
+/// boxes after their splats were made where the particles are.
+void MoveSplatCorners(
+  const std::vector<double>& from, const std::vector<double>& to, int sides, vtkPolyData* splats);
 
 } // namespace lsi
 

@@ -230,7 +230,7 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
-  const PointCloudIndex* pointIndex)
+  const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -306,10 +306,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   // The data refinement's nearest samples at each point, when it kept them for this many.
   const bool kept = isopoints.FitSize == fitCount &&
     isopoints.FitSamples.size() == fitCount * static_cast<std::size_t>(m);
-  if (field ? !InterpolatePointArraysSPH(
-                geometry, *field, isopoints.Points, sourceList, targetList, aborted)
-            : !InterpolatePointArrays(geometry, isopoints.Points, fitCount, sourceList, targetList,
-                aborted, kept ? isopoints.FitSamples.data() : nullptr))
+  const std::vector<double>& at = sampledAt ? *sampledAt : isopoints.Points;
+  if (field ? !InterpolatePointArraysSPH(geometry, *field, at, sourceList, targetList, aborted)
+            : !InterpolatePointArrays(geometry, at, fitCount, sourceList, targetList, aborted,
+                kept ? isopoints.FitSamples.data() : nullptr))
   {
     return false;
   }

@@ -30,10 +30,13 @@ class SPHField;
 /// With an SPH field (`field` not null) the arrays are its interpolants instead
 /// (InterpolatePointArraysSPH).
 /// `pointIndex`, if given, is a search index over the isopoints (else one is built).
+/// `sampledAt`, if given (3 doubles per point), is where the arrays are interpolated instead of
+/// the points themselves: a periodic box's points moved by whole boxes are sampled where the
+/// particles are (their fits' samples, if kept, are those nearest to `sampledAt`).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
-  const PointCloudIndex* pointIndex = nullptr);
+  const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr);
 
 /// Splat radius of each point (3 doubles per point): `factor` times the distance to its
 /// `neighbors`-th nearest other point, searched in `index` if given (over `points`), else in

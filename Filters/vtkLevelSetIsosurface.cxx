@@ -720,8 +720,9 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   {
     return;
   }
-  // Every piece of surface is found once in the box and again in the images: keep the box,
-  // then, around the seed, move each point by whole boxes into the cell centred on the seed.
+  // Every piece of surface is found once in the box and again in the images: keep the box.
+  // (Around the seed, MakeSurfaceOutput moves the points by whole boxes once it has sampled the
+  // data where the particles are.)
   std::vector<char> kept(isopoints.Points.size() / 3);
   for (std::size_t i = 0; i < kept.size(); ++i)
   {
@@ -730,11 +731,9 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   const std::vector<std::size_t> selected = lsi::ValidIndices(kept);
   lsi::IsopointSet inCell;
   lsi::AppendSelected(isopoints.Points, isopoints.Normals, selected, inCell);
-  // The kept points keep their fits' samples and models (for the arrays interpolated onto them),
-  // unless they move by whole boxes: their samples then lie a box away.
+  // The kept points keep their fits' samples and models (for the arrays interpolated onto them).
   const std::size_t fit = isopoints.FitSize;
-  const bool withFits = this->PeriodicOutput != AROUND_SEED && fit > 0 &&
-    isopoints.FitSamples.size() == fit * kept.size() &&
+  const bool withFits = fit > 0 && isopoints.FitSamples.size() == fit * kept.size() &&
     isopoints.FitModels.size() == lsi::ModelSize * kept.size();
   for (std::size_t k = 0; withFits && k < selected.size(); ++k)
   {
@@ -748,41 +747,6 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   isopoints.Normals.swap(inCell.Normals);
   isopoints.FitSamples.swap(inCell.FitSamples);
   isopoints.FitModels.swap(inCell.FitModels);
-  if (this->PeriodicOutput == AROUND_SEED)
-  {
-    lsi::IntoCellAround(isopoints.Points, internal.Box, internal.SeedCenter);
-    this->WarnBeyondImages(isopoints.Points);
-  }
-}
-
-void vtkLevelSetIsosurface::WarnBeyondImages(const std::vector<double>& points)
-{
-  // The data are sampled where the points are: beyond the images there are no particles.
-  const lsi::PeriodicBox& box = this->Internal->Box;
-  std::size_t beyond = 0;
-  for (std::size_t i = 0; i < points.size(); i += 3)
-  {
-    bool out = false;
-    for (int d = 0; d < 3; ++d)
-    {
-      const double reach = this->PeriodicMargin * box.Size[d];
-      out = out || points[i + d] < box.Origin[d] - reach ||
-        points[i + d] > box.Origin[d] + box.Size[d] + reach;
-    }
-    beyond += out ? 1 : 0;
-  }
-  if (beyond > 0 && this->ReportsForAll())
-  {
-    vtkWarningMacro(<< beyond << " of the " << points.size() / 3
-                    << " surface points lie, in the cell around the seed (PeriodicOutput), "
-                       "farther beyond the box's faces than its ghost images reach "
-                       "(PeriodicMargin "
-                    << this->PeriodicMargin
-                    << "): the arrays interpolated onto them, and on the SPH field their "
-                       "splats' corners, come from the nearest particles inside the images, not "
-                       "from their own neighbourhood. PeriodicOutput IN_BOX, or a larger "
-                       "PeriodicMargin, gives them their own.");
-  }
 }
 
 void vtkLevelSetIsosurface::CheckPeriodicMargin(
@@ -1268,19 +1232,51 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const auto start = Clock::now();
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  // Around the seed, the points are moved by whole boxes into the cell centred on it, but the
+  // data are sampled where they were found: the images reach only PeriodicMargin past the faces.
+  const Internals& internal = *this->Internal;
+  const bool aroundSeed = internal.Box.Enabled && this->PeriodicOutput == AROUND_SEED;
+  lsi::IsopointSet moved;
+  std::unique_ptr<lsi::PointCloudIndex> movedIndex;
+  if (aroundSeed)
+  {
+    moved = isopoints;
+    lsi::IntoCellAround(moved.Points, internal.Box, internal.SeedCenter);
+    movedIndex = lsi::IndexOfPoints(moved.Points); // the splat radii's neighbours, moved
+  }
   vtkNew<vtkPolyData> surface;
-  if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, isopoints, this->SplatScale,
-        this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field, surface,
-        this->Stage(SurfaceStage), surfaceIndex))
+  if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, aroundSeed ? moved : isopoints,
+        this->SplatScale, this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field,
+        surface, this->Stage(SurfaceStage), aroundSeed ? movedIndex.get() : surfaceIndex,
+        aroundSeed ? &isopoints.Points : nullptr))
   {
     return false;
   }
   if (this->OutputType == SPLATS)
   {
+    // On the SPH field the splats' corners are solved onto the level: where they were found,
+    // then moved with their centres.
+    vtkNew<vtkPolyData> found;
+    found->ShallowCopy(surface);
+    if (aroundSeed)
+    {
+      vtkNew<vtkPoints> at;
+      at->SetDataTypeToDouble();
+      at->SetNumberOfPoints(static_cast<vtkIdType>(isopoints.Points.size() / 3));
+      for (vtkIdType i = 0; i < at->GetNumberOfPoints(); ++i)
+      {
+        at->SetPoint(i, &isopoints.Points[3 * i]);
+      }
+      found->SetPoints(at);
+    }
     if (!lsi::MakeSplatPolygons(
-          surface, this->SplatSides, field, this->IsoValue, output, this->Stage(SplatStage)))
+          found, this->SplatSides, field, this->IsoValue, output, this->Stage(SplatStage)))
     {
       return false;
+    }
+    if (aroundSeed)
+    {
+      lsi::MoveSplatCorners(isopoints.Points, moved.Points, this->SplatSides, output);
     }
   }
   else

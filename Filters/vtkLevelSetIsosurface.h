@@ -595,8 +595,6 @@ private:
   bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
-  // Warns when points moved into the cell around the seed lie beyond the ghost images.
-  void WarnBeyondImages(const std::vector<double>& points);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
   const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);

@@ -440,17 +440,55 @@ void TestPeriodicBox()
     "periodic box: a seed move inside the ball hands on the outputs");
 
   // (The cell around the seed at x = 5 reaches to x = -25, past the images at x = -6: the
-  // ball's points between x = -7 and -6 are sampled where there are no particles, and a
-  // warning says so.)
+  // ball's points between x = -7 and -6 are moved there, but sampled where the particles are,
+  // so the arrays on them are those of the same points in the box.)
   vtkNew<vtkLevelSetIsosurface> around;
   configure(around, 0.0);
   around->SetPeriodicOutput(vtkLevelSetIsosurface::AROUND_SEED);
-  vtkNew<MessageCounter> warnings;
-  around->AddObserver(vtkCommand::WarningEvent, warnings);
   around->Update();
-  Check(
-    warnings->All.find("beyond the box's faces than its ghost images reach") != std::string::npos,
-    "periodic box, the cell around the seed: a warning for the points beyond the images");
+  vtkNew<vtkLevelSetIsosurface> inBox;
+  configure(inBox, 0.0);
+  inBox->Update();
+  vtkPolyData* aroundSurface = around->GetOutput(0);
+  vtkPolyData* boxSurface = inBox->GetOutput(0);
+  vtkDataArray* fAround = aroundSurface->GetPointData()->GetArray("f");
+  vtkDataArray* fBox = boxSurface->GetPointData()->GetArray("f");
+  bool sameValues =
+    fAround && fBox && aroundSurface->GetNumberOfPoints() == boxSurface->GetNumberOfPoints();
+  vtkIdType movedPoints = 0;
+  for (vtkIdType i = 0; sameValues && i < aroundSurface->GetNumberOfPoints(); ++i)
+  {
+    const double* x = aroundSurface->GetPoint(i);
+    const double* y = boxSurface->GetPoint(i);
+    const double shift = std::abs(x[0] - y[0]);
+    movedPoints += x[0] < -6.0 ? 1 : 0;
+    sameValues = fAround->GetTuple1(i) == fBox->GetTuple1(i) &&
+      (shift < 1e-9 || std::abs(shift - 60.0) < 1e-9) && x[1] == y[1] && x[2] == y[2];
+  }
+  // Its splats: each polygon's corners around its moved point.
+  vtkNew<vtkLevelSetIsosurface> splats;
+  configure(splats, 0.0);
+  splats->SetPeriodicOutput(vtkLevelSetIsosurface::AROUND_SEED);
+  splats->SetOutputTypeToSplats();
+  splats->Update();
+  const vtkIdType sides = splats->GetSplatSides();
+  vtkPolyData* polygons = splats->GetOutput(0);
+  bool aroundTheirPoints =
+    polygons->GetNumberOfPoints() == sides * aroundSurface->GetNumberOfPoints();
+  for (vtkIdType k = 0; aroundTheirPoints && k < polygons->GetNumberOfPoints(); ++k)
+  {
+    const double* corner = polygons->GetPoint(k);
+    const double* x = aroundSurface->GetPoint(k / sides);
+    const double d2 = (corner[0] - x[0]) * (corner[0] - x[0]) +
+      (corner[1] - x[1]) * (corner[1] - x[1]) + (corner[2] - x[2]) * (corner[2] - x[2]);
+    aroundTheirPoints = d2 < 4.0; // within two spacings
+  }
+  Check(aroundTheirPoints,
+    "periodic box, the cell around the seed: each splat's corners lie around its moved point");
+  Check(sameValues && movedPoints > 0,
+    "periodic box, the cell around the seed: the points of the box moved by whole boxes, with "
+    "the box's interpolated values (" +
+      std::to_string(movedPoints) + " beyond the images)");
   around->SetSeedCenter(centre[0] + 2.0, centre[1], centre[2]);
   around->Update();
   vtkNew<vtkLevelSetIsosurface> aroundFull;
