@@ -111,41 +111,37 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     last.SeedSpheres = spheres;
     last.InSeed = std::move(seeds.InSeed);
   }
-  // As the method floods (Initialize, FollowAcrossFaces): in a periodic box, a particle the
-  // flood reached seeds its images, and the flood runs again.
-  std::vector<char> inSeed;
-  const std::vector<char>* seeds = &last.InSeed;
-  const lsi::PeriodicBox& box = this->Internal->Box;
-  const std::vector<vtkIdType> original = box.Enabled
-    ? lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf)
-    : std::vector<vtkIdType>();
-  std::size_t seedSamples = 0;
-  for (int round = 0; round <= (box.Enabled ? lsi::FloodRoundsAcrossFaces : 0); ++round)
+  lsi::FloodResult flood;
+  inside = lsi::FloodedInside(geometry, dataOffsets, last.InSeed,
+    static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
+  if (flood.Aborted)
   {
-    if (round > 0)
-    {
-      if (round == 1)
-      {
-        inSeed = last.InSeed;
-        seeds = &inSeed;
-      }
-      if (!lsi::SeedImagesOfReached(
-            original, this->Internal->OriginalCount, dataOffsets,
-            [&](std::size_t i) { return inside[i] != 0; }, inSeed))
-      {
-        break;
-      }
-    }
-    lsi::FloodResult flood;
-    inside = lsi::FloodedInside(geometry, dataOffsets, *seeds,
-      static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-    if (flood.Aborted)
-    {
-      return false;
-    }
-    seedSamples = round == 0 ? flood.SeedSamples : seedSamples;
+    return false;
   }
-  return seedSamples > 0;
+  // As the method floods (FollowAcrossFaces): in a periodic box, a particle the flood reached
+  // seeds its images, and the flood runs again.
+  const Internals& internal = *this->Internal;
+  if (internal.Box.Enabled)
+  {
+    const std::vector<vtkIdType> original =
+      lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf);
+    std::vector<char> inSeed = last.InSeed;
+    for (int round = 0; round < lsi::FloodRoundsAcrossFaces &&
+         lsi::SeedImagesOfReached(
+           original, internal.OriginalCount, dataOffsets,
+           [&](std::size_t i) { return inside[i] != 0; }, inSeed);
+         ++round)
+    {
+      lsi::FloodResult again;
+      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
+        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
+      if (again.Aborted)
+      {
+        return false;
+      }
+    }
+  }
+  return flood.SeedSamples > 0;
 }
 
 bool vtkLevelSetIsosurface::SameKeptCell() const

@@ -81,6 +81,7 @@ def main():
         x = vtk_to_numpy(particles.GetPoints().GetData())
         iso = rule(values)
         seed = list(x[np.argmax(values)]) if name != "evrard-summed" else [0.0, 0.0, 0.0]
+        extent = float(np.max(np.ptp(x, axis=0)))  # for the seed move
         above = np.sort(values[values > iso])
         moved = float(above[int(0.02 * len(above))])
         for output_type, label in ((1, "splats"), (0, "isopoints")):
@@ -88,7 +89,6 @@ def main():
                             SeedCenter=seed, OutputType=output_type)
             first = method = quick = moved_seed = float("inf")
             slid = reused = -1
-            extent = float(np.max(np.ptp(x, axis=0)))
             for r in range(repeats):
                 f = LevelSetIsosurface(**settings)
                 t = time.time()
