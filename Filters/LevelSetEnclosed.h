@@ -45,10 +45,15 @@ struct EnclosedDeepInside
   {
     None = 0xffffffffu // (an enumerator: never odr-used, in any C++ standard)
   };
-  std::vector<std::uint32_t> Group; // per sample (storage order): its group, or None
-  std::vector<std::uint32_t> Rim;   // deep samples listing a neighbour that is not deep
-  std::vector<double> Sums;         // each group's sums, packed under its lowest particle id
-  int Components = 0;               // the arrays' components averaged, when kept
+  // Per sample (storage order): a deep sample's group (below the number of groups), a Near
+  // sample's place in Near plus the number of groups, or None (far outside).
+  std::vector<std::uint32_t> Group;
+  std::vector<std::uint32_t> Rim; // deep samples listing a neighbour that is not deep
+  // The samples neither deep nor far outside (phi above FarOutside), in storage order: a slide
+  // changes phi only within the band's half width, so the band is among these, whatever slid.
+  std::vector<std::uint32_t> Near;
+  std::vector<double> Sums; // each group's sums, packed under its lowest particle id
+  int Components = 0;       // the arrays' components averaged, when kept
 };
 
 struct EnclosedInputs

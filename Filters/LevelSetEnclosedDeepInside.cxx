@@ -156,6 +156,18 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   {
     k = inside[k];
   }
+  // The near samples, numbered after the groups (so that a re-run finds the band among them
+  // without a pass over every sample).
+  deep.Near = IndicesWhere<std::uint32_t>(n, [&](std::size_t i) {
+    return deep.Group[i] == EnclosedDeepInside::None && (*in.Phi)[i] > in.FarOutside;
+  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        deep.Group[deep.Near[p]] = groups + static_cast<std::uint32_t>(p);
+      }
+    });
   int components = 0;
   const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
   const std::vector<double>& phi = *in.Phi;
@@ -183,25 +195,39 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
     return nullptr; // kept for other samples or arrays
   }
   const std::size_t groups = deep.Sums.size() / record;
-  // The band: the touching samples not deep inside. Nodes: the groups, then the band's samples.
-  const std::vector<std::uint32_t> band = IndicesWhere<std::uint32_t>(
-    n, [&](std::size_t i) { return deep.Group[i] == EnclosedDeepInside::None && Touches(in, i); });
-  std::vector<std::uint32_t> node(deep.Group.begin(), deep.Group.end());
+  // The band: the touching near samples (in storage order). Nodes: the groups, then the band's
+  // samples; bandOf gives a near sample's place in the band.
+  const std::vector<std::uint32_t> inBand = IndicesWhere<std::uint32_t>(
+    deep.Near.size(), [&](std::size_t p) { return Touches(in, deep.Near[p]); });
+  std::vector<std::uint32_t> band(inBand.size());
+  std::vector<std::uint32_t> bandOf(deep.Near.size(), EnclosedDeepInside::None);
   vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType b = begin; b < end; ++b)
     {
-      node[band[b]] = static_cast<std::uint32_t>(groups + b);
+      band[b] = deep.Near[inBand[b]];
+      bandOf[inBand[b]] = static_cast<std::uint32_t>(b);
     }
   });
+  auto node = [&](std::size_t i) {
+    const std::uint32_t g = deep.Group[i];
+    if (g < groups || g == EnclosedDeepInside::None)
+    {
+      return g;
+    }
+    const std::uint32_t b = bandOf[g - groups];
+    return b == EnclosedDeepInside::None ? b : static_cast<std::uint32_t>(groups + b);
+  };
   // Joined through the band's lists and the rim's (the groups are joined within already).
   Links links(groups + band.size());
   auto joinListed = [&](std::size_t i) {
+    const std::uint32_t self = node(i);
     const std::uint32_t* ids = geometry.NeighborsOf(i);
     for (int m = 1; m < geometry.Stride; ++m)
     {
-      if (node[ids[m]] != EnclosedDeepInside::None)
+      const std::uint32_t other = node(ids[m]);
+      if (other != EnclosedDeepInside::None)
       {
-        links.Join(node[i], node[ids[m]]);
+        links.Join(self, other);
       }
     }
   };

@@ -320,11 +320,26 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   return near;
 }
 
-void ShiftLevelSet(const Neighborhoods& geometry, const std::vector<double>& values,
-  double valueChange, double halfWidth, double largestMove, std::vector<double>& phi)
+std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
+  const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
+  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates)
 {
-  const std::vector<std::size_t> band = IndicesWhere<std::size_t>(
-    geometry.NumberOfSamples, [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; });
+  auto inBand = [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; };
+  std::vector<std::size_t> band;
+  if (candidates)
+  {
+    const std::vector<std::uint32_t> kept = IndicesWhere<std::uint32_t>(
+      candidates->size(), [&](std::size_t k) { return inBand((*candidates)[k]); });
+    band.resize(kept.size());
+    for (std::size_t k = 0; k < kept.size(); ++k)
+    {
+      band[k] = (*candidates)[kept[k]];
+    }
+  }
+  else
+  {
+    band = IndicesWhere<std::size_t>(geometry.NumberOfSamples, inBand);
+  }
   geometry.EnsureStencils(band); // computed by the evolution already: a lookup
   std::vector<double> shifted(band.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
@@ -341,6 +356,7 @@ void ShiftLevelSet(const Neighborhoods& geometry, const std::vector<double>& val
   {
     phi[band[k]] = shifted[k];
   }
+  return band;
 }
 
 } // namespace lsi

@@ -78,9 +78,12 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the
 /// samples of the band (|phi| < halfWidth, whose MLS stencils the evolution computed) with the
 /// data's gradient there from `values` (f, or f minus any constant); phi beyond the band stays
-/// clamped. `largestMove`: see LevelSetAfterIsoValueChange.
-void ShiftLevelSet(const Neighborhoods& geometry, const std::vector<double>& values,
-  double valueChange, double halfWidth, double largestMove, std::vector<double>& phi);
+/// clamped. `largestMove`: see LevelSetAfterIsoValueChange. The band is looked for among
+/// `candidates` if given (storage order; they must hold every sample with |phi| < halfWidth),
+/// else among every sample. Returns the band's samples: the only ones whose phi changed.
+std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
+  const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
+  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates = nullptr);
 
 } // namespace lsi
 

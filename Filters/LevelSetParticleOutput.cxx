@@ -16,9 +16,11 @@
 namespace lsi
 {
 
-void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
-  vtkSmartPointer<vtkCellArray>& vertices)
+namespace
+{
+// The input's points as vertices, with its point data.
+void PassParticles(
+  vtkPointSet* input, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   particles->SetPoints(input->GetPoints());
@@ -28,6 +30,15 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   }
   particles->SetVerts(vertices);
   particles->GetPointData()->PassData(input->GetPointData());
+}
+} // namespace
+
+void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
+  const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
+  vtkSmartPointer<vtkCellArray>& vertices)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  PassParticles(input, particles, vertices);
   vtkNew<vtkDoubleArray> levelSet;
   levelSet->SetName("LevelSet");
   levelSet->SetNumberOfValues(n);
@@ -72,6 +83,38 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
     });
   }
   particles->GetPointData()->AddArray(levelSet);
+}
+
+bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
+  const std::vector<double>& phi, const std::vector<std::size_t>& changed,
+  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDoubleArray* last = vtkDoubleArray::SafeDownCast(lastLevelSet);
+  if (!last || last->GetNumberOfComponents() != 1 || last->GetNumberOfTuples() != n)
+  {
+    return false;
+  }
+  PassParticles(input, particles, vertices);
+  vtkNew<vtkDoubleArray> levelSet;
+  levelSet->SetName("LevelSet");
+  levelSet->SetNumberOfValues(n);
+  double* out = levelSet->GetPointer(0);
+  const double* before = last->GetPointer(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end) { std::copy(before + begin, before + end, out + begin); });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(changed.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const std::size_t i = changed[k];
+      if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+      {
+        out[geometry.Order[i]] = phi[i];
+      }
+    }
+  });
+  particles->GetPointData()->AddArray(levelSet);
+  return true;
 }
 
 } // namespace lsi

@@ -13,6 +13,7 @@
 
 #include <vector>
 
+class vtkDataArray;
 class vtkPointSet;
 class vtkPolyData;
 
@@ -27,6 +28,15 @@ namespace lsi
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
   vtkSmartPointer<vtkCellArray>& vertices);
+
+/// MakeParticleOutput's output after only the samples `changed` changed their phi since
+/// `lastLevelSet` (the LevelSet array it gave for the same input, without merged points): a copy
+/// of that array with those samples' values written, the same values as made anew, for a pass
+/// over the changed samples instead of a scatter of every one. False, doing nothing, if
+/// `lastLevelSet` is not such an array.
+bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
+  const std::vector<double>& phi, const std::vector<std::size_t>& changed,
+  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices);
 
 } // namespace lsi
 

@@ -435,11 +435,21 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
   const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
   const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
-  lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept)
+  lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept,
+  const std::vector<std::size_t>* changed)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
-  lsi::MakeParticleOutput(
-    original, geometry, phi, mergedId, particleOutput, this->Internal->ParticleVertices);
+  const lsi::LastOutputs& last = this->Internal->Last;
+  vtkDataArray* lastLevelSet = changed && mergedId.empty() && last.Particles
+    ? last.Particles->GetPointData()->GetArray("LevelSet")
+    : nullptr;
+  if (!lastLevelSet ||
+    !lsi::UpdateParticleOutput(original, geometry, phi, *changed, lastLevelSet, particleOutput,
+      this->Internal->ParticleVertices))
+  {
+    lsi::MakeParticleOutput(
+      original, geometry, phi, mergedId, particleOutput, this->Internal->ParticleVertices);
+  }
   if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
   {
     for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),

@@ -279,8 +279,11 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   }
   // From here on the outputs are this run's.
   std::vector<double>& phi = last.Phi;
-  lsi::ShiftLevelSet(
-    *geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth, slid.LargestMove, phi);
+  // (The band lies among the kept deep inside's near samples, where it was found.)
+  const bool nearKept = last.DeepInside.Group.size() == geometry->NumberOfSamples;
+  const std::vector<std::size_t> changedSamples =
+    lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth,
+      slid.LargestMove, phi, nearKept ? &last.DeepInside.Near : nullptr);
   // In a periodic box the outputs show the kept cell's points, with a search index of their
   // own, and the particles' arrays are the images' too.
   vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
@@ -304,7 +307,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   }
   start = lsi::Clock::now();
   this->MakeParticleOutputs(input, work, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
-    *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside);
+    *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside, &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (this->CheckAbort())

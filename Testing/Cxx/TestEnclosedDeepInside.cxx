@@ -9,9 +9,13 @@
 //   - after the balls shrink by 1.5 spacings or grow by one inside the band (phi changed only
 //     there, as a slide shifts it, the surface moved), the table around the kept deep inside is
 //     again the full route's, and the grown balls, apart before, are one component;
-//   - the same numbers, to the bit, on 1 and 2 threads.
+//   - the same numbers, to the bit, on 1 and 2 threads;
+//   - every sample a slide changed is among the deep inside's near samples (where a re-run
+//     looks for the band), and the particles' LevelSet array updated at the changed samples
+//     only (UpdateParticleOutput) is the one made anew, to the bit.
 #include "LevelSetEnclosed.h"
 #include "LevelSetNeighborhoods.h"
+#include "LevelSetParticleOutput.h"
 #include "TestCheck.h"
 
 #include "vtkDoubleArray.h"
@@ -207,8 +211,10 @@ int main()
   in.KeepDeepInside = &deep;
   vtkSmartPointer<vtkTable> kept = lsi::EnclosedTable(in);
   in.KeepDeepInside = nullptr;
-  const std::size_t deepSamples = static_cast<std::size_t>(std::count_if(deep.Group.begin(),
-    deep.Group.end(), [](std::uint32_t g) { return g != lsi::EnclosedDeepInside::None; }));
+  const std::size_t deepSamples =
+    static_cast<std::size_t>(std::count_if(deep.Group.begin(), deep.Group.end(),
+      [](std::uint32_t g) { return g != lsi::EnclosedDeepInside::None; })) -
+    deep.Near.size();
   Check(deepSamples > 3000 && !deep.Rim.empty(),
     "a deep inside with a rim was found (" + std::to_string(deepSamples) + " samples)");
   CheckSameTable(full, kept, 1e-9, "the run that keeps the deep inside");
@@ -256,6 +262,42 @@ int main()
       std::to_string(grownFull ? grownFull->GetNumberOfRows() : 0) + " rows)");
   Check(grown && grownOneThread && SameBits(grown, grownOneThread),
     "the same table to the bit on 1 and 2 threads");
+
+  // The samples the slides changed, all near; the LevelSet array updated there only.
+  std::vector<std::size_t> changed;
+  std::vector<char> near(phi.size(), 0);
+  for (std::uint32_t i : deep.Near)
+  {
+    near[i] = 1;
+  }
+  std::size_t changedFar = 0;
+  for (std::size_t i = 0; i < phi.size(); ++i)
+  {
+    if (phi[i] != phiBefore[i])
+    {
+      changed.push_back(i);
+      changedFar += near[i] ? 0 : 1;
+    }
+  }
+  Check(changed.size() > 1000 && changedFar == 0,
+    "every one of the " + std::to_string(changed.size()) + " samples the slides changed is near (" +
+      std::to_string(changedFar) + " not)");
+  vtkSmartPointer<vtkCellArray> vertices;
+  vtkNew<vtkPolyData> before, updated, remade;
+  lsi::MakeParticleOutput(particles, geometry, phiBefore, {}, before, vertices);
+  const bool didUpdate = lsi::UpdateParticleOutput(particles, geometry, phi, changed,
+    before->GetPointData()->GetArray("LevelSet"), updated, vertices);
+  lsi::MakeParticleOutput(particles, geometry, phi, {}, remade, vertices);
+  vtkDoubleArray* a = vtkDoubleArray::SafeDownCast(updated->GetPointData()->GetArray("LevelSet"));
+  vtkDoubleArray* b = vtkDoubleArray::SafeDownCast(remade->GetPointData()->GetArray("LevelSet"));
+  Check(didUpdate && a && b && a->GetNumberOfValues() == n && b->GetNumberOfValues() == n &&
+      std::equal(a->GetPointer(0), a->GetPointer(0) + n, b->GetPointer(0)) &&
+      updated->GetPointData()->GetArray("f") && updated->GetNumberOfVerts() == n,
+    "the LevelSet array updated at the changed samples is the one made anew");
+  vtkNew<vtkDoubleArray> shorter;
+  shorter->SetNumberOfValues(n - 1);
+  Check(!lsi::UpdateParticleOutput(particles, geometry, phi, changed, shorter, updated, vertices),
+    "no update from an array of another length");
 
   if (lsi::test::Failures())
   {
