@@ -210,6 +210,14 @@ bool InKeptCell(const double* x, const PeriodicBox& box, const double* center)
   return true;
 }
 
+void KeptCellCenter(const std::vector<double>& spheres, const PeriodicBox& box, double center[3])
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    center[d] = spheres.empty() ? box.Origin[d] + 0.5 * box.Size[d] : spheres[d];
+  }
+}
+
 void IntoCellAround(std::vector<double>& points, const PeriodicBox& box, const double* center)
 {
   for (std::size_t i = 0; i < points.size(); i += 3)

@@ -125,6 +125,10 @@ std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox
 /// [center - Size / 2, center + Size / 2).
 bool InKeptCell(const double* x, const PeriodicBox& box, const double* center);
 
+/// The centre of the cell kept around the seed (PeriodicOutput "Around the seed"): the first
+/// seed sphere's centre (`spheres`: 4 numbers per sphere, SeedSpheres), else the box's.
+void KeptCellCenter(const std::vector<double>& spheres, const PeriodicBox& box, double center[3]);
+
 /// Moves each point (3 doubles) by whole boxes into [center - Size / 2, center + Size / 2).
 void IntoCellAround(std::vector<double>& points, const PeriodicBox& box, const double* center);
 

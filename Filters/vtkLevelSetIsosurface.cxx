@@ -885,12 +885,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   this->Bounds(input, bounds);
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
-  for (int d = 0; d < 3; ++d) // the kept periodic cell's centre: the main seed, else the box's
-  {
-    this->Internal->SeedCenter[d] = spheres.empty()
-      ? this->Internal->Box.Origin[d] + 0.5 * this->Internal->Box.Size[d]
-      : spheres[d];
-  }
+  lsi::KeptCellCenter(spheres, this->Internal->Box, this->Internal->SeedCenter);
   const lsi::SeedSphereStart seeds =
     lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi, ranks);
   const std::string problem = lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere);

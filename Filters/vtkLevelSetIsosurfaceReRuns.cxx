@@ -152,16 +152,9 @@ bool vtkLevelSetIsosurface::SameKeptCell() const
   {
     return true;
   }
-  const std::vector<double>& spheres = this->Internal->Last.SeedSpheres;
-  for (int d = 0; d < 3; ++d)
-  {
-    const double centre = spheres.empty() ? box.Origin[d] + 0.5 * box.Size[d] : spheres[d];
-    if (centre != this->Internal->SeedCenter[d])
-    {
-      return false;
-    }
-  }
-  return true;
+  double center[3];
+  lsi::KeptCellCenter(this->Internal->Last.SeedSpheres, box, center);
+  return std::equal(center, center + 3, this->Internal->SeedCenter);
 }
 
 bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
