@@ -60,6 +60,45 @@ protected:
   std::vector<char> OwnedSamples; // storage order; empty: all
 };
 
+/// Rounds of the flood's exchange (below) after which a flood still crossing between ranks is
+/// given up: each round crosses at least one rank boundary.
+inline int FloodRoundsAcrossRanks(const Communicator& ranks)
+{
+  return 8 + 4 * ranks.Size;
+}
+
+/// One round of the flood's exchange between ranks. Where this rank's flood reached a ghost
+/// (`inside(i)`), the ghost's owner is seeded; where an owner's sample is inside, its ghost
+/// copies on other ranks are seeded; each only where f > f_iso (`dataOffsets`) and not yet
+/// inside or seeded. Returns how many seeds all the ranks added: while it is not zero, every
+/// rank floods again from `inSeed` (the ranks' neighbour graphs, joined at the ghosts, are the
+/// serial graph, so the flood ends as the serial one).
+template <typename Inside>
+double SeedWhereRanksReached(const Communicator& ranks, const std::vector<double>& dataOffsets,
+  Inside&& inside, std::vector<char>& inSeed)
+{
+  const std::size_t n = inSeed.size();
+  std::vector<double> reachedHere(n, 0.0), insideAtOwner(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    reachedHere[i] = !ranks.Owns(i) && inside(i) ? 1.0 : 0.0;
+    insideAtOwner[i] = inside(i) ? 1.0 : 0.0;
+  }
+  ranks.MaxToOwners(reachedHere);
+  ranks.RefreshGhosts(insideAtOwner);
+  double added = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const bool reached = ranks.Owns(i) ? reachedHere[i] > 0.0 : insideAtOwner[i] > 0.0;
+    if (reached && !inSeed[i] && !inside(i) && dataOffsets[i] > 0.0)
+    {
+      inSeed[i] = 1;
+      added += 1.0;
+    }
+  }
+  return ranks.Sum(added);
+}
+
 /// The single-process communicator, for steps called without one.
 inline const Communicator& SingleProcess()
 {

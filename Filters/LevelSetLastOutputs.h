@@ -83,6 +83,7 @@ struct LastOutputs
   vtkSmartPointer<vtkTable> Convergence, Enclosed;
   int Iterations = 0;
   bool Converged = false;
+  double GhostFraction = 0.0; // under MPI
   // For the quick check of a seed move (serial runs with the flood start and no merged
   // duplicates): the flooded samples, f - f_iso and the spacing, in storage order; in a
   // periodic box, the particles with their images (the samples are theirs).

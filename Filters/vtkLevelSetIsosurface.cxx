@@ -215,8 +215,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 
   vtkPointSet* requested = input;
   lsi::LastOutputs& last = this->Internal->Last;
-  const bool couldReuse = onlySeedsChanged && last.Valid;
-  lsi::Distribution ranks(this->Controller);
+  // (Heap-held: a distributed run's ranks, with its ghosts, are kept for a seed move.)
+  std::unique_ptr<lsi::Distribution> thisRunsRanks(new lsi::Distribution(this->Controller));
+  lsi::Distribution& ranks = *thisRunsRanks;
   this->Internal->Ranks = &ranks;
   struct Forget // the steps below must not keep a pointer to this execution's ranks
   {
@@ -228,8 +229,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
       Filter->CommunicationSeconds = Ranks.CommunicationSeconds;
     }
   } forget{ this, ranks };
-  if (couldReuse && !ranks.Distributed() &&
-    this->ReuseAfterSeedMove(input, surfaceOutput, particleOutput, convergence, enclosed))
+  if ((ranks.Distributed() || (onlySeedsChanged && last.Valid)) &&
+    this->ReuseAfterSeedMove(
+      onlySeedsChanged, input, surfaceOutput, particleOutput, convergence, enclosed))
   {
     return true;
   }
@@ -239,6 +241,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return true;
   }
   last.Valid = false; // until this run succeeds
+  this->Internal->LastRanks.reset();
   this->InputSeconds = this->ParticleOutputSeconds = 0.0;
   auto inputStart = lsi::Clock::now();
   std::vector<double> values; // f, in input order
@@ -325,11 +328,17 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  // What a later seed move needs to recognise the same flood (ReuseAfterSeedMove): serial runs
-  // with the flood start only (a periodic cell around the seed moves with it).
-  last.QuickCheck = this->Initialization == FLOOD && !ranks.Distributed() && mergedId.empty();
-  // In a periodic box the method ran on the particles and their images: a re-run needs them.
-  last.Work = last.QuickCheck && this->Internal->Box.Enabled ? input : nullptr;
+  // What a later seed move needs to recognise the same flood (ReuseAfterSeedMove): runs with
+  // the flood start only (a periodic cell around the seed moves with it), not under MPI in a
+  // periodic box (where the method's flood crosses faces and ranks in the same rounds).
+  last.QuickCheck = this->Initialization == FLOOD && mergedId.empty() &&
+    !(ranks.Distributed() && this->Internal->Box.Enabled);
+  // A quick isovalue change runs on one process only.
+  const bool slidable = last.QuickCheck && !ranks.Distributed();
+  // In a periodic box the method ran on the particles and their images, under MPI with ghosts:
+  // a re-run needs them.
+  last.Work =
+    last.QuickCheck && (this->Internal->Box.Enabled || ranks.Distributed()) ? input : nullptr;
   last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
   if (!last.QuickCheck)
   {
@@ -354,7 +363,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   this->KeepOwnedIsopoints(*geometry, isopoints);
   // In a periodic box a slide moves every point found, the images' too, and cuts the cell anew.
   lsi::IsopointSet uncut;
-  if (this->Internal->Box.Enabled && this->QuickIsoValueChanges && last.QuickCheck)
+  if (this->Internal->Box.Enabled && this->QuickIsoValueChanges && slidable)
   {
     uncut = isopoints;
   }
@@ -372,7 +381,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
   last.DeepInside = lsi::EnclosedDeepInside();
-  const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
+  const bool keepDeepInside = this->QuickIsoValueChanges && slidable;
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
     surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
     nullptr);
@@ -393,10 +402,14 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
                                : lsi::InputStamp();
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
+  last.GhostFraction = this->GhostFraction;
+  if (last.QuickCheck && ranks.Distributed())
+  {
+    this->Internal->LastRanks = std::move(thisRunsRanks); // (`ranks` stays valid: the same object)
+  }
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
-  last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
-    isopointSettings.RefineOnData && (field || isopoints.FitSize > 0) &&
-    (!this->Internal->Box.Enabled || !uncut.Points.empty());
+  last.SlideReady = this->QuickIsoValueChanges && slidable && isopointSettings.RefineOnData &&
+    (field || isopoints.FitSize > 0) && (!this->Internal->Box.Enabled || !uncut.Points.empty());
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
@@ -932,8 +945,7 @@ bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
   // every rank floods again, until no rank adds a seed. The component is then the serial one:
   // the ranks' neighbour graphs, joined at the ghosts, are the serial graph.
   const lsi::Distribution& ranks = *this->Internal->Ranks;
-  const std::size_t n = geometry.NumberOfSamples;
-  const int rounds = 8 + 4 * ranks.Size;
+  const int rounds = lsi::FloodRoundsAcrossRanks(ranks);
   for (int round = 0; round < rounds; ++round)
   {
     const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
@@ -953,25 +965,8 @@ bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
     {
       return true;
     }
-    std::vector<double> reachedHere(n, 0.0), insideAtOwner(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      reachedHere[i] = !ranks.Owns(i) && phi[i] > 0.0 ? 1.0 : 0.0;
-      insideAtOwner[i] = phi[i] > 0.0 ? 1.0 : 0.0;
-    }
-    ranks.MaxToOwners(reachedHere);
-    ranks.RefreshGhosts(insideAtOwner);
-    double added = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const bool reached = ranks.Owns(i) ? reachedHere[i] > 0.0 : insideAtOwner[i] > 0.0;
-      if (reached && !inSeed[i] && !(phi[i] > 0.0) && dataOffsets[i] > 0.0)
-      {
-        inSeed[i] = 1;
-        added += 1.0;
-      }
-    }
-    if (ranks.Sum(added) == 0.0)
+    if (lsi::SeedWhereRanksReached(
+          ranks, dataOffsets, [&](std::size_t i) { return phi[i] > 0.0; }, inSeed) == 0.0)
     {
       ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
       return true;

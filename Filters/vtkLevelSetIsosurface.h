@@ -141,8 +141,9 @@ public:
    * tenth of the data's largest extent (ParaView's default: a script that creates the filter
    * before its input has bounds gets -0.2 from the bounds domain). Default centre (0, 0, 0).
    * With the flood start, a re-run that only moved the seeds and floods the same samples
-   * hands on the last outputs (ReusedLastOutputs); in a periodic box with PeriodicOutput
-   * AROUND_SEED, only if the main seed's centre did not move (the kept cell follows it). */
+   * hands on the last outputs (ReusedLastOutputs; under MPI when every rank does); in a periodic
+   * box with PeriodicOutput AROUND_SEED, only if the main seed's centre did not move (the kept cell
+   * follows it). */
   void SetSeedCenter(double x, double y, double z);
   void SetSeedCenter(const double center[3])
   {
@@ -543,8 +544,9 @@ private:
   // last run, SeedsOnlyTime is the filter's modification time after them.
   void SeedsModified();
   // With only the seeds moved since the last run: floods from the new seeds and, if the same
-  // samples are flooded, hands on the last outputs. False: run the method.
-  bool ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
+  // samples are flooded, hands on the last outputs. False: run the method. Under MPI every
+  // rank calls it on every run (it decides with the others).
+  bool ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSet* input, vtkPolyData* surfaceOutput,
     vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
   // Whether the kept periodic cell is the last run's (PeriodicOutput AROUND_SEED centres it on
   // the main seed of the last flood's spheres).

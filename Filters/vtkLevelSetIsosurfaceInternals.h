@@ -15,6 +15,7 @@
 #include "vtkCellArray.h"
 #include "vtkSmartPointer.h"
 
+#include <memory>
 #include <vector>
 
 namespace lsi
@@ -37,9 +38,11 @@ struct vtkLevelSetIsosurface::Internals
   lsi::PeriodicBox Box;
   vtkIdType OriginalCount = 0;
   std::vector<vtkIdType> ImageOf;
-  double SeedCenter[3] = { 0.0, 0.0, 0.0 };       // the main seed's centre, for AROUND_SEED
-  lsi::Distribution* Ranks = nullptr;             // this execution's MPI ranks
-  lsi::LastOutputs Last;                          // for the re-runs that reuse the last run
+  double SeedCenter[3] = { 0.0, 0.0, 0.0 }; // the main seed's centre, for AROUND_SEED
+  lsi::Distribution* Ranks = nullptr;       // this execution's MPI ranks
+  lsi::LastOutputs Last;                    // for the re-runs that reuse the last run
+  // The last run's MPI ranks with its ghosts (Last.Work), when a seed move may reuse that run.
+  std::unique_ptr<lsi::Distribution> LastRanks;
   vtkSmartPointer<vtkCellArray> ParticleVertices; // the particle output's, for any run's reuse
 };
 

@@ -64,8 +64,10 @@ vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
 const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)
 {
   const lsi::LastOutputs& last = this->Internal->Last;
+  // (Under MPI a rank's piece may be empty, without points: its samples are in last.Work.)
   if (!last.Valid || !last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
-    !input->GetPoints() || !(lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp))
+    !(last.Work || input->GetPoints()) ||
+    !(lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp))
   {
     return nullptr;
   }
@@ -95,15 +97,18 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     return false;
   }
   // (The points are the last run's: so are their bounds, and with the same spheres the samples
-  // in them.)
+  // in them.) Under MPI the samples are the last run's on this rank, with its ghosts, and so
+  // are the ranks that trade them.
   lsi::LastOutputs& last = this->Internal->Last;
+  const Internals& internal = *this->Internal;
+  const lsi::Communicator& ranks = internal.LastRanks ? *internal.LastRanks : lsi::SingleProcess();
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, last.Bounds);
   if (spheres != last.SeedSpheres || last.InSeed.size() != geometry.NumberOfSamples)
   {
     std::vector<double> seedDistance;
-    lsi::SeedSphereStart seeds =
-      lsi::SeedSphereDistance(geometry, spheres, last.Bounds, 0.5 * last.Spacing, seedDistance);
+    lsi::SeedSphereStart seeds = lsi::SeedSphereDistance(
+      geometry, spheres, last.Bounds, 0.5 * last.Spacing, seedDistance, ranks);
     if (!lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere).empty())
     {
       return false;
@@ -114,13 +119,41 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   lsi::FloodResult flood;
   inside = lsi::FloodedInside(geometry, dataOffsets, last.InSeed,
     static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-  if (flood.Aborted)
+  if (!ranks.All(!flood.Aborted))
   {
     return false;
   }
+  const double seedSamples = ranks.Sum(static_cast<double>(flood.SeedSamples));
+  // As the method floods (FloodAcrossRanks): where a rank's flood reached another's samples,
+  // they are seeded there, and every rank floods again.
+  if (ranks.Distributed())
+  {
+    std::vector<char> inSeed = last.InSeed;
+    int round = 0;
+    for (; round < lsi::FloodRoundsAcrossRanks(ranks) &&
+         lsi::SeedWhereRanksReached(
+           ranks, dataOffsets, [&](std::size_t i) { return inside[i] != 0; }, inSeed) != 0.0;
+         ++round)
+    {
+      lsi::FloodResult again;
+      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
+        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
+      if (!ranks.All(!again.Aborted))
+      {
+        return false;
+      }
+    }
+    if (round == lsi::FloodRoundsAcrossRanks(ranks))
+    {
+      return false; // still crossing: the method runs, and warns
+    }
+    // The ghosts' sides are their owners' (as the method's ghosts' phi is).
+    std::vector<double> insideAtOwner(inside.begin(), inside.end());
+    ranks.RefreshGhosts(insideAtOwner);
+    std::copy(insideAtOwner.begin(), insideAtOwner.end(), inside.begin());
+  }
   // As the method floods (FollowAcrossFaces): in a periodic box, a particle the flood reached
   // seeds its images, and the flood runs again.
-  const Internals& internal = *this->Internal;
   if (internal.Box.Enabled)
   {
     const std::vector<vtkIdType> original =
@@ -141,7 +174,7 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
       }
     }
   }
-  return flood.SeedSamples > 0;
+  return seedSamples > 0.0;
 }
 
 bool vtkLevelSetIsosurface::SameKeptCell() const
@@ -157,21 +190,40 @@ bool vtkLevelSetIsosurface::SameKeptCell() const
   return std::equal(center, center + 3, this->Internal->SeedCenter);
 }
 
-bool vtkLevelSetIsosurface::ReuseAfterSeedMove(vtkPointSet* input, vtkPolyData* surfaceOutput,
-  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
+bool vtkLevelSetIsosurface::ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSet* input,
+  vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
+  vtkTable* enclosed)
 {
   lsi::LastOutputs& last = this->Internal->Last;
-  const lsi::Neighborhoods* geometry = this->LastGeometry(input);
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  // Under MPI every rank decides with the others: all hand on their outputs, or none. (The
+  // last run kept its ranks only if it ran on these.)
+  const lsi::Neighborhoods* geometry =
+    onlySeedsChanged && last.Valid ? this->LastGeometry(input) : nullptr;
+  const bool kept = ranks.Distributed()
+    ? this->Internal->LastRanks && this->Internal->LastRanks->Size == ranks.Size
+    : !this->Internal->LastRanks;
+  if (!ranks.All(geometry && kept))
+  {
+    return false;
+  }
   // (The isovalue and the data are those of the last run, which checked them.)
   std::vector<char> inside;
-  if (!geometry || !this->FloodFromSeeds(*geometry, last.DataOffsets, inside) ||
-    inside != last.Inside || !this->SameKeptCell())
+  const double communication =
+    this->Internal->LastRanks ? this->Internal->LastRanks->CommunicationSeconds : 0.0;
+  const bool flooded = this->FloodFromSeeds(*geometry, last.DataOffsets, inside);
+  if (this->Internal->LastRanks)
+  {
+    ranks.CommunicationSeconds += this->Internal->LastRanks->CommunicationSeconds - communication;
+  }
+  if (!ranks.All(flooded && inside == last.Inside && this->SameKeptCell()))
   {
     return false;
   }
   last.Restore(surfaceOutput, particleOutput, convergence, enclosed);
   this->NumberOfIterationsPerformed = last.Iterations;
   this->Converged = last.Converged;
+  this->GhostFraction = last.GhostFraction;
   this->ReusedLastOutputs = true;
   this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
     this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =

@@ -17,7 +17,11 @@ ranks' parts meet). PARTITION: single-piece (the .vtp as read: rank 0 holds ever
 the default) or distribute-points (ParaView's Distribute Points first).
 Checks: every serial isopoint has a distributed one within half a spacing and the other way
 round, counts within 2%, the same convergence table (iterations, band sizes, first sign
-changes), the same enclosed table (rows, particles; volumes within 0.5%)."""
+changes), the same enclosed table (rows, particles; volumes within 0.5%).
+Option seed-move: then the main seed is moved by a sixth of its radius (the same component is
+flooded): every rank must hand on its last outputs (ReusedLastOutputs), which pass the same
+checks again; and, where there are additional seeds, they are dropped: the flood changes, the
+method runs again and gives fewer isopoints."""
 import sys
 import time
 
@@ -66,34 +70,6 @@ surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "f"], IsoValue=iso
                              SeedCenter=main[:3], SeedRadius=main[3], AdditionalSeeds=more,
                              OutputType="Isopoints",
                              Initialization=0 if "seed-spheres" in options else 1)
-start = time.time()
-surface.UpdatePipeline()
-surface.UpdatePropertyInformation()
-seconds = time.time() - start
-points = servermanager.Fetch(surface, idx=0)
-table = servermanager.Fetch(surface, idx=2)
-enclosed = servermanager.Fetch(surface, idx=3)
-
-
-def column(t, name):
-    return vtk_to_numpy(t.GetColumnByName(name)).astype(float)
-
-
-result = {
-    "points": vtk_to_numpy(points.GetPoints().GetData()) if points.GetNumberOfPoints() else
-    np.zeros((0, 3)),
-    "band": column(table, "BandSize"),
-    "mismatch": column(table, "SignMismatch"),
-    "particles": column(enclosed, "Particles"),
-    "volume": column(enclosed, "Volume"),
-    "spacing": np.array([surface.GetProperty("MeanSampleSpacing").GetElement(0)]),
-}
-print("%s, seed %s, %d rank(s) %s: %d isopoints, %d iterations, %.2f s"
-      % (case, seed, ranks, " ".join(options), len(result["points"]), len(result["band"]), seconds))
-if "--reference" in options:
-    np.savez(reference, **result)
-    sys.exit(0)
-
 failures = []
 
 
@@ -103,42 +79,105 @@ def check(ok, what):
         failures.append(what)
 
 
+def column(t, name):
+    return vtk_to_numpy(t.GetColumnByName(name)).astype(float)
+
+
+def run():
+    """Updates the filter and fetches its outputs (on rank 0 / the client)."""
+    start = time.time()
+    surface.UpdatePipeline()
+    surface.UpdatePropertyInformation()
+    seconds = time.time() - start
+    points = servermanager.Fetch(surface, idx=0)
+    table = servermanager.Fetch(surface, idx=2)
+    enclosed = servermanager.Fetch(surface, idx=3)
+    result = {
+        "points": vtk_to_numpy(points.GetPoints().GetData()) if points.GetNumberOfPoints() else
+        np.zeros((0, 3)),
+        "band": column(table, "BandSize"),
+        "mismatch": column(table, "SignMismatch"),
+        "particles": column(enclosed, "Particles"),
+        "volume": column(enclosed, "Volume"),
+        "spacing": np.array([surface.GetProperty("MeanSampleSpacing").GetElement(0)]),
+    }
+    print("%s, seed %s, %d rank(s) %s: %d isopoints, %d iterations, %.2f s"
+          % (case, seed, ranks, " ".join(options), len(result["points"]), len(result["band"]),
+             seconds))
+    return result
+
+
+def compare(result, serial):
+    """The checks against the serial reference."""
+    spacing = float(serial["spacing"][0])
+    mine, theirs = result["points"], serial["points"]
+    check(abs(len(mine) - len(theirs)) <= 0.02 * len(theirs),
+          "isopoint counts within 2%%: %d distributed, %d serial" % (len(mine), len(theirs)))
+    if len(mine) and len(theirs):
+        to_mine = cKDTree(mine).query(theirs)[0] / spacing
+        to_theirs = cKDTree(theirs).query(mine)[0] / spacing
+        print("distances in spacings: serial->distributed max %.3g (99.9%% %.3g), "
+              "distributed->serial max %.3g (99.9%% %.3g)"
+              % (to_mine.max(), np.percentile(to_mine, 99.9), to_theirs.max(),
+                 np.percentile(to_theirs, 99.9)))
+        check(to_mine.max() <= 0.5,
+              "every serial isopoint has a distributed one within 0.5 spacing")
+        check(to_theirs.max() <= 0.5,
+              "every distributed isopoint has a serial one within 0.5 spacing")
+    check(len(result["band"]) == len(serial["band"]),
+          "the same number of iterations: %d, serial %d"
+          % (len(result["band"]), len(serial["band"])))
+    if len(result["band"]) == len(serial["band"]):
+        band_difference = np.abs(result["band"] - serial["band"]).max()
+        mismatch_difference = np.abs(result["mismatch"] - serial["mismatch"]).max()
+        print("convergence table: band sizes differ by at most %d, SignMismatch by %.3g"
+              % (band_difference, mismatch_difference))
+        check(band_difference <= 0.001 * serial["band"].max(),
+              "the same band sizes (within 0.1%)")
+        check(mismatch_difference <= 1e-4, "the same SignMismatch (within 1e-4)")
+    check(len(result["volume"]) == len(serial["volume"]),
+          "the same enclosed rows: %d, serial %d" % (len(result["volume"]), len(serial["volume"])))
+    if len(result["volume"]) == len(serial["volume"]):
+        relative = np.abs(result["volume"] / serial["volume"] - 1.0).max()
+        print("enclosed volumes: %s, serial %s (largest relative difference %.3g)"
+              % (result["volume"], serial["volume"], relative))
+        check(relative <= 0.005, "the same enclosed volumes (within 0.5%)")
+        check(np.abs(result["particles"] - serial["particles"]).max()
+              <= 0.002 * serial["particles"].max(),
+              "the same enclosed particle counts (within 0.2%)")
+
+
+result = run()
+if "--reference" in options:
+    np.savez(reference, **result)
+    sys.exit(0)
+
+from scipy.spatial import cKDTree  # noqa: E402
+
 if port:
     check(ranks > 1, "the pvserver runs on %d ranks" % ranks)
 serial = np.load(reference)
-from scipy.spatial import cKDTree  # noqa: E402
-
-spacing = float(serial["spacing"][0])
-mine, theirs = result["points"], serial["points"]
-check(abs(len(mine) - len(theirs)) <= 0.02 * len(theirs),
-      "isopoint counts within 2%%: %d distributed, %d serial" % (len(mine), len(theirs)))
-if len(mine) and len(theirs):
-    to_mine = cKDTree(mine).query(theirs)[0] / spacing
-    to_theirs = cKDTree(theirs).query(mine)[0] / spacing
-    print("distances in spacings: serial->distributed max %.3g (99.9%% %.3g), "
-          "distributed->serial max %.3g (99.9%% %.3g)"
-          % (to_mine.max(), np.percentile(to_mine, 99.9), to_theirs.max(),
-             np.percentile(to_theirs, 99.9)))
-    check(to_mine.max() <= 0.5, "every serial isopoint has a distributed one within 0.5 spacing")
-    check(to_theirs.max() <= 0.5, "every distributed isopoint has a serial one within 0.5 spacing")
-check(len(result["band"]) == len(serial["band"]),
-      "the same number of iterations: %d, serial %d" % (len(result["band"]), len(serial["band"])))
-if len(result["band"]) == len(serial["band"]):
-    band_difference = np.abs(result["band"] - serial["band"]).max()
-    mismatch_difference = np.abs(result["mismatch"] - serial["mismatch"]).max()
-    print("convergence table: band sizes differ by at most %d, SignMismatch by %.3g"
-          % (band_difference, mismatch_difference))
-    check(band_difference <= 0.001 * serial["band"].max(), "the same band sizes (within 0.1%)")
-    check(mismatch_difference <= 1e-4, "the same SignMismatch (within 1e-4)")
-check(len(result["volume"]) == len(serial["volume"]),
-      "the same enclosed rows: %d, serial %d" % (len(result["volume"]), len(serial["volume"])))
-if len(result["volume"]) == len(serial["volume"]):
-    relative = np.abs(result["volume"] / serial["volume"] - 1.0).max()
-    print("enclosed volumes: %s, serial %s (largest relative difference %.3g)"
-          % (result["volume"], serial["volume"], relative))
-    check(relative <= 0.005, "the same enclosed volumes (within 0.5%)")
-    check(np.abs(result["particles"] - serial["particles"]).max()
-          <= 0.002 * serial["particles"].max(), "the same enclosed particle counts (within 0.2%)")
+compare(result, serial)
+if "seed-move" in options:
+    # Within the same component: the same flood, so the last outputs are handed on.
+    surface.SeedCenter = [main[0] - main[3] / 6.0, main[1], main[2]]
+    moved = run()
+    reused = surface.GetPropertyValue("ReusedLastOutputs")
+    check(reused == 1, "a seed moved within its component hands on the last outputs "
+          "(ReusedLastOutputs %d)" % reused)
+    check(np.array_equal(moved["points"], result["points"]),
+          "the same isopoints as the run before the move")
+    compare(moved, serial)
+    if len(more):
+        # Fewer components flooded: the method runs again.
+        surface.AdditionalSeeds = []
+        fewer = run()
+        reused = surface.GetPropertyValue("ReusedLastOutputs")
+        check(reused == 0, "dropping a seed that met another component runs the method "
+              "(ReusedLastOutputs %d)" % reused)
+        check(len(fewer["points"]) < 0.9 * len(result["points"]),
+              "and gives fewer isopoints: %d, before %d"
+              % (len(fewer["points"]), len(result["points"])))
 if failures:
     print("FAILED: %d check(s)" % len(failures))
     sys.exit(1)
