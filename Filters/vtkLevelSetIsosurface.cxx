@@ -283,7 +283,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   if (ranks.Distributed())
   {
     work = this->WithGhosts(work, *geometry, values);
-    geometry = this->FindNeighborhoods(work->GetPoints(), false);
+    geometry = this->FindNeighborhoods(work->GetPoints(), false, true);
     if (!ranks.All(geometry != nullptr))
     {
       return false;
@@ -802,7 +802,7 @@ void vtkLevelSetIsosurface::CheckPeriodicMargin(
 }
 
 const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
-  vtkPoints* points, bool duplicatesAllowed)
+  vtkPoints* points, bool duplicatesAllowed, bool withGhosts)
 {
   if (this->ProgressOrAbort(NeighborStage[0]))
   {
@@ -840,13 +840,26 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
     vtkErrorMacro(<< problem);
     return nullptr;
   }
-  // MPI and periodic runs use every list (each owned particle's halo, the ghosts cut by it,
-  // the periodic margin's check): computed here, in parallel.
+  // MPI and periodic runs use lists that the method may not visit, computed here in parallel:
+  // in a periodic box every list (the periodic margin's check); under MPI every owned
+  // particle's (its halo), and once the ghosts arrived only theirs (Distribution::Attach marks
+  // those cut by the rank's reach box): the owned particles' lists are then computed as the
+  // method visits them, as in a serial run.
   const lsi::Distribution* ranks = this->Internal->Ranks;
-  if (((ranks && ranks->Distributed()) || this->Internal->Box.Enabled) &&
-    !geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
+  if (this->Internal->Box.Enabled || (ranks && ranks->Distributed() && !withGhosts))
   {
-    return nullptr;
+    if (!geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
+    {
+      return nullptr;
+    }
+  }
+  else if (ranks && ranks->Distributed())
+  {
+    const std::vector<std::uint32_t> ghosts =
+      lsi::IndicesWhere<std::uint32_t>(geometry->NumberOfSamples, [&](std::size_t s) {
+        return static_cast<vtkIdType>(geometry->Order[s]) >= ranks->OwnedCount;
+      });
+    geometry->EnsureNeighbors(ghosts);
   }
   return this->ProgressOrAbort(NeighborStage[1]) ? nullptr : geometry;
 }

@@ -598,7 +598,10 @@ private:
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
-  const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
+  // The neighbourhoods of `points` (cached), checked; `withGhosts`: the points are a rank's
+  // particles followed by its MPI ghosts (which lists are computed ahead depends on it).
+  const lsi::Neighborhoods* FindNeighborhoods(
+    vtkPoints* points, bool duplicatesAllowed, bool withGhosts = false);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
