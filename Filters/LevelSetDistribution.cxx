@@ -389,27 +389,14 @@ vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
   return Concatenated(pieces);
 }
 
-vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned,
-  const std::vector<double>& reach, const std::vector<double>& support, std::vector<double>& values)
+vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned, const double reachBox[6],
+  const std::vector<double>& support, std::vector<double>& values)
 {
   const CommunicationTimer timer(this->CommunicationSeconds);
   const vtkIdType n = owned->GetNumberOfPoints();
   this->OwnedCount = n;
   double* box = this->ReachBox;
-  for (int d = 0; d < 3; ++d)
-  {
-    box[2 * d] = HUGE_VAL;
-    box[2 * d + 1] = -HUGE_VAL;
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double* x = owned->GetPoint(i);
-    for (int d = 0; d < 3; ++d)
-    {
-      box[2 * d] = std::min(box[2 * d], x[d] - reach[i]);
-      box[2 * d + 1] = std::max(box[2 * d + 1], x[d] + reach[i]);
-    }
-  }
+  std::copy(reachBox, reachBox + 6, box);
   const std::size_t size = static_cast<std::size_t>(this->Size);
   std::vector<double> boxes(6 * size);
   this->Controller->AllGather(box, boxes.data(), 6);

@@ -61,9 +61,10 @@ public:
   vtkSmartPointer<vtkPointSet> GatheredOnFirst(vtkPointSet* input);
 
   /// The owned samples followed by ghost copies of other ranks' samples: those inside this
-  /// rank's reach box (the union of the boxes x_i +- reach_i over owned samples), or whose
-  /// `support` (per sample, may be empty) reaches into it. `values` (f per sample) is extended.
-  vtkSmartPointer<vtkPolyData> WithGhosts(vtkPointSet* owned, const std::vector<double>& reach,
+  /// rank's `reachBox` (xmin, xmax, ymin, ...: the bounds of the boxes x_i +- reach_i over
+  /// owned samples, HaloReachBox), or whose `support` (per sample, may be empty) reaches into
+  /// it. `values` (f per sample) is extended.
+  vtkSmartPointer<vtkPolyData> WithGhosts(vtkPointSet* owned, const double reachBox[6],
     const std::vector<double>& support, std::vector<double>& values);
 
   /// After the neighbour search on WithGhosts' output: the owned samples and the ghosts'

@@ -10,6 +10,7 @@
 #include "LevelSetEnclosedDeepInside.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
+#include "LevelSetHaloReach.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetLastOutputs.h"
@@ -608,15 +609,19 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values)
 {
   // Each owned sample's halo: HaloRadii of its own neighbourhood radii (found among this rank's
-  // samples only, so never less than the serial radius), and a wider band if Epsilon asks.
+  // samples only, so never less than the serial radius), and a wider band if Epsilon asks. The
+  // rank's reach box bounds them all (from the lists of the samples that can reach farthest).
   const std::size_t n = owned.NumberOfSamples;
   const double band =
     this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
-  std::vector<double> reach(n), support;
-  for (std::size_t s = 0; s < n; ++s)
+  double reachBox[6];
+  std::size_t listed = 0;
+  if (!lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed, this->Stage(AllListsStage)))
   {
-    reach[owned.Order[s]] = HaloRadii * owned.RadiusOf(s) + band;
+    return nullptr;
   }
+  vtkDebugMacro(<< "halo: " << listed << " of " << n << " neighbour lists computed");
+  std::vector<double> support;
   // The SPH field at a point sums every particle whose kernel reaches it.
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
@@ -632,7 +637,7 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
     }
   }
   vtkSmartPointer<vtkPolyData> withGhosts =
-    this->Internal->Ranks->WithGhosts(work, reach, support, values);
+    this->Internal->Ranks->WithGhosts(work, reachBox, support, values);
   vtkDebugMacro(<< this->Internal->Ranks->GhostCount << " ghost particles from other ranks.");
   return withGhosts;
 }
@@ -841,19 +846,19 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
     return nullptr;
   }
   // MPI and periodic runs use lists that the method may not visit, computed here in parallel:
-  // in a periodic box every list (the periodic margin's check); under MPI every owned
-  // particle's (its halo), and once the ghosts arrived only theirs (Distribution::Attach marks
-  // those cut by the rank's reach box): the owned particles' lists are then computed as the
-  // method visits them, as in a serial run.
+  // in a periodic box every list (the periodic margin's check); under MPI, once the ghosts
+  // arrived, the ghosts' (Distribution::Attach marks those cut by the rank's reach box). The
+  // owned particles' are computed as the method visits them, as in a serial run (the halo's
+  // reach needs a few more: HaloReachBox).
   const lsi::Distribution* ranks = this->Internal->Ranks;
-  if (this->Internal->Box.Enabled || (ranks && ranks->Distributed() && !withGhosts))
+  if (this->Internal->Box.Enabled)
   {
     if (!geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
     {
       return nullptr;
     }
   }
-  else if (ranks && ranks->Distributed())
+  else if (withGhosts && ranks && ranks->Distributed())
   {
     const std::vector<std::uint32_t> ghosts =
       lsi::IndicesWhere<std::uint32_t>(geometry->NumberOfSamples, [&](std::size_t s) {

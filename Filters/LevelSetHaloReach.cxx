@@ -1,0 +1,170 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LevelSetHaloReach.h"
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <numeric>
+#include <utility>
+
+namespace lsi
+{
+
+namespace
+{
+// The farthest of the samples [first, first + count) from sample i (i itself excluded by the
+// caller's window).
+double FarthestOf(
+  const Neighborhoods& geometry, std::size_t i, std::size_t first, std::size_t count)
+{
+  const double* x = geometry.Position(i);
+  double farthest = 0.0;
+  for (std::size_t j = first; j < first + count; ++j)
+  {
+    if (j == i)
+    {
+      continue;
+    }
+    const double* y = geometry.Position(j);
+    const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+    farthest = std::max(farthest, dx * dx + dy * dy + dz * dz);
+  }
+  return std::sqrt(farthest);
+}
+
+// Rounding allowance: a bound computed here and a radius computed by the tree may differ in
+// their last bits.
+constexpr double Slack = 1e-9;
+} // namespace
+
+std::vector<double> RadiusBounds(const Neighborhoods& geometry)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  const std::size_t k = geometry.Stride > 1 ? static_cast<std::size_t>(geometry.Stride) - 1 : 0;
+  std::vector<double> bounds;
+  if (k == 0 || n < 2 * k + 1)
+  {
+    return bounds;
+  }
+  bounds.resize(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (std::size_t i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end); ++i)
+    {
+      // Windows of k others: before i, around it (k + 1 with i), after it; each clipped to the
+      // samples there are.
+      double bound = HUGE_VAL;
+      if (i >= k)
+      {
+        bound = std::min(bound, FarthestOf(geometry, i, i - k, k));
+      }
+      const std::size_t around = std::min(i >= k / 2 ? i - k / 2 : 0, n - (k + 1));
+      bound = std::min(bound, FarthestOf(geometry, i, around, k + 1));
+      if (i + k < n)
+      {
+        bound = std::min(bound, FarthestOf(geometry, i, i + 1, k));
+      }
+      bounds[i] = bound;
+    }
+  });
+  return bounds;
+}
+
+bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, double box[6],
+  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  // Each side (0..5: -x, +x, -y, ...) as a maximum until the end: the lower bounds negated.
+  std::fill(box, box + 6, -HUGE_VAL);
+  computed = 0;
+  // How far sample i reaches in direction `side` (0..5: -x, +x, -y, ...), as a maximum.
+  // (Rounded as the box x_i -+ reach_i would be: -(x - reach) is reach - x exactly.)
+  auto reachOf = [&](std::size_t i, int side, double radius) {
+    const double x = geometry.Position(i)[side / 2];
+    const double reach = factor * radius + band;
+    return side % 2 ? x + reach : reach - x;
+  };
+  auto exactBox = [&](const std::vector<std::uint32_t>& samples) {
+    for (const std::uint32_t i : samples)
+    {
+      for (int side = 0; side < 6; ++side)
+      {
+        const double reach = reachOf(i, side, geometry.RadiusOf(i));
+        box[side] = std::max(box[side], reach);
+      }
+    }
+  };
+  const std::vector<double> bounds = RadiusBounds(geometry);
+  if (bounds.empty()) // few samples: every list
+  {
+    std::vector<std::uint32_t> all(n);
+    std::iota(all.begin(), all.end(), 0U);
+    if (!geometry.EnsureAllNeighbors(aborted))
+    {
+      return false;
+    }
+    computed = n;
+    exactBox(all);
+  }
+  else
+  {
+    // 1. The samples that reach farthest by their bounds, a few per side: their exact reach is
+    //    a reach the box attains.
+    const std::size_t m = std::max<std::size_t>(1, std::min(firstPerSide, n));
+    std::vector<std::uint32_t> first;
+    std::vector<std::pair<double, std::uint32_t>> keyed(n);
+    for (int side = 0; side < 6; ++side)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        keyed[i] = { -reachOf(i, side, bounds[i]), static_cast<std::uint32_t>(i) };
+      }
+      std::nth_element(
+        keyed.begin(), keyed.begin() + static_cast<std::ptrdiff_t>(m - 1), keyed.end());
+      for (std::size_t j = 0; j < m; ++j)
+      {
+        first.push_back(keyed[j].second);
+      }
+    }
+    std::sort(first.begin(), first.end());
+    first.erase(std::unique(first.begin(), first.end()), first.end());
+    geometry.EnsureNeighbors(first);
+    exactBox(first);
+    if (Aborted(aborted, 0.1))
+    {
+      return false;
+    }
+    // 2. Every other sample whose bounded reach passes that on some side: only these can move
+    //    the box.
+    const double attained[6] = { box[0], box[1], box[2], box[3], box[4], box[5] };
+    std::vector<std::uint32_t> rest = IndicesWhere<std::uint32_t>(n, [&](std::size_t i) {
+      for (int side = 0; side < 6; ++side)
+      {
+        const double reach = reachOf(i, side, bounds[i]);
+        const double allowance =
+          Slack * (std::abs(geometry.Position(i)[side / 2]) + factor * bounds[i] + std::abs(band));
+        if (reach + allowance >= attained[side])
+        {
+          return true;
+        }
+      }
+      return false;
+    });
+    geometry.EnsureNeighbors(rest);
+    exactBox(rest);
+    std::vector<std::uint32_t> both;
+    std::set_union(first.begin(), first.end(), rest.begin(), rest.end(), std::back_inserter(both));
+    computed = both.size();
+  }
+  // Stored as maxima: the lower bounds negated back.
+  for (int d = 0; d < 3; ++d)
+  {
+    box[2 * d] = -box[2 * d];
+  }
+  return !Aborted(aborted, 1.0);
+}
+
+} // namespace lsi

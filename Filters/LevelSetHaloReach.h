@@ -1,0 +1,35 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Under MPI, how far a rank's halo reaches (Distribution::WithGhosts): the bounds of the boxes
+// x_i +- (factor * h_i + band) over the rank's samples, h_i each one's neighbourhood radius. It
+// is computed exactly without computing every sample's neighbour list: most samples lie too far
+// inside to move a bound, and an upper bound on h_i says which, without a search.
+#ifndef LevelSetHaloReach_h
+#define LevelSetHaloReach_h
+
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetParallel.h"
+
+#include <cstddef>
+
+namespace lsi
+{
+
+/// An upper bound on each sample's radius h_i (the distance to its Stride - 1 nearest other
+/// samples' farthest) from samples next to it in storage order: any Stride - 1 other samples
+/// lie no nearer than its nearest ones, so the farthest of them bounds h_i. The smallest over
+/// the windows before, around and after the sample. Empty when there are too few samples.
+std::vector<double> RadiusBounds(const Neighborhoods& geometry);
+
+/// The halo's box (xmin, xmax, ymin, ...) over the samples: min and max of x_i -+ (factor * h_i
+/// + band), each h_i as RadiusOf gives it. Lists are computed (in parallel) only for the samples
+/// whose bounded reach could pass the reach of the samples that bound the box so far.
+/// `computed` receives how many samples needed their lists. False only when aborted; an empty
+/// set gives the empty box (+inf, -inf, ...). `firstPerSide`: how many samples per side, those
+/// with the farthest bounded reach, set the reach to pass (any number gives the same box).
+bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, double box[6],
+  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide = 64);
+
+} // namespace lsi
+
+#endif
