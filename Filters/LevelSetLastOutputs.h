@@ -89,6 +89,7 @@ struct LastOutputs
   // periodic box, the particles with their images (the samples are theirs).
   bool QuickCheck = false;
   vtkSmartPointer<vtkPointSet> Work;
+  vtkSmartPointer<vtkPointSet> Owned; // under MPI: this rank's particles (before the ghosts)
   std::vector<char> Inside;
   std::vector<double> DataOffsets;
   double Spacing = 0.0;

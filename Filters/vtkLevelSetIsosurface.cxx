@@ -236,8 +236,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return true;
   }
-  if (onlyIsoValueChanged && !ranks.Distributed() &&
-    this->SlideAfterIsoValueChange(input, surfaceOutput, particleOutput, convergence, enclosed))
+  if ((ranks.Distributed() || onlyIsoValueChanged) &&
+    this->SlideAfterIsoValueChange(
+      onlyIsoValueChanged, input, surfaceOutput, particleOutput, convergence, enclosed))
   {
     return true;
   }
@@ -334,8 +335,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // periodic box (where the method's flood crosses faces and ranks in the same rounds).
   last.QuickCheck = this->Initialization == FLOOD && mergedId.empty() &&
     !(ranks.Distributed() && this->Internal->Box.Enabled);
-  // A quick isovalue change runs on one process only.
-  const bool slidable = last.QuickCheck && !ranks.Distributed();
   // In a periodic box the method ran on the particles and their images, under MPI with ghosts:
   // a re-run needs them.
   last.Work =
@@ -361,13 +360,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  this->KeepOwnedIsopoints(*geometry, isopoints);
-  // In a periodic box a slide moves every point found, the images' too, and cuts the cell anew.
+  // In a periodic box a slide moves every point found, the images' too, and cuts the cell anew;
+  // under MPI every point the rank found, then keeps its own.
   lsi::IsopointSet uncut;
-  if (this->Internal->Box.Enabled && this->QuickIsoValueChanges && slidable)
+  const bool keepsUncut = this->Internal->Box.Enabled || ranks.Distributed();
+  if (keepsUncut && this->QuickIsoValueChanges && last.QuickCheck)
   {
     uncut = isopoints;
   }
+  this->KeepOwnedIsopoints(*geometry, isopoints);
   this->KeepPeriodicCell(isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
   // One search index over the final isopoints, for the splat radii and the Enclosed table.
@@ -382,7 +383,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
   last.DeepInside = lsi::EnclosedDeepInside();
-  const bool keepDeepInside = this->QuickIsoValueChanges && slidable;
+  const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck && !ranks.Distributed();
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
     surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
     nullptr);
@@ -409,8 +410,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     this->Internal->LastRanks = std::move(thisRunsRanks); // (`ranks` stays valid: the same object)
   }
   // What a later isovalue change needs to slide this surface (SlideAfterIsoValueChange).
-  last.SlideReady = this->QuickIsoValueChanges && slidable && isopointSettings.RefineOnData &&
-    (field || isopoints.FitSize > 0) && (!this->Internal->Box.Enabled || !uncut.Points.empty());
+  // (Under MPI a rank without surface is ready: it has nothing to slide.)
+  const lsi::IsopointSet& found = keepsUncut ? uncut : isopoints;
+  last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
+    isopointSettings.RefineOnData && (field || found.FitSize > 0 || ranks.Distributed()) &&
+    (!this->Internal->Box.Enabled || !uncut.Points.empty());
+  last.Owned = last.QuickCheck && ranks.Distributed() ? original : nullptr;
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
@@ -436,7 +441,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Field = std::move(field);
     last.IsoValue = this->IsoValue;
     last.Phi = std::move(phi);
-    last.Isopoints = this->Internal->Box.Enabled ? std::move(uncut) : std::move(isopoints);
+    last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
     last.HalfWidth = halfWidth;
     last.Slid = 0.0;

@@ -557,9 +557,10 @@ private:
   bool ReusedLastOutputs = false, SlidLastSurface = false;
   // With only IsoValue changed since the last run and QuickIsoValueChanges on: slides the last
   // surface onto the new level (LevelSetIsoValueSlide.h) if the checks there allow. False: run
-  // the method.
-  bool SlideAfterIsoValueChange(vtkPointSet* input, vtkPolyData* surfaceOutput,
-    vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
+  // the method. Under MPI every rank calls it on every run (it decides with the others).
+  bool SlideAfterIsoValueChange(bool onlyIsoValueChanged, vtkPointSet* input,
+    vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
+    vtkTable* enclosed);
   // The array the scalars come from (SetInputArrayToProcess(0, ...)), or null.
   vtkDataArray* ScalarsOf(vtkPointSet* input);
   // The geometry the last run searched, if still cached and of this input (no search); else

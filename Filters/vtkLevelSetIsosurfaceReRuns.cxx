@@ -32,6 +32,18 @@ namespace
 // method runs in full again: the points stay on the level, but their spread and the shifted
 // LevelSet array drift from what the method would give.
 constexpr double MostSlidSpacings = 2.0;
+
+// For a rank without surface points: whether none of its counted samples changed sides.
+bool NoOwnedChange(const lsi::Neighborhoods& geometry, const std::vector<char>& before,
+  const std::vector<char>& after, vtkIdType counted, std::size_t& changed)
+{
+  changed = 0;
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    changed += before[i] != after[i] && static_cast<vtkIdType>(geometry.Order[i]) < counted;
+  }
+  return changed == 0;
+}
 } // namespace
 
 void vtkLevelSetIsosurface::SeedsModified()
@@ -232,18 +244,48 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSe
   return true;
 }
 
-bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPolyData* surfaceOutput,
-  vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed)
+bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, vtkPointSet* input,
+  vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
+  vtkTable* enclosed)
 {
   lsi::LastOutputs& last = this->Internal->Last;
-  const lsi::Neighborhoods* geometry = this->LastGeometry(input);
-  if (!geometry || !last.SlideReady || !this->QuickIsoValueChanges || !this->DataRefinement ||
-    !std::isfinite(this->IsoValue))
+  // Under MPI every rank decides with the others: all slide, or none.
+  const lsi::Neighborhoods* geometry = onlyIsoValueChanged ? this->LastGeometry(input) : nullptr;
   {
-    vtkDebugMacro(<< "quick isovalue change: not possible here (the last run kept no surface to "
-                     "slide, or the input or the method changed)");
-    return false;
+    const lsi::Distribution& ranks = *this->Internal->Ranks;
+    const bool kept = ranks.Distributed()
+      ? this->Internal->LastRanks && this->Internal->LastRanks->Size == ranks.Size
+      : !this->Internal->LastRanks;
+    if (!ranks.All(geometry && kept && last.SlideReady && this->QuickIsoValueChanges &&
+          this->DataRefinement && std::isfinite(this->IsoValue)))
+    {
+      vtkDebugMacro(<< "quick isovalue change: not possible here (the last run kept no surface "
+                       "to slide, or the input or the method changed)");
+      return false;
+    }
   }
+  // From here on the steps run with the last run's ranks, whose ghosts the kept samples hold.
+  struct KeptRanks
+  {
+    Internals& Internal;
+    lsi::Distribution* ThisRuns;
+    double CommunicationBefore;
+    ~KeptRanks()
+    {
+      if (this->Internal.Ranks != this->ThisRuns)
+      {
+        this->ThisRuns->CommunicationSeconds +=
+          this->Internal.Ranks->CommunicationSeconds - this->CommunicationBefore;
+      }
+      this->Internal.Ranks = this->ThisRuns;
+    }
+  } keptRanks{ *this->Internal, this->Internal->Ranks, 0.0 };
+  if (this->Internal->LastRanks)
+  {
+    this->Internal->Ranks = this->Internal->LastRanks.get();
+    keptRanks.CommunicationBefore = this->Internal->Ranks->CommunicationSeconds;
+  }
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
   // The last run's state is worked on in place (no copies of the data offsets, of phi and of
   // the points' kept samples): a refused slide returns false, and the method then runs in full
   // and rewrites it.
@@ -264,7 +306,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   const double inputSeconds = lsi::SecondsSince(start);
   start = lsi::Clock::now();
   std::vector<char> inside;
-  if (!this->FloodFromSeeds(*geometry, dataOffsets, inside))
+  if (!this->FloodFromSeeds(*geometry, dataOffsets, inside)) // (decided with the other ranks)
   {
     vtkDebugMacro(<< "quick isovalue change: refused, the seeds flood nothing");
     return false;
@@ -281,7 +323,14 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   lsi::IsopointSet& isopoints = last.Isopoints;
   std::vector<double>& centres = last.FitCentres;
   lsi::SlideResult slid;
-  if (last.Field)
+  bool aborted = false;
+  if (isopoints.Points.empty())
+  {
+    // (Under MPI a rank may hold no surface: nothing to slide. Surface that would appear here
+    // leaves changed samples far from any point: the flood's check below refuses.)
+    slid.Accepted = true;
+  }
+  else if (last.Field)
   {
     // The free boundary's points (last in the set) are shot anew from the new inside's edge of
     // the cloud, as the method does; the others slide.
@@ -291,17 +340,18 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
     isopoints.FreeBoundaryCount = 0;
     slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings,
       isopoints, this->Stage(lsi::IsopointStage));
-    if (slid.Accepted &&
+    aborted = slid.Accepted &&
       !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
-        isopoints, this->Stage(lsi::IsopointStage)))
-    {
-      return false; // aborted
-    }
+        isopoints, this->Stage(lsi::IsopointStage));
   }
   else
   {
     slid = lsi::SlideIsopoints(
       *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  }
+  if (!ranks.All(!aborted))
+  {
+    return false;
   }
   std::size_t changed = 0;
   // A sample that changed sides lies between the old and the new level: within the largest
@@ -311,13 +361,20 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
     slid.Accepted ? lsi::IndexOfPoints(isopoints.Points) : nullptr;
-  const bool accepted = slid.Accepted && surfaceIndex &&
-    last.Slid + slid.LargestMove <= MostSlidSpacings * last.Spacing &&
-    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, *surfaceIndex, reach, changed,
-      this->Internal->Box.Enabled ? this->Internal->OriginalCount : VTK_ID_MAX);
+  // Under MPI only the owned samples count (each rank checks its own), and the largest move is
+  // the ranks' largest.
+  const vtkIdType counted = this->Internal->Box.Enabled
+    ? this->Internal->OriginalCount
+    : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
+  const double largestMove = ranks.Max(slid.LargestMove);
+  const bool accepted = ranks.All(slid.Accepted && (surfaceIndex || isopoints.Points.empty()) &&
+    last.Slid + largestMove <= MostSlidSpacings * last.Spacing &&
+    (surfaceIndex ? lsi::FloodChangesNearPoints(
+                      *geometry, last.Inside, inside, *surfaceIndex, reach, changed, counted)
+                  : NoOwnedChange(*geometry, last.Inside, inside, counted, changed)));
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
                 << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
-                << slid.LargestMove << ", " << changed << " samples changed sides");
+                << largestMove << ", " << changed << " samples changed sides");
   if (!accepted)
   {
     return false;
@@ -328,7 +385,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   const bool nearKept = last.DeepInside.Group.size() == geometry->NumberOfSamples;
   const std::vector<std::size_t> changedSamples =
     lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth,
-      slid.LargestMove, phi, nearKept ? &last.DeepInside.Near : nullptr);
+      largestMove, phi, nearKept ? &last.DeepInside.Near : nullptr);
+  ranks.RefreshGhosts(phi); // (a ghost's stencil may be cut: its owner's value is the serial one)
   // In a periodic box the outputs show the kept cell's points, with a search index of their
   // own, and the particles' arrays are the images' too.
   vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
@@ -336,33 +394,40 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   const lsi::PointCloudIndex* shownIndex = surfaceIndex.get();
   lsi::IsopointSet cut;
   std::unique_ptr<lsi::PointCloudIndex> cutIndex;
-  if (this->Internal->Box.Enabled)
+  // Under MPI each rank shows the points nearest its own particles (KeepOwnedIsopoints).
+  if (this->Internal->Box.Enabled || ranks.Distributed())
   {
     cut = isopoints;
     this->KeepPeriodicCell(cut);
+    this->KeepOwnedIsopoints(*geometry, cut);
     cutIndex = lsi::IndexOfPoints(cut.Points);
     shown = &cut;
     shownIndex = cutIndex.get();
   }
   this->IsopointSeconds = lsi::SecondsSince(start);
-  if (!this->MakeSurfaceOutput(
-        work, *geometry, *shown, last.Field.get(), shownIndex, surfaceOutput))
+  if (!ranks.All(this->MakeSurfaceOutput(
+        work, *geometry, *shown, last.Field.get(), shownIndex, surfaceOutput)))
   {
     return false;
   }
   start = lsi::Clock::now();
-  this->MakeParticleOutputs(input, work, *geometry, phi, std::vector<vtkIdType>(), last.HalfWidth,
-    *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside, &changedSamples);
+  // (Under MPI the particles are the rank's own, as the last run spread them.)
+  vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
+  this->MakeParticleOutputs(particles, work, *geometry, phi, std::vector<vtkIdType>(),
+    last.HalfWidth, *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
+    &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
-  if (this->CheckAbort())
+  if (!ranks.All(!this->CheckAbort()))
   {
     return false;
   }
-  this->NumberOfIsopoints = static_cast<vtkIdType>(shown->Points.size() / 3);
+  this->NumberOfIsopoints =
+    static_cast<vtkIdType>(ranks.Sum(static_cast<double>(shown->Points.size() / 3)));
   this->NumberOfIterationsPerformed = last.Iterations;
   this->Converged = last.Converged;
   this->SlidLastSurface = true;
+  this->GhostFraction = last.GhostFraction;
   this->NeighborSearchSeconds = this->EvolutionSeconds = this->CompletionSeconds = 0.0;
   this->DataRefinementSeconds = this->IsopointSeconds;
   this->InputSeconds = inputSeconds;
@@ -372,7 +437,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(vtkPointSet* input, vtkPoly
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Inside = std::move(inside);
   last.IsoValue = isoValue;
-  last.Slid += slid.LargestMove;
+  last.Slid += largestMove;
   this->LastRunTime = this->GetMTime();
   return true;
 }

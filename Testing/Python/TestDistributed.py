@@ -21,7 +21,11 @@ changes), the same enclosed table (rows, particles; volumes within 0.5%).
 Option seed-move: then the main seed is moved by a sixth of its radius (the same component is
 flooded): every rank must hand on its last outputs (ReusedLastOutputs), which pass the same
 checks again; and, where there are additional seeds, they are dropped: the flood changes, the
-method runs again and gives fewer isopoints."""
+method runs again and gives fewer isopoints.
+Option iso-change (with QuickIsoValueChanges on): then the isovalue rises until 2% fewer
+particles lie above it (the serial reference run chooses it and slides too): every rank must
+slide its surface (SlidLastSurface), and the result passes the same checks against the serial
+slid surface."""
 import sys
 import time
 
@@ -70,6 +74,9 @@ surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "f"], IsoValue=iso
                              SeedCenter=main[:3], SeedRadius=main[3], AdditionalSeeds=more,
                              OutputType="Isopoints",
                              Initialization=0 if "seed-spheres" in options else 1)
+slide = "iso-change" in options
+if slide:
+    surface.QuickIsoValueChanges = 1
 failures = []
 
 
@@ -149,8 +156,19 @@ def compare(result, serial):
 
 result = run()
 if "--reference" in options:
-    np.savez(reference, **result)
-    sys.exit(0)
+    saved = dict(result)
+    if slide:
+        values = vtk_to_numpy(servermanager.Fetch(source).GetPointData().GetArray("f"))
+        above = np.sort(values[values > iso])
+        new_iso = float(above[int(0.02 * len(above))])
+        surface.IsoValue = new_iso
+        slid = run()
+        check(surface.GetPropertyValue("SlidLastSurface") == 1,
+              "the serial run slides its surface to the isovalue %.6g" % new_iso)
+        saved.update({"slid_" + key: value for key, value in slid.items()})
+        saved["new_iso"] = np.array([new_iso])
+    np.savez(reference, **saved)
+    sys.exit(1 if failures else 0)
 
 from scipy.spatial import cKDTree  # noqa: E402
 
@@ -178,6 +196,13 @@ if "seed-move" in options:
         check(len(fewer["points"]) < 0.9 * len(result["points"]),
               "and gives fewer isopoints: %d, before %d"
               % (len(fewer["points"]), len(result["points"])))
+if slide:
+    surface.IsoValue = float(serial["new_iso"][0])
+    slid = run()
+    check(surface.GetPropertyValue("SlidLastSurface") == 1,
+          "every rank slides its surface to the isovalue %.6g" % float(serial["new_iso"][0]))
+    compare(slid, {key[len("slid_"):]: serial[key] for key in serial.files
+                   if key.startswith("slid_")})
 if failures:
     print("FAILED: %d check(s)" % len(failures))
     sys.exit(1)
