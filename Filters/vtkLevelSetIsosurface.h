@@ -123,8 +123,9 @@ public:
    * change only next to the slid surface; every point must land within two spacings (on the MLS
    * fit, in steps of half a spacing, each from the samples nearest to where it starts), between the
    * new inside and outside. Otherwise (a larger change, a component joined or lost, a cavity
-   * opened, MPI) the method runs in full; in a periodic box every point slides, those beyond the
-   * faces too, and the kept cell is cut anew. The points then lie on the same level as
+   * opened, MPI in a periodic box) the method runs in full; in a periodic box every point slides,
+   * those beyond the faces too, and the kept cell is cut anew. Under MPI every rank slides the
+   * points it found, and all slide or none. The points then lie on the same level as
    * the full method's, spread as the last run left them; the LevelSet array is the last one moved
    * by the change over the data's gradient (within the band), so it and the Enclosed table match a
    * full run to first order in the change. The surface may slide two spacings in all before the

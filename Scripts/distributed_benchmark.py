@@ -53,6 +53,9 @@ surface.UpdatePipeline()
 seconds = time.time() - start
 controller.Barrier()
 wall = time.time() - start
+surface.UpdatePropertyInformation()
+isopoints = surface.GetProperty("NumberOfIsopoints").GetElement(0)
+ghost_fraction = surface.GetProperty("GhostFraction").GetElement(0)
 # Then the seed moved within its component (issue 16): the same flood, so every rank hands on
 # its last outputs.
 surface.SeedCenter = [66, 64, 64]
@@ -84,8 +87,8 @@ if rank == 0:
     per_rank = [[receive.GetValue(5 * r + k) for k in range(5)] for r in range(ranks)]
     result = {
         "ranks": ranks, "threads": threads, "seconds": wall,
-        "isopoints": surface.GetProperty("NumberOfIsopoints").GetElement(0),
-        "ghost_fraction": surface.GetProperty("GhostFraction").GetElement(0),
+        "isopoints": isopoints,
+        "ghost_fraction": ghost_fraction,
         "seed_move_seconds": seed_move,
         "seed_move_reused": seed_move_reused,
         "isovalue_change_seconds": iso_change,
