@@ -641,6 +641,11 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
+  // For a re-run's steps under MPI: the last run's ranks in place of this run's (ReRuns.cxx).
+  class LastRanksScope;
+  // Whether the last run's ranks (kept for re-runs) match this run's: kept under MPI, on as many
+  // ranks; none in a serial run.
+  bool LastRanksMatch() const;
 };
 
 #endif

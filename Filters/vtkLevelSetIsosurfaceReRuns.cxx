@@ -46,6 +46,48 @@ bool NoOwnedChange(const lsi::Neighborhoods& geometry, const std::vector<char>& 
 }
 } // namespace
 
+// The last run's ranks know its ghosts, which the kept samples hold: a re-run's steps use them
+// in place of this run's fresh ranks, whose communication time they add to, until the end of
+// the scope.
+class vtkLevelSetIsosurface::LastRanksScope
+{
+public:
+  explicit LastRanksScope(Internals& internal)
+    : Internal(internal)
+    , ThisRuns(internal.Ranks)
+  {
+    if (internal.LastRanks)
+    {
+      internal.Ranks = internal.LastRanks.get();
+      this->Before = internal.Ranks->CommunicationSeconds;
+    }
+  }
+  ~LastRanksScope()
+  {
+    if (this->Internal.Ranks != this->ThisRuns)
+    {
+      this->ThisRuns->CommunicationSeconds +=
+        this->Internal.Ranks->CommunicationSeconds - this->Before;
+    }
+    this->Internal.Ranks = this->ThisRuns;
+  }
+  LastRanksScope(const LastRanksScope&) = delete;
+  LastRanksScope& operator=(const LastRanksScope&) = delete;
+
+private:
+  Internals& Internal;
+  lsi::Distribution* ThisRuns;
+  double Before = 0.0;
+};
+
+bool vtkLevelSetIsosurface::LastRanksMatch() const
+{
+  const Internals& internal = *this->Internal;
+  return internal.Ranks->Distributed()
+    ? internal.LastRanks && internal.LastRanks->Size == internal.Ranks->Size
+    : !internal.LastRanks;
+}
+
 void vtkLevelSetIsosurface::SeedsModified()
 {
   const vtkMTimeType before = this->GetMTime();
@@ -110,10 +152,10 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   }
   // (The points are the last run's: so are their bounds, and with the same spheres the samples
   // in them.) Under MPI the samples are the last run's on this rank, with its ghosts, and so
-  // are the ranks that trade them.
+  // are the ranks that trade them (LastRanksScope).
   lsi::LastOutputs& last = this->Internal->Last;
   const Internals& internal = *this->Internal;
-  const lsi::Communicator& ranks = internal.LastRanks ? *internal.LastRanks : lsi::SingleProcess();
+  const lsi::Distribution& ranks = *internal.Ranks;
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, last.Bounds);
   if (spheres != last.SeedSpheres || last.InSeed.size() != geometry.NumberOfSamples)
@@ -207,27 +249,18 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSe
   vtkTable* enclosed)
 {
   lsi::LastOutputs& last = this->Internal->Last;
-  const lsi::Distribution& ranks = *this->Internal->Ranks;
-  // Under MPI every rank decides with the others: all hand on their outputs, or none. (The
-  // last run kept its ranks only if it ran on these.)
+  // Under MPI every rank decides with the others: all hand on their outputs, or none.
   const lsi::Neighborhoods* geometry =
     onlySeedsChanged && last.Valid ? this->LastGeometry(input) : nullptr;
-  const bool kept = ranks.Distributed()
-    ? this->Internal->LastRanks && this->Internal->LastRanks->Size == ranks.Size
-    : !this->Internal->LastRanks;
-  if (!ranks.All(geometry && kept))
+  if (!this->Internal->Ranks->All(geometry && this->LastRanksMatch()))
   {
     return false;
   }
+  const LastRanksScope lastRanks(*this->Internal);
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
   // (The isovalue and the data are those of the last run, which checked them.)
   std::vector<char> inside;
-  const double communication =
-    this->Internal->LastRanks ? this->Internal->LastRanks->CommunicationSeconds : 0.0;
   const bool flooded = this->FloodFromSeeds(*geometry, last.DataOffsets, inside);
-  if (this->Internal->LastRanks)
-  {
-    ranks.CommunicationSeconds += this->Internal->LastRanks->CommunicationSeconds - communication;
-  }
   if (!ranks.All(flooded && inside == last.Inside && this->SameKeptCell()))
   {
     return false;
@@ -251,40 +284,14 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   lsi::LastOutputs& last = this->Internal->Last;
   // Under MPI every rank decides with the others: all slide, or none.
   const lsi::Neighborhoods* geometry = onlyIsoValueChanged ? this->LastGeometry(input) : nullptr;
+  if (!this->Internal->Ranks->All(geometry && this->LastRanksMatch() && last.SlideReady &&
+        this->QuickIsoValueChanges && this->DataRefinement && std::isfinite(this->IsoValue)))
   {
-    const lsi::Distribution& ranks = *this->Internal->Ranks;
-    const bool kept = ranks.Distributed()
-      ? this->Internal->LastRanks && this->Internal->LastRanks->Size == ranks.Size
-      : !this->Internal->LastRanks;
-    if (!ranks.All(geometry && kept && last.SlideReady && this->QuickIsoValueChanges &&
-          this->DataRefinement && std::isfinite(this->IsoValue)))
-    {
-      vtkDebugMacro(<< "quick isovalue change: not possible here (the last run kept no surface "
-                       "to slide, or the input or the method changed)");
-      return false;
-    }
+    vtkDebugMacro(<< "quick isovalue change: not possible here (the last run kept no surface "
+                     "to slide, or the input or the method changed)");
+    return false;
   }
-  // From here on the steps run with the last run's ranks, whose ghosts the kept samples hold.
-  struct KeptRanks
-  {
-    Internals& Internal;
-    lsi::Distribution* ThisRuns;
-    double CommunicationBefore;
-    ~KeptRanks()
-    {
-      if (this->Internal.Ranks != this->ThisRuns)
-      {
-        this->ThisRuns->CommunicationSeconds +=
-          this->Internal.Ranks->CommunicationSeconds - this->CommunicationBefore;
-      }
-      this->Internal.Ranks = this->ThisRuns;
-    }
-  } keptRanks{ *this->Internal, this->Internal->Ranks, 0.0 };
-  if (this->Internal->LastRanks)
-  {
-    this->Internal->Ranks = this->Internal->LastRanks.get();
-    keptRanks.CommunicationBefore = this->Internal->Ranks->CommunicationSeconds;
-  }
+  const LastRanksScope lastRanks(*this->Internal);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   // The last run's state is worked on in place (no copies of the data offsets, of phi and of
   // the points' kept samples): a refused slide returns false, and the method then runs in full
