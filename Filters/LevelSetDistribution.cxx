@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetDistribution.h"
 
+#include "LevelSetHaloReach.h"
 #include "LevelSetNeighborhoods.h"
+#include "LevelSetParallel.h"
 
 #include "vtkCommunicator.h"
 #include "vtkDistributedPointCloudFilter.h"
@@ -493,24 +495,32 @@ void Distribution::Attach(const Neighborhoods& geometry)
   }
   this->OwnedSamples.assign(n, 0);
   geometry.Truncated.assign(n, 0);
-  for (std::size_t s = 0; s < n; ++s)
-  {
-    if (static_cast<vtkIdType>(geometry.Order[s]) < this->OwnedCount)
-    {
-      this->OwnedSamples[s] = 1;
-      continue;
-    }
-    // A ghost's neighbourhood is whole only if its ball lies in the reach box, inside which
-    // this rank holds every sample.
+  // A ghost's neighbourhood is whole only if its ball lies in the reach box, inside which this
+  // rank holds every sample. Most ghosts lie deeper in the box than a bound on their radius
+  // (RadiusBound, no search): only the others need their lists, computed in parallel.
+  auto ballOutside = [&](std::size_t s, double r) {
     const double* x = geometry.Position(s);
-    const double r = geometry.RadiusOf(s);
     for (int d = 0; d < 3; ++d)
     {
       if (x[d] - r < this->ReachBox[2 * d] || x[d] + r > this->ReachBox[2 * d + 1])
       {
-        geometry.Truncated[s] = 1;
+        return true;
       }
     }
+    return false;
+  };
+  const std::vector<std::uint32_t> near = IndicesWhere<std::uint32_t>(n, [&](std::size_t s) {
+    return static_cast<vtkIdType>(geometry.Order[s]) >= this->OwnedCount &&
+      ballOutside(s, RadiusBound(geometry, s) * (1.0 + 1e-9));
+  });
+  geometry.EnsureNeighbors(near);
+  for (const std::uint32_t s : near)
+  {
+    geometry.Truncated[s] = ballOutside(s, geometry.RadiusOf(s)) ? 1 : 0;
+  }
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    this->OwnedSamples[s] = static_cast<vtkIdType>(geometry.Order[s]) < this->OwnedCount;
   }
   auto inStorageOrder = [&](const std::vector<std::vector<vtkIdType>>& ids) {
     std::vector<std::vector<std::uint32_t>> samples(ids.size());

@@ -41,12 +41,35 @@ double FarthestOf(
 constexpr double Slack = 1e-9;
 } // namespace
 
-std::vector<double> RadiusBounds(const Neighborhoods& geometry)
+double RadiusBound(const Neighborhoods& geometry, std::size_t i)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const std::size_t k = geometry.Stride > 1 ? static_cast<std::size_t>(geometry.Stride) - 1 : 0;
-  std::vector<double> bounds;
   if (k == 0 || n < 2 * k + 1)
+  {
+    return HUGE_VAL;
+  }
+  // Windows of k others: before i, around it (k + 1 with i), after it; each clipped to the
+  // samples there are.
+  double bound = HUGE_VAL;
+  if (i >= k)
+  {
+    bound = std::min(bound, FarthestOf(geometry, i, i - k, k));
+  }
+  const std::size_t around = std::min(i >= k / 2 ? i - k / 2 : 0, n - (k + 1));
+  bound = std::min(bound, FarthestOf(geometry, i, around, k + 1));
+  if (i + k < n)
+  {
+    bound = std::min(bound, FarthestOf(geometry, i, i + 1, k));
+  }
+  return bound;
+}
+
+std::vector<double> RadiusBounds(const Neighborhoods& geometry)
+{
+  const std::size_t n = geometry.NumberOfSamples;
+  std::vector<double> bounds;
+  if (n == 0 || !std::isfinite(RadiusBound(geometry, 0)))
   {
     return bounds;
   }
@@ -54,20 +77,7 @@ std::vector<double> RadiusBounds(const Neighborhoods& geometry)
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (std::size_t i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end); ++i)
     {
-      // Windows of k others: before i, around it (k + 1 with i), after it; each clipped to the
-      // samples there are.
-      double bound = HUGE_VAL;
-      if (i >= k)
-      {
-        bound = std::min(bound, FarthestOf(geometry, i, i - k, k));
-      }
-      const std::size_t around = std::min(i >= k / 2 ? i - k / 2 : 0, n - (k + 1));
-      bound = std::min(bound, FarthestOf(geometry, i, around, k + 1));
-      if (i + k < n)
-      {
-        bound = std::min(bound, FarthestOf(geometry, i, i + 1, k));
-      }
-      bounds[i] = bound;
+      bounds[i] = RadiusBound(geometry, i);
     }
   });
   return bounds;

@@ -11,6 +11,7 @@
 #include "LevelSetParallel.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace lsi
 {
@@ -20,6 +21,9 @@ namespace lsi
 /// lie no nearer than its nearest ones, so the farthest of them bounds h_i. The smallest over
 /// the windows before, around and after the sample. Empty when there are too few samples.
 std::vector<double> RadiusBounds(const Neighborhoods& geometry);
+
+/// The same bound for sample i alone (+inf when there are too few samples).
+double RadiusBound(const Neighborhoods& geometry, std::size_t i);
 
 /// The halo's box (xmin, xmax, ymin, ...) over the samples: min and max of x_i -+ (factor * h_i
 /// + band), each h_i as RadiusOf gives it. Lists are computed (in parallel) only for the samples

@@ -285,7 +285,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   if (ranks.Distributed())
   {
     work = this->WithGhosts(work, *geometry, values);
-    geometry = this->FindNeighborhoods(work->GetPoints(), false, true);
+    geometry = this->FindNeighborhoods(work->GetPoints(), false);
     if (!ranks.All(geometry != nullptr))
     {
       return false;
@@ -812,7 +812,7 @@ void vtkLevelSetIsosurface::CheckPeriodicMargin(
 }
 
 const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
-  vtkPoints* points, bool duplicatesAllowed, bool withGhosts)
+  vtkPoints* points, bool duplicatesAllowed)
 {
   if (this->ProgressOrAbort(NeighborStage[0]))
   {
@@ -850,26 +850,13 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
     vtkErrorMacro(<< problem);
     return nullptr;
   }
-  // MPI and periodic runs use lists that the method may not visit, computed here in parallel:
-  // in a periodic box every list (the periodic margin's check); under MPI, once the ghosts
-  // arrived, the ghosts' (Distribution::Attach marks those cut by the rank's reach box). The
-  // owned particles' are computed as the method visits them, as in a serial run (the halo's
-  // reach needs a few more: HaloReachBox).
-  const lsi::Distribution* ranks = this->Internal->Ranks;
-  if (this->Internal->Box.Enabled)
+  // A periodic run uses every list (the periodic margin's check): computed here, in parallel.
+  // Otherwise lists are computed as the method visits them, as in a serial run; under MPI also
+  // those that the halo's reach (HaloReachBox) and the ghosts it cuts (Distribution::Attach)
+  // need.
+  if (this->Internal->Box.Enabled && !geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
   {
-    if (!geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
-    {
-      return nullptr;
-    }
-  }
-  else if (withGhosts && ranks && ranks->Distributed())
-  {
-    const std::vector<std::uint32_t> ghosts =
-      lsi::IndicesWhere<std::uint32_t>(geometry->NumberOfSamples, [&](std::size_t s) {
-        return static_cast<vtkIdType>(geometry->Order[s]) >= ranks->OwnedCount;
-      });
-    geometry->EnsureNeighbors(ghosts);
+    return nullptr;
   }
   return this->ProgressOrAbort(NeighborStage[1]) ? nullptr : geometry;
 }

@@ -600,10 +600,8 @@ private:
     const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
-  // The neighbourhoods of `points` (cached), checked; `withGhosts`: the points are a rank's
-  // particles followed by its MPI ghosts (which lists are computed ahead depends on it).
-  const lsi::Neighborhoods* FindNeighborhoods(
-    vtkPoints* points, bool duplicatesAllowed, bool withGhosts = false);
+  // The neighbourhoods of `points` (cached), checked.
+  const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
