@@ -47,6 +47,35 @@ void AppendSelected(const std::vector<double>& points, const std::vector<double>
   }
 }
 
+void KeepSelected(IsopointSet& isopoints, const std::vector<std::size_t>& selected)
+{
+  const std::size_t count = isopoints.Points.size() / 3;
+  // Each per-point array compacted in place (the selected indices ascend).
+  auto keepRows = [&](auto& rows, std::size_t width) {
+    if (width == 0 || rows.size() != width * count)
+    {
+      rows.clear();
+      return;
+    }
+    std::size_t next = 0;
+    for (const std::size_t i : selected)
+    {
+      std::copy(rows.begin() + static_cast<std::ptrdiff_t>(width * i),
+        rows.begin() + static_cast<std::ptrdiff_t>(width * (i + 1)),
+        rows.begin() + static_cast<std::ptrdiff_t>(width * next++));
+    }
+    rows.resize(width * selected.size());
+  };
+  // (The fits' rows are kept together or not at all.)
+  const std::size_t fit = isopoints.FitSize;
+  const bool withFits = fit > 0 && isopoints.FitSamples.size() == fit * count &&
+    isopoints.FitModels.size() == ModelSize * count;
+  keepRows(isopoints.Points, 3);
+  keepRows(isopoints.Normals, 3);
+  keepRows(isopoints.FitSamples, withFits ? fit : 0);
+  keepRows(isopoints.FitModels, withFits ? ModelSize : 0);
+}
+
 std::vector<std::size_t> ValidIndices(const std::vector<char>& valid)
 {
   std::vector<std::size_t> indices;

@@ -191,6 +191,11 @@ std::vector<std::size_t> ThinByVoxels(
 void AppendSelected(const std::vector<double>& points, const std::vector<double>& normals,
   const std::vector<std::size_t>& selected, IsopointSet& out);
 
+/// Keeps the selected points (ascending indices) with their normals and, when both have one row
+/// per point, their fits' samples and models (else neither): the arrays are interpolated over
+/// those samples.
+void KeepSelected(IsopointSet& isopoints, const std::vector<std::size_t>& selected);
+
 /// Indices where `valid` is set.
 std::vector<std::size_t> ValidIndices(const std::vector<char>& valid);
 

@@ -368,13 +368,19 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     uncut = isopoints;
   }
-  this->KeepOwnedIsopoints(*geometry, isopoints);
   this->KeepPeriodicCell(isopoints);
+  // Under MPI a point near the cut has neighbours that another rank keeps: its splat radius
+  // comes from every point this rank found (in the periodic cell), as in a serial run.
+  const std::vector<double> foundPoints =
+    ranks.Distributed() ? isopoints.Points : std::vector<double>();
+  const std::unique_ptr<lsi::PointCloudIndex> foundIndex =
+    ranks.Distributed() ? lsi::IndexOfPoints(foundPoints) : nullptr;
+  this->KeepOwnedIsopoints(*geometry, isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
   // One search index over the final isopoints, for the splat radii and the Enclosed table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(isopoints.Points);
-  ok = this->MakeSurfaceOutput(
-    input, *geometry, isopoints, field.get(), surfaceIndex.get(), surfaceOutput);
+  ok = this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(),
+    foundIndex ? foundIndex.get() : surfaceIndex.get(), surfaceOutput);
   if (!ranks.All(ok))
   {
     return false;
@@ -761,25 +767,9 @@ void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
   {
     kept[i] = lsi::InKeptCell(&isopoints.Points[3 * i], internal.Box, nullptr) ? 1 : 0;
   }
-  const std::vector<std::size_t> selected = lsi::ValidIndices(kept);
-  lsi::IsopointSet inCell;
-  lsi::AppendSelected(isopoints.Points, isopoints.Normals, selected, inCell);
-  // The kept points keep their fits' samples and models (for the arrays interpolated onto them).
-  const std::size_t fit = isopoints.FitSize;
-  const bool withFits = fit > 0 && isopoints.FitSamples.size() == fit * kept.size() &&
-    isopoints.FitModels.size() == lsi::ModelSize * kept.size();
-  for (std::size_t k = 0; withFits && k < selected.size(); ++k)
-  {
-    const std::size_t i = selected[k];
-    inCell.FitSamples.insert(inCell.FitSamples.end(), &isopoints.FitSamples[fit * i],
-      &isopoints.FitSamples[fit * i] + fit);
-    inCell.FitModels.insert(inCell.FitModels.end(), &isopoints.FitModels[lsi::ModelSize * i],
-      &isopoints.FitModels[lsi::ModelSize * i] + lsi::ModelSize);
-  }
-  isopoints.Points.swap(inCell.Points);
-  isopoints.Normals.swap(inCell.Normals);
-  isopoints.FitSamples.swap(inCell.FitSamples);
-  isopoints.FitModels.swap(inCell.FitModels);
+  // (The kept points keep their fits' samples and models, for the arrays interpolated onto
+  // them.)
+  lsi::KeepSelected(isopoints, lsi::ValidIndices(kept));
 }
 
 void vtkLevelSetIsosurface::CheckPeriodicMargin(
@@ -1170,12 +1160,9 @@ void vtkLevelSetIsosurface::KeepOwnedIsopoints(
       ? 1
       : 0;
   }
-  lsi::IsopointSet owned;
-  lsi::AppendSelected(isopoints.Points, isopoints.Normals, lsi::ValidIndices(kept), owned);
-  isopoints.Points.swap(owned.Points);
-  isopoints.Normals.swap(owned.Normals);
-  isopoints.FitSamples.clear(); // no longer one row per point
-  isopoints.FitModels.clear();
+  // (Their fits' samples go with them: the arrays are interpolated over those samples, as in a
+  // serial run.)
+  lsi::KeepSelected(isopoints, lsi::ValidIndices(kept));
 }
 
 void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,

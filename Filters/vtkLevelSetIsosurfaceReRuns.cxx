@@ -412,8 +412,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     shownIndex = cutIndex.get();
   }
   this->IsopointSeconds = lsi::SecondsSince(start);
-  if (!ranks.All(this->MakeSurfaceOutput(
-        work, *geometry, *shown, last.Field.get(), shownIndex, surfaceOutput)))
+  // (Under MPI the splat radii come from every point this rank found, as in a full run.)
+  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, *shown, last.Field.get(),
+        ranks.Distributed() ? surfaceIndex.get() : shownIndex, surfaceOutput)))
   {
     return false;
   }
