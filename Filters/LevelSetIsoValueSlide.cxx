@@ -289,7 +289,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 }
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const PointCloudIndex& index, double reach, std::size_t& changed,
+  const std::vector<char>& after, const PointCloudIndex* points, double reach, std::size_t& changed,
   vtkIdType particles)
 {
   const std::vector<std::uint32_t> moved =
@@ -301,10 +301,11 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   {
     return true;
   }
-  if (index.Size() == 0)
+  if (!points || points->Size() == 0)
   {
     return false;
   }
+  const PointCloudIndex& index = *points;
   std::atomic<bool> near(true);
   vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end && near.load(std::memory_order_relaxed); ++k)

@@ -65,14 +65,15 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   IsopointSet& isopoints, const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
-/// within `reach` of one of the points that `points` indexes: the flood then only moved with
+/// within `reach` of one of the points that `points` indexes (null: no points, so no sample may
+/// change): the flood then only moved with
 /// the surface. A component joined or lost, or a cavity opened, leaves changed samples away
 /// from the slid surface. `changed` receives how many samples changed. Only the samples of
 /// the first `particles` input points count: in a periodic box the originals (each image is
 /// flooded as its original is, and the images' outer edge, whose neighbourhoods are cut, has no
 /// surface).
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const PointCloudIndex& points, double reach, std::size_t& changed,
+  const std::vector<char>& after, const PointCloudIndex* points, double reach, std::size_t& changed,
   vtkIdType particles);
 
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the

@@ -32,18 +32,6 @@ namespace
 // method runs in full again: the points stay on the level, but their spread and the shifted
 // LevelSet array drift from what the method would give.
 constexpr double MostSlidSpacings = 2.0;
-
-// For a rank without surface points: whether none of its counted samples changed sides.
-bool NoOwnedChange(const lsi::Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, vtkIdType counted, std::size_t& changed)
-{
-  changed = 0;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    changed += before[i] != after[i] && static_cast<vtkIdType>(geometry.Order[i]) < counted;
-  }
-  return changed == 0;
-}
 } // namespace
 
 // The last run's ranks know its ghosts, which the kept samples hold: a re-run's steps use them
@@ -374,11 +362,11 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     ? this->Internal->OriginalCount
     : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
   const double largestMove = ranks.Max(slid.LargestMove);
-  const bool accepted = ranks.All(slid.Accepted && (surfaceIndex || isopoints.Points.empty()) &&
-    last.Slid + largestMove <= MostSlidSpacings * last.Spacing &&
-    (surfaceIndex ? lsi::FloodChangesNearPoints(
-                      *geometry, last.Inside, inside, *surfaceIndex, reach, changed, counted)
-                  : NoOwnedChange(*geometry, last.Inside, inside, counted, changed)));
+  // (A rank without points, whose index is null, accepts only if none of its samples changed.)
+  const bool accepted =
+    ranks.All(slid.Accepted && last.Slid + largestMove <= MostSlidSpacings * last.Spacing &&
+      lsi::FloodChangesNearPoints(
+        *geometry, last.Inside, inside, surfaceIndex.get(), reach, changed, counted));
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
                 << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
                 << largestMove << ", " << changed << " samples changed sides");
