@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkParticleDensity.h"
 
+#include "LevelSetDistribution.h"
 #include "LevelSetParallel.h"
 #include "NearestNeighbors.h"
 #include "SPHKernels.h"
@@ -11,17 +12,21 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleDensity);
+vtkCxxSetObjectMacro(vtkParticleDensity, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -39,6 +44,59 @@ vtkDataArray* MassArray(vtkPointData* data)
   return nullptr;
 }
 
+// The points' coordinates, xyz per point; `problem` names the first that is NaN or infinite.
+std::vector<double> Coordinates(vtkPointSet* points, std::string& problem)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double* x = &xyz[3 * i];
+    points->GetPoint(i, x);
+    if (problem.empty() && !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+    {
+      problem = "Point " + std::to_string(i) + " has a NaN or infinite coordinate.";
+    }
+  }
+  return xyz;
+}
+
+// The bounds of the balls around the particles out to their k-th nearest among themselves
+// (everywhere, when they are fewer than k): a particle's k nearest among all ranks' lie within
+// its ball, since those among a rank's own lie no closer. Computed in parallel.
+void NeighborReachBox(const std::vector<double>& xyz, std::size_t k, double box[6])
+{
+  const std::size_t n = xyz.size() / 3;
+  for (int d = 0; d < 3; ++d)
+  {
+    box[2 * d] = n < k ? -HUGE_VAL : HUGE_VAL;
+    box[2 * d + 1] = n < k ? HUGE_VAL : -HUGE_VAL;
+  }
+  if (n < k)
+  {
+    return;
+  }
+  const lsi::PointCloudIndex index(xyz.data(), n);
+  std::vector<double> reach(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    std::vector<std::uint32_t> ids(k);
+    std::vector<double> d2(k);
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const std::size_t found = index.Nearest(&xyz[3 * i], k, ids.data(), d2.data());
+      reach[i] = std::sqrt(d2[found - 1]);
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      box[2 * d] = std::min(box[2 * d], xyz[3 * i + d] - reach[i]);
+      box[2 * d + 1] = std::max(box[2 * d + 1], xyz[3 * i + d] + reach[i]);
+    }
+  }
+}
+
 void NameInFieldData(vtkFieldData* fields, const char* marker, const char* arrayName)
 {
   vtkNew<vtkStringArray> name;
@@ -49,45 +107,76 @@ void NameInFieldData(vtkFieldData* fields, const char* marker, const char* array
 }
 } // namespace
 
+vtkParticleDensity::vtkParticleDensity()
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkParticleDensity::~vtkParticleDensity()
+{
+  this->SetController(nullptr);
+}
+
 int vtkParticleDensity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPointSet* output = vtkPointSet::GetData(outputVector);
-  output->ShallowCopy(input);
-  const vtkIdType n = input->GetNumberOfPoints();
   const std::size_t k = static_cast<std::size_t>(this->NumberOfNeighbors);
-  if (n < this->NumberOfNeighbors)
+  // Under MPI every rank takes each decision with the others (none waits on a step another
+  // skipped), and only rank 0 reports.
+  lsi::Distribution ranks(this->Controller);
+  const bool reports = ranks.Rank == 0;
+  std::string problem;
+  std::vector<double> xyz = Coordinates(input, problem);
+  problem = ranks.FirstProblem(problem);
+  const double total = ranks.Sum(static_cast<double>(input->GetNumberOfPoints()));
+  if (problem.empty() && total < this->NumberOfNeighbors)
   {
-    vtkErrorMacro("The input has "
-      << n << " points, fewer than NumberOfNeighbors = " << this->NumberOfNeighbors << ".");
+    problem = "The input has " + std::to_string(static_cast<vtkIdType>(total)) +
+      " points, fewer than NumberOfNeighbors = " + std::to_string(this->NumberOfNeighbors) + ".";
+  }
+  if (!problem.empty())
+  {
+    if (reports)
+    {
+      vtkErrorMacro(<< problem);
+    }
     output->Initialize();
     return 0;
   }
-  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    input->GetPoint(i, &xyz[3 * i]);
-    if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) ||
-      !std::isfinite(xyz[3 * i + 2]))
-    {
-      vtkErrorMacro("Point " << i << " has a NaN or infinite coordinate.");
-      output->Initialize();
-      return 0;
-    }
-  }
-  vtkDataArray* masses = MassArray(input->GetPointData());
-  if (!masses)
+  const bool hasMasses = MassArray(input->GetPointData()) != nullptr;
+  if (ranks.Max(input->GetNumberOfPoints() > 0 && !hasMasses ? 1.0 : 0.0) > 0.0 && reports)
   {
     vtkWarningMacro("No Masses, Mass or mass point array: every particle has mass 1.");
   }
-  std::vector<double> mass(static_cast<std::size_t>(n), 1.0);
-  for (vtkIdType i = 0; masses && i < n; ++i)
+
+  // The rank's particles (redistributed by space if the pieces are poor), then copies of the
+  // other ranks' particles that their nearest may be (serial: the input alone).
+  vtkSmartPointer<vtkPointSet> owned = input;
+  vtkSmartPointer<vtkPointSet> work = input;
+  if (ranks.Distributed())
   {
-    mass[i] = masses->GetTuple1(i);
+    std::string report;
+    owned = ranks.Balanced(input, report);
+    vtkDebugMacro(<< report);
+    xyz = Coordinates(owned, problem);
+    double box[6];
+    NeighborReachBox(xyz, k, box);
+    std::vector<double> unused(static_cast<std::size_t>(owned->GetNumberOfPoints()), 0.0);
+    work = ranks.WithGhosts(owned, box, std::vector<double>(), unused);
+    xyz = Coordinates(work, problem);
+  }
+  const vtkIdType n = owned->GetNumberOfPoints();
+  const std::size_t all = xyz.size() / 3;
+  vtkDataArray* masses = MassArray(work->GetPointData());
+  std::vector<double> mass(all, 1.0);
+  for (std::size_t i = 0; masses && i < all; ++i)
+  {
+    mass[i] = masses->GetTuple1(static_cast<vtkIdType>(i));
   }
 
-  const lsi::PointCloudIndex index(xyz.data(), static_cast<std::size_t>(n));
+  const lsi::PointCloudIndex index(xyz.data(), all);
   const lsi::SPHKernel kernel = static_cast<lsi::SPHKernel>(this->Kernel);
   vtkNew<vtkDoubleArray> density, support;
   density->SetName("Density");
@@ -122,16 +211,18 @@ int vtkParticleDensity::RequestData(
       },
       8192);
   });
-  if (!completed)
+  if (!ranks.All(completed)) // (aborted on some rank: all stop)
   {
     output->Initialize();
     return 1;
   }
+  output->ShallowCopy(owned);
   for (vtkIdType i = 0; i < n; ++i)
   {
     coincident += support->GetValue(i) == 0.0;
   }
-  if (coincident > 0)
+  coincident = static_cast<std::size_t>(ranks.Sum(static_cast<double>(coincident)));
+  if (coincident > 0 && reports)
   {
     vtkWarningMacro(<< coincident << " particles have all their " << k
                     << " nearest neighbours at their own position: their density is set to 0. "

@@ -16,6 +16,15 @@
  * ("DensityArray", "SmoothingLengthArray") as the snapshot readers do, so that the level-set
  * filter picks the density up without being told. Lengths scale with the data: no unit enters.
  *
+ * MPI (pvbatch, pvserver): with the particles spread over the ranks of Controller (by default
+ * the global controller), a rank's particles lack the neighbours that other ranks hold. The
+ * particles are first redistributed by space if the pieces are poor (a reader's interleaved
+ * pieces, or everything on one rank), then each rank receives copies of the other ranks'
+ * particles within the reach of its own: each particle's NumberOfNeighbors nearest among the
+ * rank's own lie no closer than its nearest overall, so the nearest overall lie within that
+ * reach. Every particle gets the density of a serial run. The output is the rank's particles
+ * after that redistribution (together, every input particle once).
+ *
  * @sa vtkLevelSetIsosurface vtkSPHInterpolator
  */
 #ifndef vtkParticleDensity_h
@@ -24,6 +33,8 @@
 #include "LevelSetIsosurfaceFiltersModule.h" // for export macro
 #include "vtkLevelSetMacros.h"               // for vtkSetClampWarnMacro
 #include "vtkPointSetAlgorithm.h"
+
+class vtkMultiProcessController;
 
 class LEVELSETISOSURFACEFILTERS_EXPORT vtkParticleDensity : public vtkPointSetAlgorithm
 {
@@ -53,14 +64,21 @@ public:
   void SetKernelToWendlandC2() { this->SetKernel(WENDLAND_C2); }
   ///@}
 
+  ///@{
+  /** The ranks over which the particles are spread. Default: the global controller. */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
-  vtkParticleDensity() = default;
-  ~vtkParticleDensity() override = default;
+  vtkParticleDensity();
+  ~vtkParticleDensity() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfNeighbors = 64;
   int Kernel = CUBIC_SPLINE;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkParticleDensity(const vtkParticleDensity&) = delete;

@@ -5,7 +5,10 @@
 Under MPI each rank reads its own share of a snapshot: the GADGET-4 snapshot in two files, the
 SWIFT snapshot and the Tipsy glass, each read with the ranks' process ids attached and
 gathered on rank 0. Checks that every rank read a part (none the whole), and that together they
-read exactly the particles one rank reads: the same ids (or coordinates) once each."""
+read exactly the particles one rank reads: the same ids (or coordinates) once each.
+Then Particle Density on the glass as read (each rank holding an interleaved share): every
+particle's density must be the SPH summation over its 64 nearest among all the particles
+(cubic spline, support out to the 64th), computed here with scipy."""
 import os
 import sys
 
@@ -48,6 +51,28 @@ for path, count in [(snapshots + "/gadget4_multi.0.hdf5", 50), (swift, 32768), (
           "%s: every rank reads a part, none the whole" % name)
     check(len(all_keys) == count and len(set(all_keys)) == count,
           "%s: together the %d particles, each once" % (name, count))
+
+# Particle Density on the ranks' interleaved shares of the glass, against the summation density
+# over all the particles.
+import numpy as np  # noqa: E402
+from scipy.spatial import cKDTree  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+density = servermanager.Fetch(ParticleDensity(Input=OpenDataFile(glass), NumberOfNeighbors=64))
+x = vtk_to_numpy(density.GetPoints().GetData()).astype(float)
+rho = vtk_to_numpy(density.GetPointData().GetArray("Density"))
+mass_name = density.GetFieldData().GetAbstractArray("MassArray").GetValue(0)
+mass = vtk_to_numpy(density.GetPointData().GetArray(mass_name)).astype(float)
+distance, nearest = cKDTree(x).query(x, k=64)
+H = distance[:, -1]
+q = distance / H[:, None]
+W = 8.0 / (np.pi * H[:, None] ** 3) * np.where(q <= 0.5, 1.0 - 6.0 * q ** 2 + 6.0 * q ** 3,
+                                               2.0 * np.clip(1.0 - q, 0.0, None) ** 3)
+expected = np.sum(mass[nearest] * W, axis=1)
+worst = float(np.max(np.abs(rho / expected - 1.0))) if len(x) == 28721 else float("inf")
+print("Particle Density on %d ranks: %d particles, largest relative difference to the "
+      "summation over all particles %.3g" % (ranks, len(x), worst))
+check(worst <= 1e-9, "Particle Density: every particle's density as from all the particles")
 
 print("%d failures" % len(failures))
 # On success pvbatch must finalise MPI on every rank: no sys.exit. On failure, end the process
