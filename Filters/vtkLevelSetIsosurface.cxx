@@ -369,18 +369,23 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     uncut = isopoints;
   }
   this->KeepPeriodicCell(isopoints);
-  // Under MPI a point near the cut has neighbours that another rank keeps: its splat radius
-  // comes from every point this rank found (in the periodic cell), as in a serial run.
-  const std::vector<double> foundPoints =
-    ranks.Distributed() ? isopoints.Points : std::vector<double>();
-  const std::unique_ptr<lsi::PointCloudIndex> foundIndex =
-    ranks.Distributed() ? lsi::IndexOfPoints(foundPoints) : nullptr;
+  // Under MPI a point near the cut has neighbours that another rank keeps, and a particle near
+  // it may lie nearest to one: the splat radii and the particles' distances to the surface (the
+  // Enclosed table's) come from every point this rank found (in the periodic cell), as in a
+  // serial run.
+  lsi::IsopointSet allFound;
+  if (ranks.Distributed())
+  {
+    allFound.Points = isopoints.Points;
+    allFound.Normals = isopoints.Normals;
+  }
   this->KeepOwnedIsopoints(*geometry, isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
-  // One search index over the final isopoints, for the splat radii and the Enclosed table.
-  const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(isopoints.Points);
-  ok = this->MakeSurfaceOutput(input, *geometry, isopoints, field.get(),
-    foundIndex ? foundIndex.get() : surfaceIndex.get(), surfaceOutput);
+  const lsi::IsopointSet& nearby = ranks.Distributed() ? allFound : isopoints;
+  // One search index over those points, for the splat radii and the Enclosed table.
+  const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(nearby.Points);
+  ok = this->MakeSurfaceOutput(
+    input, *geometry, isopoints, field.get(), surfaceIndex.get(), surfaceOutput);
   if (!ranks.All(ok))
   {
     return false;
@@ -390,7 +395,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
   last.DeepInside = lsi::EnclosedDeepInside();
   const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck && !ranks.Distributed();
-  this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
+  this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, nearby,
     surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
     nullptr);
   this->ParticleOutputSeconds = SecondsSince(particleStart);

@@ -620,6 +620,8 @@ private:
     const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
+  // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to
+  // (under MPI every point the rank found, not only those it keeps).
   // The table's deep inside is kept for quick re-runs (`keep`), or taken from the last run's.
   // `changed`, if given: the only samples whose phi changed since the last run's particles
   // output (its LevelSet array is then copied and updated there).

@@ -400,9 +400,12 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     shownIndex = cutIndex.get();
   }
   this->IsopointSeconds = lsi::SecondsSince(start);
-  // (Under MPI the splat radii come from every point this rank found, as in a full run.)
-  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, *shown, last.Field.get(),
-        ranks.Distributed() ? surfaceIndex.get() : shownIndex, surfaceOutput)))
+  // (Under MPI the splat radii and the Enclosed table's distances come from every point this
+  // rank found, as in a full run.)
+  const lsi::IsopointSet& nearby = ranks.Distributed() ? isopoints : *shown;
+  const lsi::PointCloudIndex* nearbyIndex = ranks.Distributed() ? surfaceIndex.get() : shownIndex;
+  if (!ranks.All(this->MakeSurfaceOutput(
+        work, *geometry, *shown, last.Field.get(), nearbyIndex, surfaceOutput)))
   {
     return false;
   }
@@ -410,7 +413,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
   this->MakeParticleOutputs(particles, work, *geometry, phi, std::vector<vtkIdType>(),
-    last.HalfWidth, *shown, shownIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
+    last.HalfWidth, nearby, nearbyIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
     &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);

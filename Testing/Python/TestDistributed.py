@@ -17,7 +17,7 @@ ranks' parts meet). PARTITION: single-piece (the .vtp as read: rank 0 holds ever
 the default) or distribute-points (ParaView's Distribute Points first).
 Checks: every serial isopoint has a distributed one within half a spacing and the other way
 round, counts within 2%, the same convergence table (iterations, band sizes, first sign
-changes), the same enclosed table (rows, particles; volumes within 0.5%), the same splat radii
+changes), the same enclosed table (rows, particles; volumes within 1e-5), the same splat radii
 (within 1%, but next to points that differ).
 Option seed-move: then the main seed is moved by a sixth of its radius (the same component is
 flooded): every rank must hand on its last outputs (ReusedLastOutputs), which pass the same
@@ -165,7 +165,9 @@ def compare(result, serial):
         relative = np.abs(result["volume"] / serial["volume"] - 1.0).max()
         print("enclosed volumes: %s, serial %s (largest relative difference %.3g)"
               % (result["volume"], serial["volume"], relative))
-        check(relative <= 0.005, "the same enclosed volumes (within 0.5%)")
+        # (Each particle near the surface is weighed by its distance to the nearest surface
+        # point, another rank's too: 1.4e-4 off when a rank measured to its own points only.)
+        check(relative <= 1e-5, "the same enclosed volumes (within 1e-5)")
         check(np.abs(result["particles"] - serial["particles"]).max()
               <= 0.002 * serial["particles"].max(),
               "the same enclosed particle counts (within 0.2%)")
