@@ -19,6 +19,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -56,6 +57,98 @@ double Find(std::map<double, double>& parent, double key)
     key = parent[key] = parent[parent[key]];
   }
   return key;
+}
+
+// In a periodic box a component's centre of mass is the weighted mean of its particles' images
+// nearest to its circular mean (CircularMean): the same whichever particle, thread or rank
+// summed first, and for a component narrower than half the box its centre of mass. It is then
+// moved by whole boxes into the cell the surface is shown in. A second pass over the touching
+// particles, which the first pass named (`keyOfRoot` per root of `parent`).
+template <typename SampleOf, typename Touches, typename Distances>
+void CentresInPeriodicBox(const EnclosedInputs& in, vtkIdType n, const SampleOf& sampleOf,
+  Touches&& touches, const Distances& distances, const std::vector<vtkIdType>& parent,
+  const std::unordered_map<vtkIdType, double>& keyOfRoot, std::map<double, Sums>& byKey)
+{
+  const PeriodicBox& box = in.Box;
+  std::map<double, std::array<double, 3>> anchors;
+  for (auto& entry : byKey)
+  {
+    CircularMean(box, entry.second.Circular, anchors[entry.first].data());
+  }
+  // The moments about the anchors, in fixed chunks (as the first pass), added in chunk order.
+  constexpr vtkIdType ChunkSize = 32768;
+  const vtkIdType chunks = (n + ChunkSize - 1) / ChunkSize;
+  std::vector<std::map<double, std::array<double, 3>>> chunkMoments(
+    static_cast<std::size_t>(chunks));
+  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType firstChunk, vtkIdType lastChunk) {
+    for (vtkIdType chunk = firstChunk; chunk < lastChunk; ++chunk)
+    {
+      auto& moments = chunkMoments[static_cast<std::size_t>(chunk)];
+      vtkIdType lastRoot = -1;
+      std::array<double, 3>* moment = nullptr;
+      const std::array<double, 3>* anchor = nullptr;
+      const vtkIdType end = std::min(n, (chunk + 1) * ChunkSize);
+      for (vtkIdType p = chunk * ChunkSize; p < end; ++p)
+      {
+        const std::size_t i = sampleOf[p];
+        if (!touches(i))
+        {
+          continue;
+        }
+        if (parent[p] != lastRoot)
+        {
+          lastRoot = parent[p];
+          const double key = keyOfRoot.at(lastRoot);
+          moment = &moments.emplace(key, std::array<double, 3>{ 0.0, 0.0, 0.0 }).first->second;
+          anchor = &anchors.at(key);
+        }
+        const double weight = CentreWeight(in, p, i, distances[i]);
+        const double* x = in.Geometry->Position(i);
+        for (int d = 0; d < 3; ++d)
+        {
+          double offset = x[d] - (*anchor)[d];
+          offset -= box.Size[d] * std::round(offset / box.Size[d]);
+          (*moment)[d] += weight * offset;
+        }
+      }
+    }
+  });
+  std::vector<double> packed; // key and moment, per component part
+  for (const auto& moments : chunkMoments)
+  {
+    for (const auto& entry : moments)
+    {
+      packed.insert(
+        packed.end(), { entry.first, entry.second[0], entry.second[1], entry.second[2] });
+    }
+  }
+  in.Ranks->GatherAll(packed);
+  std::map<double, std::array<double, 3>> total;
+  for (std::size_t k = 0; k + 4 <= packed.size(); k += 4)
+  {
+    std::array<double, 3>& moment = total.emplace(packed[k], std::array<double, 3>{}).first->second;
+    for (int d = 0; d < 3; ++d)
+    {
+      moment[d] += packed[k + 1 + d];
+    }
+  }
+  for (auto& entry : byKey)
+  {
+    Sums& c = entry.second;
+    const std::array<double, 3>& anchor = anchors.at(entry.first);
+    const auto found = total.find(entry.first);
+    for (int d = 0; d < 3; ++d)
+    {
+      c.Reference[d] = anchor[d];
+      c.Moment[d] = found != total.end() ? found->second[d] : 0.0;
+      if (c.Weight > 0.0) // into the shown cell: [low, low + Size)
+      {
+        const double low = in.CellCenter ? in.CellCenter[d] - 0.5 * box.Size[d] : box.Origin[d];
+        const double centre = anchor[d] + c.Moment[d] / c.Weight;
+        c.Reference[d] -= box.Size[d] * std::floor((centre - low) / box.Size[d]);
+      }
+    }
+  }
 }
 } // namespace
 
@@ -345,6 +438,15 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   for (std::size_t k = 0; k + record <= packed.size(); k += record)
   {
     byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)), in.Box);
+  }
+  if (in.Box.Enabled)
+  {
+    std::unordered_map<vtkIdType, double> keyOfRoot;
+    for (const vtkIdType root : rootOfSums)
+    {
+      keyOfRoot[root] = ranks.Distributed() ? Find(joined, rankKey + root) : root;
+    }
+    CentresInPeriodicBox(in, n, sampleOf, touches, distances, parent, keyOfRoot, byKey);
   }
   return TableOfComponents(byKey, arrays, components, in.Mass != nullptr);
 }

@@ -67,6 +67,7 @@ struct EnclosedInputs
   vtkIdType ParticleCount = 0;        // the real ones: ids below this
   std::vector<vtkIdType> OriginalIds; // per sample: the real particle it is (empty: Order)
   PeriodicBox Box;                    // for centres of mass across faces
+  const double* CellCenter = nullptr; // the cell the centres are shown in (null: the box's own)
   vtkDataArray* Mass = nullptr;       // none: volumes from the spacing, no Mass column
   vtkDataArray* Density = nullptr;    // with Mass: volumes m / rho
   // The surface's points and unit normals (3 doubles each, normals out of the inside): the

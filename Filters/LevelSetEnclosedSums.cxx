@@ -56,6 +56,10 @@ void Sums::Add(const Sums& other, const PeriodicBox& box)
     }
     this->Moment[d] += other.Moment[d] + other.Weight * shift;
   }
+  for (int k = 0; k < 6; ++k)
+  {
+    this->Circular[k] += other.Circular[k];
+  }
   for (std::size_t k = 0; k < this->Means.size(); ++k)
   {
     this->Means[k] += other.Means[k];
@@ -67,7 +71,8 @@ void Pack(double key, const Sums& c, std::vector<double>& out)
   out.insert(out.end(),
     { key, static_cast<double>(c.Particles), c.Mass, c.Volume, c.Area, c.Weight, c.Moment[0],
       c.Moment[1], c.Moment[2], c.Reference[0], c.Reference[1], c.Reference[2],
-      c.Inside ? 1.0 : 0.0 });
+      c.Inside ? 1.0 : 0.0, c.Circular[0], c.Circular[1], c.Circular[2], c.Circular[3],
+      c.Circular[4], c.Circular[5] });
   out.insert(out.end(), c.Means.begin(), c.Means.end());
 }
 
@@ -82,22 +87,31 @@ Sums Unpack(const double* in, std::size_t means)
   std::copy(in + 6, in + 9, c.Moment);
   std::copy(in + 9, in + 12, c.Reference);
   c.Inside = in[12] > 0.0;
+  std::copy(in + 13, in + 19, c.Circular);
   c.HasReference = true;
   c.Means.assign(in + FixedFields, in + FixedFields + means);
   return c;
 }
 
-void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
-  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
+namespace
+{
+// A particle's mass, volume, part inside (the step) and the step's derivative.
+struct Measures
+{
+  double Mass = 0.0, Volume = 0.0, Step = 0.0, StepDerivative = 0.0;
+};
+
+Measures MeasuresOf(const EnclosedInputs& in, vtkIdType p, std::size_t i, double signedDistance)
 {
   const Neighborhoods& geometry = *in.Geometry;
-  const std::vector<double>& phi = *in.Phi;
   const double s = geometry.RadiusOf(i); // the shell's half width
-  const double h = Step(signedDistance, s), delta = StepDerivative(signedDistance, s);
-  double mass = 0.0, rho = 0.0;
+  Measures m;
+  m.Step = Step(signedDistance, s);
+  m.StepDerivative = StepDerivative(signedDistance, s);
+  double rho = 0.0;
   if (in.Mass)
   {
-    in.Mass->GetTuple(p, &mass);
+    in.Mass->GetTuple(p, &m.Mass);
   }
   if (in.Density)
   {
@@ -105,15 +119,45 @@ void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arr
   }
   const double radius = geometry.RadiusOf(i);
   const int neighbors = geometry.Stride - 1;
-  const double volume = in.Mass && in.Density && rho > 0.0
-    ? mass / rho
+  m.Volume = in.Mass && in.Density && rho > 0.0
+    ? m.Mass / rho
     : 4.0 / 3.0 * Pi * radius * radius * radius / neighbors;
+  return m;
+}
+
+double WeightOf(const EnclosedInputs& in, const Measures& m)
+{
+  return (in.Mass ? m.Mass : m.Volume) * m.Step;
+}
+} // namespace
+
+double CentreWeight(const EnclosedInputs& in, vtkIdType p, std::size_t i, double signedDistance)
+{
+  return WeightOf(in, MeasuresOf(in, p, i, signedDistance));
+}
+
+void CircularMean(const PeriodicBox& box, const double circular[6], double mean[3])
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    double turn = std::atan2(circular[2 * d + 1], circular[2 * d]) / (2.0 * Pi); // (-1/2, 1/2]
+    turn -= std::floor(turn);
+    mean[d] = box.Origin[d] + box.Size[d] * turn;
+  }
+}
+
+void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
+  vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const std::vector<double>& phi = *in.Phi;
+  const Measures m = MeasuresOf(in, p, i, signedDistance);
   c.Inside = c.Inside || phi[i] > 0.0;
   c.Particles += phi[i] > 0.0 ? 1 : 0;
-  c.Mass += mass * h;
-  c.Volume += volume * h;
-  c.Area += volume * delta;
-  const double weight = (in.Mass ? mass : volume) * h;
+  c.Mass += m.Mass * m.Step;
+  c.Volume += m.Volume * m.Step;
+  c.Area += m.Volume * m.StepDerivative;
+  const double weight = WeightOf(in, m);
   c.Weight += weight;
   const double* x = geometry.Position(i);
   if (!c.HasReference)
@@ -121,6 +165,15 @@ void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arr
     std::copy(x, x + 3, c.Reference);
     c.HasReference = true;
     c.Means.assign(static_cast<std::size_t>(components), 0.0);
+  }
+  if (in.Box.Enabled)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      const double angle = 2.0 * Pi * (x[d] - in.Box.Origin[d]) / in.Box.Size[d];
+      c.Circular[2 * d] += weight * std::cos(angle);
+      c.Circular[2 * d + 1] += weight * std::sin(angle);
+    }
   }
   for (int d = 0; d < 3; ++d)
   {

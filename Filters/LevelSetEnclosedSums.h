@@ -91,6 +91,9 @@ struct Sums
   double Moment[3] = { 0.0, 0.0, 0.0 };
   double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
   bool HasReference = false;
+  // In a periodic box, per axis the weighted sums of cos and sin of the position's angle round
+  // the box: sums in any order, whose direction is the component's circular mean (CircularMean).
+  double Circular[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   std::vector<double> Means; // weighted sums of every array component
   bool Inside = false;       // holds a particle with phi > 0
 
@@ -98,7 +101,7 @@ struct Sums
   void Add(const Sums& other, const PeriodicBox& box);
 };
 
-constexpr int FixedFields = 13; // a packed Sums: key, then the numbers of Sums before Means
+constexpr int FixedFields = 19; // a packed Sums: key, then the numbers of Sums before Means
 
 /// Appends `c` under `key` to `out` (FixedFields numbers, then the means).
 void Pack(double key, const Sums& c, std::vector<double>& out);
@@ -108,6 +111,15 @@ Sums Unpack(const double* in, std::size_t means);
 /// The arrays whose means the table gives: every named numeric point array with a value per
 /// particle (all their components, `components` in all).
 std::vector<vtkDataArray*> ArraysToAverage(const EnclosedInputs& in, int& components);
+
+/// The weight of particle p (sample i, at `signedDistance` from the surface) in its
+/// component's centre and means: its mass (or volume) times its part inside.
+double CentreWeight(const EnclosedInputs& in, vtkIdType p, std::size_t i, double signedDistance);
+
+/// A position on each axis of the periodic box whose angle round the box is that of the
+/// circular sums `circular` (Sums::Circular), in [Origin, Origin + Size): the same whatever
+/// order the particles were summed in.
+void CircularMean(const PeriodicBox& box, const double circular[6], double mean[3]);
 
 /// Adds particle p (sample i, at signed distance `signedDistance` from the surface) to the sums
 /// of its component. `tuple` is scratch space (GetTuple into a buffer is safe from threads).

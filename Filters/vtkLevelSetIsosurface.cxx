@@ -498,6 +498,7 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.Particles = input;
   inside.ParticleCount = this->Internal->OriginalCount;
   inside.Box = this->Internal->Box;
+  inside.CellCenter = this->PeriodicOutput == AROUND_SEED ? this->Internal->SeedCenter : nullptr;
   inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
   inside.SurfacePoints = &isopoints.Points;
