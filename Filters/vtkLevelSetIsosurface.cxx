@@ -385,7 +385,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // One search index over those points, for the splat radii and the Enclosed table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(nearby.Points);
   ok = this->MakeSurfaceOutput(
-    input, *geometry, isopoints, field.get(), surfaceIndex.get(), surfaceOutput);
+    input, *geometry, isopoints, nearby.Points, field.get(), surfaceIndex.get(), surfaceOutput);
   if (!ranks.All(ok))
   {
     return false;
@@ -1229,7 +1229,8 @@ lsi::SPHFieldRequest vtkLevelSetIsosurface::SPHRequest() const
 }
 
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
-  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints, const lsi::SPHField* field,
+  const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
+  const std::vector<double>& nearbyPoints, const lsi::SPHField* field,
   const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output)
 {
   const auto start = Clock::now();
@@ -1240,12 +1241,15 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const Internals& internal = *this->Internal;
   const bool aroundSeed = internal.Box.Enabled && this->PeriodicOutput == AROUND_SEED;
   lsi::IsopointSet moved;
-  std::unique_ptr<lsi::PointCloudIndex> movedIndex;
+  std::vector<double> movedNearby; // the splat radii's neighbours (under MPI every point found)
+  std::unique_ptr<lsi::PointCloudIndex> movedIndex; // over movedNearby, which must outlive it
   if (aroundSeed)
   {
     moved = isopoints;
     lsi::IntoCellAround(moved.Points, internal.Box, internal.SeedCenter);
-    movedIndex = lsi::IndexOfPoints(moved.Points); // the splat radii's neighbours, moved
+    movedNearby = nearbyPoints;
+    lsi::IntoCellAround(movedNearby, internal.Box, internal.SeedCenter);
+    movedIndex = lsi::IndexOfPoints(movedNearby);
   }
   vtkNew<vtkPolyData> surface;
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, aroundSeed ? moved : isopoints,

@@ -614,10 +614,12 @@ private:
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
     const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);
-  // (`surfaceIndex`: a search index over the isopoints, or null when there are none.)
+  // (`nearbyPoints`: the points whose distances set the splat radii, the isopoints or, under
+  // MPI, every point the rank found; `surfaceIndex`: a search index over them, or null when
+  // there are none.)
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const lsi::IsopointSet& isopoints, const lsi::SPHField* field,
-    const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output);
+    const lsi::IsopointSet& isopoints, const std::vector<double>& nearbyPoints,
+    const lsi::SPHField* field, const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
   // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to

@@ -405,7 +405,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const lsi::IsopointSet& nearby = ranks.Distributed() ? isopoints : *shown;
   const lsi::PointCloudIndex* nearbyIndex = ranks.Distributed() ? surfaceIndex.get() : shownIndex;
   if (!ranks.All(this->MakeSurfaceOutput(
-        work, *geometry, *shown, last.Field.get(), nearbyIndex, surfaceOutput)))
+        work, *geometry, *shown, nearby.Points, last.Field.get(), nearbyIndex, surfaceOutput)))
   {
     return false;
   }

@@ -26,7 +26,9 @@ method runs again and gives fewer isopoints.
 Option iso-change (with QuickIsoValueChanges on): then the isovalue rises until 2% fewer
 particles lie above it (the serial reference run chooses it and slides too): every rank must
 slide its surface (SlidLastSurface), and the result passes the same checks against the serial
-slid surface."""
+slid surface.
+Option around-seed (a periodic case): PeriodicOutput "around the seed" (the points moved into
+the periodic cell centred on the seed; their splat radii from points moved alike)."""
 import sys
 import time
 
@@ -75,6 +77,8 @@ surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", "f"], IsoValue=iso
                              SeedCenter=main[:3], SeedRadius=main[3], AdditionalSeeds=more,
                              OutputType="Isopoints",
                              Initialization=0 if "seed-spheres" in options else 1)
+if "around-seed" in options:
+    surface.PeriodicOutput = 1  # the surface in the periodic cell centred on the seed
 slide = "iso-change" in options
 if slide:
     surface.QuickIsoValueChanges = 1
