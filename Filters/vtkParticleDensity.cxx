@@ -143,7 +143,7 @@ int vtkParticleDensity::RequestData(
       vtkErrorMacro(<< problem);
     }
     output->Initialize();
-    return 0;
+    return reports ? 0 : 1; // (the other ranks' executives would report it again)
   }
   const bool hasMasses = MassArray(input->GetPointData()) != nullptr;
   if (ranks.Max(input->GetNumberOfPoints() > 0 && !hasMasses ? 1.0 : 0.0) > 0.0 && reports)
