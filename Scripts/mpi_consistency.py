@@ -22,15 +22,13 @@ import numpy as np
 
 def run(plugin, data, out, distribute):
     from paraview import servermanager
-    from paraview.simple import Calculator, Delete, DistributePoints, LoadPlugin, OpenDataFile
+    from paraview.simple import Calculator, Delete, DistributePoints, LoadPlugin
+    from snapshot_sources import open_snapshot
     from vtkmodules.util.numpy_support import vtk_to_numpy
     LoadPlugin(plugin, ns=globals())
 
     def read(path, types):
-        reader = OpenDataFile(os.path.join(data, path))
-        reader.UpdatePipelineInformation()
-        reader.ParticleTypes = types
-        return reader
+        return open_snapshot(data, path, types)
 
     def summed(path, types, k):
         return ParticleDensity(Input=read(path, types), NumberOfNeighbors=k)  # noqa: F821

@@ -24,7 +24,8 @@ import time
 
 import numpy as np
 from paraview import servermanager
-from paraview.simple import Calculator, Delete, LoadPlugin, OpenDataFile
+from paraview.simple import Calculator, Delete, LoadPlugin
+from snapshot_sources import open_snapshot
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 
@@ -41,16 +42,10 @@ def main():
     LoadPlugin(plugin, ns=globals())
 
     def hdf5(path, types):
-        r = OpenDataFile(os.path.join(data, path))
-        r.UpdatePipelineInformation()
-        r.ParticleTypes = types
-        return r
+        return open_snapshot(data, path, types)
 
     def tipsy_with_density(path, types):
-        r = OpenDataFile(os.path.join(data, path))
-        r.UpdatePipelineInformation()
-        r.ParticleTypes = types
-        return ParticleDensity(Input=r, NumberOfNeighbors=64)
+        return ParticleDensity(Input=open_snapshot(data, path, types), NumberOfNeighbors=64)
 
     # name: (source maker, scalar (None: the density the source marks), isovalue rule)
     quantile = lambda q: (lambda v: float(np.quantile(v, q)))
