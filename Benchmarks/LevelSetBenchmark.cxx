@@ -10,6 +10,7 @@
 #include "vtkLevelSetIsosurface.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -42,6 +43,7 @@ struct Options
   bool Completion = true;
   bool CompareThreads = false;
   bool PrintTable = false;
+  bool Periodic = false; // the case's box as a periodic box (its images, the periodic route)
   std::string WriteVtp;
   // Explicit overrides (negative: keep the filter's default or the paper's value).
   double Epsilon = -1, CurvatureEpsilon = -1, TimeStep = -1, CurvatureWeight = -1;
@@ -82,6 +84,8 @@ bool Parse(int argc, char* argv[], Options& o)
       o.Completion = false;
     else if (a == "--compare-threads")
       o.CompareThreads = true;
+    else if (a == "--periodic")
+      o.Periodic = true;
     else if (a == "--print-table")
       o.PrintTable = true;
     else if (a == "--write-vtp")
@@ -139,11 +143,20 @@ int main(int argc, char* argv[])
   {
     std::cerr
       << "usage: LevelSetBenchmark [--case one-component|multi-component|adaptive-noisy|sphere] "
-         "[--samples N] [--paper-parameters] [--scheme 0|1] [--threads T] ...\n";
+         "[--samples N] [--paper-parameters] [--scheme 0|1] [--threads T] [--periodic] ...\n";
     return EXIT_FAILURE;
   }
   const std::vector<Eigen::Vector3d> samples = c->Samples(o.Samples, o.Seed);
   vtkSmartPointer<vtkPolyData> particles = MakeParticles(*c, samples);
+  if (o.Periodic) // "BoxSize" as the HDF5 reader passes it: the box [BoxMin, BoxMax)
+  {
+    vtkNew<vtkDoubleArray> size;
+    size->SetName("BoxSize");
+    size->SetNumberOfComponents(3);
+    const Eigen::Vector3d extent = c->BoxMax - c->BoxMin;
+    size->InsertNextTuple(extent.data());
+    particles->GetFieldData()->AddArray(size);
+  }
   const double spacing = c->SurfaceSpacing(o.Samples);
 
   vtkNew<vtkLevelSetIsosurface> filter;
