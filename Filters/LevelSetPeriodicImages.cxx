@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetPeriodicImages.h"
 
+#include "LevelSetHaloReach.h"
+#include "LevelSetParallel.h"
+
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -171,25 +174,39 @@ std::vector<vtkIdType> OriginalIds(
 std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox& box,
   double margin, vtkIdType originalCount, const std::vector<double>& supports, double& needed)
 {
+  // The room a sample's reach has before the images end, on axis d.
+  auto roomOf = [&](std::size_t i, int d) {
+    const double x = geometry.Position(i)[d] - box.Origin[d];
+    // The images end margin * L beyond each face; the neighbourhood must end before.
+    return std::min(x, box.Size[d] - x) + margin * box.Size[d];
+  };
+  auto support = [&](std::size_t i) { return supports.empty() ? 0.0 : supports[i]; };
+  // Most samples lie too far inside for their reach to pass the images' edge: an upper bound on
+  // each radius without a search (RadiusBounds) says which, and only the others' neighbour
+  // lists are computed (in parallel), not every sample's.
+  const std::vector<double> bounds = RadiusBounds(geometry);
+  const std::vector<std::uint32_t> near =
+    IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
+      if (geometry.Order[i] >= originalCount)
+      {
+        return false;
+      }
+      const double reach = std::max(bounds.empty() ? HUGE_VAL : bounds[i], support(i));
+      return reach > std::min({ roomOf(i, 0), roomOf(i, 1), roomOf(i, 2) });
+    });
+  geometry.EnsureNeighbors(near);
   std::size_t count = 0;
   needed = margin;
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  for (const std::uint32_t i : near)
   {
-    if (geometry.Order[i] >= originalCount)
-    {
-      continue;
-    }
-    const double reach = std::max(geometry.RadiusOf(i), supports.empty() ? 0.0 : supports[i]);
+    const double reach = std::max(geometry.RadiusOf(i), support(i));
     bool cut = false;
     for (int d = 0; d < 3; ++d)
     {
-      const double x = geometry.Position(i)[d] - box.Origin[d];
-      // The images end margin * L beyond each face; the neighbourhood must end before.
-      const double room = std::min(x, box.Size[d] - x) + margin * box.Size[d];
-      if (reach > room)
+      if (reach > roomOf(i, d))
       {
         cut = true;
-        needed = std::max(needed, (reach - std::min(x, box.Size[d] - x)) / box.Size[d]);
+        needed = std::max(needed, (reach - (roomOf(i, d) - margin * box.Size[d])) / box.Size[d]);
       }
     }
     count += cut ? 1 : 0;

@@ -846,14 +846,9 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::FindNeighborhoods(
     vtkErrorMacro(<< problem);
     return nullptr;
   }
-  // A periodic run uses every list (the periodic margin's check): computed here, in parallel.
-  // Otherwise lists are computed as the method visits them, as in a serial run; under MPI also
-  // those that the halo's reach (HaloReachBox) and the ghosts it cuts (Distribution::Attach)
-  // need.
-  if (this->Internal->Box.Enabled && !geometry->EnsureAllNeighbors(this->Stage(AllListsStage)))
-  {
-    return nullptr;
-  }
+  // Lists are computed as the method visits them; under MPI also those that the halo's reach
+  // (HaloReachBox) and the ghosts it cuts (Distribution::Attach) need, and in a periodic box
+  // those of the samples near the images' edge (SamplesBeyondImages).
   return this->ProgressOrAbort(NeighborStage[1]) ? nullptr : geometry;
 }
 
