@@ -388,7 +388,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
         sums.emplace_back();
         rootOfSums.push_back(chunk.Roots[k]);
       }
-      sums[found.first->second].Add(chunk.Parts[k], in.Box);
+      sums[found.first->second].Add(chunk.Parts[k]);
     }
   }
 
@@ -437,7 +437,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   const std::size_t record = FixedFields + static_cast<std::size_t>(components);
   for (std::size_t k = 0; k + record <= packed.size(); k += record)
   {
-    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)), in.Box);
+    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)));
   }
   if (in.Box.Enabled)
   {

@@ -73,7 +73,7 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, const std::vector<vtkDat
   {
     for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
     {
-      sums[chunk.Groups[k]].Add(chunk.Parts[k], in.Box);
+      sums[chunk.Groups[k]].Add(chunk.Parts[k]);
     }
   }
   return sums;
@@ -265,7 +265,7 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
     [&](std::size_t b) { return componentOf[groups + b]; }, distance);
   for (std::size_t g = 0; g < groups; ++g)
   {
-    sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components), in.Box);
+    sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components));
   }
   std::map<double, Sums> byKey;
   for (std::size_t c = 0; c < sums.size(); ++c)

@@ -30,7 +30,7 @@ Links::Links(std::size_t n)
   });
 }
 
-void Sums::Add(const Sums& other, const PeriodicBox& box)
+void Sums::Add(const Sums& other)
 {
   if (!other.HasReference)
   {
@@ -49,12 +49,7 @@ void Sums::Add(const Sums& other, const PeriodicBox& box)
   this->Inside = this->Inside || other.Inside;
   for (int d = 0; d < 3; ++d)
   {
-    double shift = other.Reference[d] - this->Reference[d];
-    if (box.Enabled)
-    {
-      shift -= box.Size[d] * std::round(shift / box.Size[d]);
-    }
-    this->Moment[d] += other.Moment[d] + other.Weight * shift;
+    this->Moment[d] += other.Moment[d] + other.Weight * (other.Reference[d] - this->Reference[d]);
   }
   for (int k = 0; k < 6; ++k)
   {
@@ -177,12 +172,7 @@ void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arr
   }
   for (int d = 0; d < 3; ++d)
   {
-    double offset = x[d] - c.Reference[d];
-    if (in.Box.Enabled) // the nearest image of the reference: across a face, not the box
-    {
-      offset -= in.Box.Size[d] * std::round(offset / in.Box.Size[d]);
-    }
-    c.Moment[d] += weight * offset;
+    c.Moment[d] += weight * (x[d] - c.Reference[d]);
   }
   int k = 0;
   for (vtkDataArray* array : arrays)

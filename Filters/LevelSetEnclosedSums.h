@@ -88,8 +88,10 @@ struct Sums
 {
   vtkIdType Particles = 0;
   double Mass = 0.0, Volume = 0.0, Area = 0.0, Weight = 0.0;
+  // The weighted positions, taken relative to the first one (in a periodic box the table's
+  // centres come from a second pass instead: CentresInPeriodicBox in LevelSetEnclosed.cxx).
   double Moment[3] = { 0.0, 0.0, 0.0 };
-  double Reference[3] = { 0.0, 0.0, 0.0 }; // positions are taken relative to the first one
+  double Reference[3] = { 0.0, 0.0, 0.0 };
   bool HasReference = false;
   // In a periodic box, per axis the weighted sums of cos and sin of the position's angle round
   // the box: sums in any order, whose direction is the component's circular mean (CircularMean).
@@ -98,7 +100,7 @@ struct Sums
   bool Inside = false;       // holds a particle with phi > 0
 
   /// Adds another part of the same component (its moment taken about this reference).
-  void Add(const Sums& other, const PeriodicBox& box);
+  void Add(const Sums& other);
 };
 
 constexpr int FixedFields = 19; // a packed Sums: key, then the numbers of Sums before Means

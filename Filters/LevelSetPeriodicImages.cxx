@@ -182,17 +182,16 @@ std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox
   };
   auto support = [&](std::size_t i) { return supports.empty() ? 0.0 : supports[i]; };
   // Most samples lie too far inside for their reach to pass the images' edge: an upper bound on
-  // each radius without a search (RadiusBounds) says which, and only the others' neighbour
+  // each radius without a search (RadiusBound) says which, and only the others' neighbour
   // lists are computed (in parallel), not every sample's.
-  const std::vector<double> bounds = RadiusBounds(geometry);
   const std::vector<std::uint32_t> near =
     IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
       if (geometry.Order[i] >= originalCount)
       {
         return false;
       }
-      const double reach = std::max(bounds.empty() ? HUGE_VAL : bounds[i], support(i));
-      return reach > std::min({ roomOf(i, 0), roomOf(i, 1), roomOf(i, 2) });
+      const double room = std::min({ roomOf(i, 0), roomOf(i, 1), roomOf(i, 2) });
+      return support(i) > room || RadiusBound(geometry, i) > room;
     });
   geometry.EnsureNeighbors(near);
   std::size_t count = 0;

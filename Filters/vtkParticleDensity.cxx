@@ -44,21 +44,23 @@ vtkDataArray* MassArray(vtkPointData* data)
   return nullptr;
 }
 
-// The points' coordinates, xyz per point; `problem` names the first that is NaN or infinite.
-std::vector<double> Coordinates(vtkPointSet* points, std::string& problem)
+// Appends the coordinates of `points` from point `first` on to `xyz` (xyz per point); `problem`
+// names the first that is NaN or infinite.
+void AppendCoordinates(
+  vtkPointSet* points, vtkIdType first, std::vector<double>& xyz, std::string& problem)
 {
   const vtkIdType n = points->GetNumberOfPoints();
-  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
+  const std::size_t start = xyz.size();
+  xyz.resize(start + 3 * static_cast<std::size_t>(std::max<vtkIdType>(0, n - first)));
+  for (vtkIdType i = first; i < n; ++i)
   {
-    double* x = &xyz[3 * i];
+    double* x = &xyz[start + 3 * static_cast<std::size_t>(i - first)];
     points->GetPoint(i, x);
     if (problem.empty() && !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
     {
       problem = "Point " + std::to_string(i) + " has a NaN or infinite coordinate.";
     }
   }
-  return xyz;
 }
 
 // The bounds of the balls around the particles out to their k-th nearest among themselves
@@ -131,7 +133,8 @@ int vtkParticleDensity::RequestData(
   lsi::Distribution ranks(this->Controller);
   const bool reports = ranks.Rank == 0;
   std::string problem;
-  std::vector<double> xyz = Coordinates(input, problem);
+  std::vector<double> xyz;
+  AppendCoordinates(input, 0, xyz, problem);
   problem = ranks.FirstProblem(problem);
   const double total = ranks.Sum(static_cast<double>(input->GetNumberOfPoints()));
   if (problem.empty() && total < this->NumberOfNeighbors)
@@ -163,12 +166,13 @@ int vtkParticleDensity::RequestData(
     std::string report;
     owned = ranks.Balanced(input, report);
     vtkDebugMacro(<< report);
-    xyz = Coordinates(owned, problem);
+    xyz.clear();
+    AppendCoordinates(owned, 0, xyz, problem);
     double box[6];
     NeighborReachBox(xyz, k, box);
     std::vector<double> unused(static_cast<std::size_t>(owned->GetNumberOfPoints()), 0.0);
     work = ranks.WithGhosts(owned, box, std::vector<double>(), unused);
-    xyz = Coordinates(work, problem);
+    AppendCoordinates(work, owned->GetNumberOfPoints(), xyz, problem); // the ghosts, after
   }
   const vtkIdType n = owned->GetNumberOfPoints();
   const std::size_t all = xyz.size() / 3;
