@@ -8,8 +8,9 @@
 //     move (by half its radius, inside the same component) and a CurvatureWeight change; the
 //     grid route re-contours its kept grid (isovalue) or only re-connects (seed); each re-run,
 //     of either route, the fastest of 3 from the same state;
-//   - the same isovalue changes with QuickIsoValueChanges on (whether the surface slid, its
-//     mean distance to the exact new level and the full method's there);
+//   - the same isovalue changes with QuickIsoValueChanges on, and one of 10% (whether the
+//     surface slid; its points, their mean distance to the exact new level and the largest gap
+//     from that level's points to them, and the full method's);
 //   - the whole filter with 1 and with 2 threads;
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
@@ -299,7 +300,8 @@ int main(int argc, char* argv[])
   const double surfaceSpacing = c.SurfaceSpacing(o.Samples);
   // Isovalue changes that move 2% and 20% of the samples inside the surface across it (a
   // small and a large step): unit-free, and meaningful whatever the tails of the values.
-  const std::vector<double> isoValues = IsoValuesAbove(particles, c.IsoValue, { 0.02, 0.2 });
+  // (And one between, for the quick changes: whether it slides.)
+  const std::vector<double> isoValues = IsoValuesAbove(particles, c.IsoValue, { 0.02, 0.2, 0.1 });
   report.Add("samples", static_cast<double>(o.Samples));
   report.Add("threads", o.Threads);
 
@@ -329,6 +331,7 @@ int main(int argc, char* argv[])
   };
   const double gridIsoSmall = gridReContour(isoValues[0]);
   const double gridIsoLarge = gridReContour(isoValues[1]);
+  const double gridIsoMedium = gridReContour(isoValues[2]);
   grid.Contour(c.IsoValue);
   double gridSeed = HUGE_VAL;
   for (int r = 0; r < ReRunRepeats; ++r)
@@ -344,6 +347,7 @@ int main(int argc, char* argv[])
   report.Add("grid_route.mean_distance_spacings", gridMetrics.MeanDistance);
   report.Add("grid_route.isovalue_change_small_s", gridIsoSmall);
   report.Add("grid_route.isovalue_change_large_s", gridIsoLarge);
+  report.Add("grid_route.isovalue_change_medium_s", gridIsoMedium);
   report.Add("grid_route.seed_move_s", gridSeed);
 
   // This filter: first run, then the same changes, each from the first run's settings.
@@ -395,10 +399,20 @@ int main(int argc, char* argv[])
   // level when the checks allow), each from a full run at the case's isovalue; the mean
   // distance of the slid points to the exact new level, and the full method's there.
   filter->SetQuickIsoValueChanges(true);
-  std::array<double, 2> quick{}, quickDistance{}, methodDistance{};
-  std::array<bool, 2> slid{};
-  std::array<std::array<double, 8>, 2> quickStages{};
-  for (std::size_t k = 0; k < 2; ++k)
+  std::array<double, 3> quick{};
+  std::array<SurfaceMetrics, 3> quickMetrics, methodMetrics;
+  // The output's isopoints against the exact surface at `isoValue`: their distance to it, and
+  // how far its points (near samples, projected) are from an isopoint.
+  auto measureAt = [&](double isoValue) {
+    OneComponentCase atIsoValue = c;
+    atIsoValue.IsoValue = isoValue;
+    std::vector<double> points, normals;
+    IsopointArrays(filter->GetOutput(0), points, normals);
+    return MeasureSurface(atIsoValue, points, normals, samples, surfaceSpacing);
+  };
+  std::array<bool, 3> slid{};
+  std::array<std::array<double, 8>, 3> quickStages{};
+  for (std::size_t k = 0; k < 3; ++k)
   {
     // Each from the full method at the case's isovalue (Modified: not a slide back), which keeps
     // what a slide needs.
@@ -409,10 +423,10 @@ int main(int argc, char* argv[])
       },
       [&]() { filter->SetIsoValue(isoValues[k]); }, quickStages[k]);
     slid[k] = filter->GetSlidLastSurface();
-    quickDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
+    quickMetrics[k] = measureAt(isoValues[k]);
     filter->SetQuickIsoValueChanges(false); // the full method at the new isovalue, to compare
     TimedUpdate(filter);
-    methodDistance[k] = MeanLevelDistance(c, filter->GetOutput(0), isoValues[k]);
+    methodMetrics[k] = measureAt(isoValues[k]);
     filter->SetQuickIsoValueChanges(true);
   }
   filter->SetQuickIsoValueChanges(false);
@@ -424,15 +438,25 @@ int main(int argc, char* argv[])
   report.Add("level_set.seed_move_s", seed);
   report.Add("level_set.curvature_weight_change_s", curvature);
   report.Add("level_set.level_distance_spacings", fullDistance / surfaceSpacing);
-  const char* sizes[2] = { "small", "large" };
-  for (std::size_t k = 0; k < 2; ++k)
+  const char* sizes[3] = { "small", "large", "medium" };
+  for (std::size_t k = 0; k < 3; ++k)
   {
     const std::string prefix = std::string("level_set.quick_isovalue_change_") + sizes[k];
     report.Add(prefix + "_s", quick[k]);
     report.Add(prefix + ".slid", slid[k] ? 1.0 : 0.0);
     AddStages(report, prefix + ".", quickStages[k]);
-    report.Add(prefix + ".level_distance_spacings", quickDistance[k] / surfaceSpacing);
-    report.Add(prefix + ".method_level_distance_spacings", methodDistance[k] / surfaceSpacing);
+    report.Add(prefix + ".level_distance_spacings", quickMetrics[k].MeanDistance / surfaceSpacing);
+    report.Add(
+      prefix + ".method_level_distance_spacings", methodMetrics[k].MeanDistance / surfaceSpacing);
+    report.Add(prefix + ".surface_distance_spacings",
+      quickMetrics[k].MeanDistanceOverSurface / surfaceSpacing);
+    report.Add(prefix + ".method_surface_distance_spacings",
+      methodMetrics[k].MeanDistanceOverSurface / surfaceSpacing);
+    report.Add(prefix + ".isopoints", static_cast<double>(quickMetrics[k].Isopoints));
+    report.Add(prefix + ".method_isopoints", static_cast<double>(methodMetrics[k].Isopoints));
+    report.Add(prefix + ".largest_gap_spacings", quickMetrics[k].MaxGapToIsopoint / surfaceSpacing);
+    report.Add(
+      prefix + ".method_largest_gap_spacings", methodMetrics[k].MaxGapToIsopoint / surfaceSpacing);
   }
 
   // Threads: fresh filters on the same particles, the fastest of 3 runs each.
@@ -478,6 +502,7 @@ int main(int argc, char* argv[])
   report.Add("target.isovalue_change_small_over_grid (<= 5)", isoSmall / gridIsoSmall);
   report.Add("target.isovalue_change_large_over_grid (<= 5)", isoLarge / gridIsoLarge);
   report.Add("target.quick_isovalue_change_small_over_grid (<= 5)", quick[0] / gridIsoSmall);
+  report.Add("target.quick_isovalue_change_medium_over_grid (<= 5)", quick[2] / gridIsoMedium);
   report.Add("target.quick_isovalue_change_large_over_grid (<= 5)", quick[1] / gridIsoLarge);
   report.Add("target.seed_move_over_grid (<= 5)", seed / gridSeed);
   report.Add("target.two_thread_speedup (>= 1.85)", threads[0] / threads[1]);

@@ -25,7 +25,7 @@ enum Refusal : int
 {
   None = 0,
   NoCrossing = 1, // the data's gradient does not point across the surface
-  TooFar = 2,     // the level is MaximumMove or more away
+  TooFar = 2,     // the level lies beyond the steps, or the point would leave the band
   OneSide = 3     // its nearest samples all lie inside the new flood, or all outside
 };
 
@@ -36,7 +36,7 @@ const char* RefusalText(int refusal)
     case NoCrossing:
       return "the data's gradient at a point no longer crosses the surface";
     case TooFar:
-      return "a point would move further than the refinement's reach";
+      return "a point would move further than the refinement's steps or the band reach";
     case OneSide:
       return "a point's nearest samples lie all inside or all outside the new flood";
     default:
@@ -75,6 +75,72 @@ SlideResult RunSlides(std::size_t count, Body&& slide, vtkSMPThreadLocal<Scratch
   result.Accepted = true;
   return result;
 }
+
+// The order the points slide in: first the hundredth whose kept models predict the longest
+// moves (or no crossing), then the others in storage order. A slide that one of those makes
+// refuse (a level beyond the band, say) then stops after a few points instead of after most of
+// the surface; an accepted one is the same (each point slides on its own).
+std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double valueChange)
+{
+  const std::size_t count = isopoints.Points.size() / 3;
+  std::vector<double> predicted(count);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      Eigen::Vector3d g;
+      Eigen::Matrix3d h;
+      LoadModel(&isopoints.FitModels[ModelSize * i], g, h);
+      const Eigen::Vector3d n(&isopoints.Normals[3 * i]);
+      const double slope = -g.dot(n);
+      predicted[i] =
+        slope > 0.0 ? std::abs(StepToQuadraticZero(-valueChange, slope, n.dot(h * n))) : HUGE_VAL;
+    }
+  });
+  std::vector<std::uint32_t> order(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    order[i] = static_cast<std::uint32_t>(i);
+  }
+  const std::size_t first = std::min(count, count / 100 + 1);
+  std::nth_element(
+    order.begin(), order.begin() + (first - 1), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return predicted[a] > predicted[b] || (predicted[a] == predicted[b] && a < b);
+    });
+  std::sort(order.begin(), order.begin() + first);
+  std::vector<char> taken(count, 0);
+  for (std::size_t k = 0; k < first; ++k)
+  {
+    taken[order[k]] = 1;
+  }
+  std::size_t k = first;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!taken[i])
+    {
+      order[k++] = static_cast<std::uint32_t>(i);
+    }
+  }
+  return order;
+}
+
+// The `fit` samples nearest to p into `ids`, searched within the farthest of the `found` samples
+// `last` (the last gather's, nearby), which bounds them: the same samples as a search without
+// the bound (within it the tree walk visits the same leaves in the same order), found sooner.
+std::size_t GatherNear(const Neighborhoods& geometry, const Eigen::Vector3d& p,
+  const std::uint32_t* last, std::size_t found, std::size_t fit, std::uint32_t* ids, double* d2)
+{
+  double bound = 0.0;
+  for (std::size_t j = 0; j < found; ++j)
+  {
+    bound = std::max(bound, (Eigen::Vector3d(geometry.Position(last[j])) - p).squaredNorm());
+  }
+  if (found == fit && bound > 0.0 &&
+    geometry.Index->NearestWithin(p.data(), fit, bound * (1.0 + 1e-9), ids, d2) == fit)
+  {
+    return fit;
+  }
+  return geometry.Index->Nearest(p.data(), fit, ids, d2);
+}
 } // namespace
 
 SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
@@ -93,8 +159,10 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   // largest, are not copied: the few points that gather anew record theirs.)
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   const std::vector<std::uint32_t>& samples = isopoints.FitSamples;
-  std::vector<double> newCentres(points.size());
+  std::vector<double> newCentres(points.size()), moves(count);
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
+  const std::vector<std::uint32_t> order =
+    withModels ? FarthestFirst(isopoints, settings.ValueChange) : std::vector<std::uint32_t>();
   std::vector<double> models(ModelSize * count);
   std::atomic<int> refusal(None);
   struct Scratch : SlideScratch
@@ -112,10 +180,13 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       s.Ids.resize(fit);
       s.D2.resize(fit);
     }
-    for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
+    for (std::size_t k = begin; k < end && refusal.load(std::memory_order_relaxed) == None; ++k)
     {
+      const std::size_t i = order.empty() ? k : order[k];
       const Eigen::Vector3d start(&points[3 * i]);
-      const Eigen::Vector3d n(&normals[3 * i]);
+      // The line of a step: the point's last normal first, then the data's gradient where the
+      // last step ended (a far level lies along the field's lines, which bend away from it).
+      Eigen::Vector3d n(&normals[3 * i]);
       // The samples of the point's last fit, nearest to where they were gathered (`centre`);
       // a fit serves within MaximumMove of its centre, beyond it the samples nearest to where
       // the point got are gathered (a tree search) and the point slides on from there.
@@ -131,34 +202,75 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         double reach = settings.MaximumMove - (p - centre).norm();
         if (step > 0 || reach < 0.25 * settings.MaximumMove)
         {
-          found = geometry.Index->Nearest(p.data(), fit, s.Ids.data(), s.D2.data());
+          found = GatherNear(geometry, p, nearest, found, fit, s.Ids.data(), s.D2.data());
           nearest = s.Ids.data();
           centre = p;
           reach = settings.MaximumMove;
         }
         s.Evaluator->UseGathered(centre, nearest, found);
-        Eigen::Matrix3d lastHessian = Eigen::Matrix3d::Zero();
-        Eigen::Vector3d evaluatedAt = p;
-        // The first step from the last fit's model at the point (kept by the last run), where
-        // f - f_iso is now minus the change: the only fit is then the second step's, near the
-        // new level, as the refinement's second step is.
-        bool useModel = step == 0 && withModels;
-        auto evaluate = [&](const Eigen::Vector3d& x, double& value, Eigen::Vector3d& g,
-                          Eigen::Matrix3d& hessian) {
-          evaluatedAt = x;
-          if (useModel)
+        // The first evaluation at p: on the first step the last fit's model (kept by the last
+        // run), where f - f_iso is now minus the change, so that the only fit is made near the
+        // new level, as the refinement's second step is; else a fit.
+        double value = 0.0;
+        Eigen::Vector3d g;
+        Eigen::Matrix3d h;
+        bool fromModel = false;
+        if (step == 0 && withModels)
+        {
+          LoadModel(&isopoints.FitModels[ModelSize * i], g, h);
+          value = -settings.ValueChange;
+          fromModel = g.squaredNorm() > 0.0; // none where the refinement left the point
+        }
+        if (!fromModel && !s.Evaluator->FitGathered(p, value, g, h))
+        {
+          crossed = false;
+          break;
+        }
+        const double slope = -g.dot(n);
+        if (!(slope > 0.0) || !std::isfinite(value))
+        {
+          crossed = false;
+          break;
+        }
+        const double predicted = StepToQuadraticZero(value, slope, n.dot(h * n));
+        if (std::abs(predicted) > reach && step + 1 < settings.Steps)
+        {
+          // A far level: a stride by this model alone, at most FarMove (within the fit's
+          // samples), then on from the samples nearest to where it ended, along its gradient.
+          const Eigen::Vector3d from = p;
+          p -= std::max(-settings.FarMove, std::min(settings.FarMove, predicted)) * n;
+          gradient = g + h * (p - from);
+          if (!(gradient.squaredNorm() > 0.0))
           {
-            useModel = false;
-            LoadModel(&isopoints.FitModels[ModelSize * i], g, hessian);
-            value = -settings.ValueChange;
-            lastHessian = hessian;
-            if (g.squaredNorm() > 0.0) // none where the refinement left the point
-            {
-              return true;
-            }
+            crossed = false;
+            break;
           }
-          const bool ok = s.Evaluator->FitGathered(x, value, g, hessian);
-          lastHessian = hessian;
+          if ((p - start).norm() + 2.0 * geometry.RadiusOf(nearest[0]) > settings.BandReach)
+          {
+            break; // leaving the band (refused below, and soon: the other points stop too)
+          }
+          n = -gradient.normalized();
+          lastModelHessian = h;
+          continue;
+        }
+        // A near level: the refinement's steps over the samples gathered here, the first from
+        // the evaluation just made.
+        Eigen::Matrix3d lastHessian = h;
+        Eigen::Vector3d evaluatedAt = p;
+        bool made = true;
+        auto evaluate = [&](const Eigen::Vector3d& x, double& v, Eigen::Vector3d& gx,
+                          Eigen::Matrix3d& hx) {
+          evaluatedAt = x;
+          if (made)
+          {
+            made = false;
+            v = value;
+            gx = g;
+            hx = h;
+            return true;
+          }
+          const bool ok = s.Evaluator->FitGathered(x, v, gx, hx);
+          lastHessian = hx;
           return ok;
         };
         const Eigen::Vector3d from = p;
@@ -173,13 +285,24 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         gradient += lastHessian * (p - evaluatedAt);
         lastModelHessian = lastHessian;
         reached = (p - from).norm() < reach * (1.0 - 1e-9); // else stopped at the reach
+        if (!reached && gradient.squaredNorm() > 0.0)
+        {
+          n = -gradient.normalized();
+        }
       }
       if (!reached)
       {
         refusal = crossed ? TooFar : NoCrossing;
         break;
       }
-      s.LargestMove = std::max(s.LargestMove, (p - start).norm());
+      const double move = (p - start).norm();
+      if (move + 2.0 * geometry.RadiusOf(nearest[0]) > settings.BandReach)
+      {
+        refusal = TooFar;
+        break;
+      }
+      s.LargestMove = std::max(s.LargestMove, move);
+      moves[i] = move;
       bool in = false, out = false;
       for (std::size_t j = 0; j < found; ++j)
       {
@@ -226,16 +349,17 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
     }
     centres.swap(newCentres);
     isopoints.FitModels.swap(models);
+    result.Moves.swap(moves);
   }
   return result;
 }
 
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  IsopointSet& isopoints, const AbortCheck& aborted)
+  double bandReach, IsopointSet& isopoints, const AbortCheck& aborted)
 {
   const std::size_t count = isopoints.Points.size() / 3;
-  std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
+  std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch : SlideScratch
@@ -271,7 +395,14 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         refusal = TooFar;
         break;
       }
-      s.LargestMove = std::max(s.LargestMove, (p - start).norm());
+      const double move = (p - start).norm();
+      if (move + 2.0 * geometry.RadiusOf(s.Ids[0]) > bandReach)
+      {
+        refusal = TooFar;
+        break;
+      }
+      s.LargestMove = std::max(s.LargestMove, move);
+      moves[i] = move;
       for (int d = 0; d < 3; ++d)
       {
         points[3 * i + d] = p[d];
@@ -279,18 +410,19 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       }
     }
   };
-  const SlideResult result = RunSlides(count, slide, scratch, refusal, aborted);
+  SlideResult result = RunSlides(count, slide, scratch, refusal, aborted);
   if (result.Accepted)
   {
     isopoints.Points.swap(points);
     isopoints.Normals.swap(normals);
+    result.Moves.swap(moves);
   }
   return result;
 }
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const PointCloudIndex* points, double reach, std::size_t& changed,
-  vtkIdType particles)
+  const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
+  double margin, std::size_t& changed, vtkIdType particles)
 {
   const std::vector<std::uint32_t> moved =
     IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
@@ -306,13 +438,26 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
     return false;
   }
   const PointCloudIndex& index = *points;
+  const double reach = *std::max_element(moves.begin(), moves.end()) + margin;
+  // A sample between the old and the new level lies within the move there (plus the points'
+  // spacing) of the points that passed it; looked for among the few points nearest to it.
+  constexpr std::size_t Candidates = 8;
+  const std::size_t k = std::min(Candidates, index.Size());
   std::atomic<bool> near(true);
   vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end && near.load(std::memory_order_relaxed); ++k)
+    std::uint32_t ids[Candidates];
+    double d2[Candidates];
+    for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
     {
-      std::uint32_t id;
-      double d2;
-      if (index.NearestWithin(geometry.Position(moved[k]), 1, reach * reach, &id, &d2) == 0)
+      const std::size_t found =
+        index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);
+      bool passed = false;
+      for (std::size_t j = 0; j < found && !passed; ++j)
+      {
+        const double within = moves[ids[j]] + margin;
+        passed = d2[j] <= within * within;
+      }
+      if (!passed)
       {
         near = false;
       }

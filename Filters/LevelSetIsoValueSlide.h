@@ -16,6 +16,7 @@
 #include "LevelSetParallel.h"
 #include "LevelSetSPHField.h"
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -26,8 +27,14 @@ namespace lsi
 struct SlideSettings
 {
   double MaximumMove = 0.0; // per step: the refinement's reach from where it gathered
-  int Steps = 4;            // steps at most, each from the samples nearest to where it starts
-  int Iterations = 3;       // the refinement's iterations and tolerance (IsopointSettings)
+  double FarMove = 0.0;     // a stride's longest towards a level beyond that reach
+  int Steps = 12;           // steps at most, each from the samples nearest to where it starts
+  // How far the surface may move: a point's move plus twice the neighbourhood radius of the
+  // sample nearest to it must stay within this (the band's half width less the slides before:
+  // the samples beyond the band, whose phi stays clamped, then lie two neighbourhoods or more
+  // from the new surface, where the Enclosed table counts them whole or not at all).
+  double BandReach = HUGE_VAL;
+  int Iterations = 3; // the refinement's iterations and tolerance (IsopointSettings)
   double Tolerance = 0.0;
   bool Quadratic = true;    // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
   double ValueChange = 0.0; // f_iso now less f_iso then: f - f_iso at the old points, negated
@@ -36,21 +43,24 @@ struct SlideSettings
 struct SlideResult
 {
   bool Accepted = false;
-  std::string Refusal;      // why not, in words (for the debug output)
-  double LargestMove = 0.0; // of any point
+  std::string Refusal;       // why not, in words (for the debug output)
+  double LargestMove = 0.0;  // of any point
+  std::vector<double> Moves; // each point's, when accepted
 };
 
 /// Slides each of `isopoints` along its normal onto the zero of the MLS fit of `dataOffsets`
 /// (f - f_iso, the new isovalue): RefineIsopointsOnData's step, from where the last run's points
 /// ended, over the samples of their last fit (FitSamples, the nearest to `centres`, 3 per point;
 /// empty: to the points themselves). A fit serves within MaximumMove of where its samples were
-/// gathered; a point whose level lies beyond takes further steps, each from the samples nearest
-/// to where the last one ended (a tree search), at most Steps in all. FitSamples and `centres`
-/// then hold each point's last fit (the surface's arrays are interpolated over those samples),
-/// and the normals the fit's gradient. Refused (isopoints and centres then unchanged) if a
-/// point's level lies beyond those steps, or the data's gradient there does not cross the
-/// surface, or its samples are not on both sides of the new flood (`inside`, per sample): it
-/// would lie on a component the seeds no longer reach, or on none.
+/// gathered. A point whose level lies beyond strides towards it by the fit's quadratic model
+/// alone, at most FarMove, then goes on from the samples nearest to where it got (a tree
+/// search), along the data's gradient there (the field's lines bend: a far level may not lie
+/// on the first normal at all); at most Steps in all. FitSamples and `centres` then hold each
+/// point's last fit (the surface's arrays are interpolated over those samples), and the normals
+/// the fit's gradient. Refused (isopoints and centres then unchanged) if a point's level lies
+/// beyond those steps or BandReach, or the data's gradient there does not cross the surface, or
+/// its samples are not on both sides of the new flood (`inside`, per sample): it would lie on a
+/// component the seeds no longer reach, or on none.
 SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inside, const SlideSettings& settings, IsopointSet& isopoints,
   std::vector<double>& centres, const AbortCheck& aborted);
@@ -58,23 +68,24 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
 /// The same on the SPH field (the points the refinement solved onto its level): each point is
 /// solved along its normal onto the field's new level `isoValue` within SPHMaximumMove kernel
 /// supports of the sample nearest to it (RefineIsopointsOnSPHField's step), the normal becoming
-/// the field's. Refused as above when a point finds no level within that reach, or when the
-/// samples nearest to it are not on both sides of the new flood.
+/// the field's. Refused as above when a point finds no level within that reach or `bandReach`
+/// (SlideSettings::BandReach), or when the samples nearest to it are not on both sides of the
+/// new flood.
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  IsopointSet& isopoints, const AbortCheck& aborted);
+  double bandReach, IsopointSet& isopoints, const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
-/// within `reach` of one of the points that `points` indexes (null: no points, so no sample may
-/// change): the flood then only moved with
-/// the surface. A component joined or lost, or a cavity opened, leaves changed samples away
-/// from the slid surface. `changed` receives how many samples changed. Only the samples of
-/// the first `particles` input points count: in a periodic box the originals (each image is
-/// flooded as its original is, and the images' outer edge, whose neighbourhoods are cut, has no
-/// surface).
+/// within its move (`moves`, per point) plus `margin` of one of the points that `points` indexes
+/// (null: no points, so no sample may change): the flood then only moved with the surface, where
+/// it moved. A component joined or lost, or a cavity opened, leaves changed samples away from
+/// the slid surface, or further from it than it moved there. `changed` receives how many samples
+/// changed. Only the samples of the first `particles` input points count: in a periodic box the
+/// originals (each image is flooded as its original is, and the images' outer edge, whose
+/// neighbourhoods are cut, has no surface).
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
-  const std::vector<char>& after, const PointCloudIndex* points, double reach, std::size_t& changed,
-  vtkIdType particles);
+  const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
+  double margin, std::size_t& changed, vtkIdType particles);
 
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the
 /// samples of the band (|phi| < halfWidth, whose MLS stencils the evolution computed) with the

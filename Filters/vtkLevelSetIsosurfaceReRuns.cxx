@@ -28,10 +28,10 @@
 
 namespace
 {
-// The surface may slide this many spacings in all (over successive quick re-runs) before the
-// method runs in full again: the points stay on the level, but their spread and the shifted
-// LevelSet array drift from what the method would give.
-constexpr double MostSlidSpacings = 2.0;
+// A point whose level lies beyond the refinement's reach strides towards it by its fit's model,
+// at most this many reaches (a spacing) per stride: the fit's samples reach about two spacings
+// around where they were gathered.
+constexpr double FarStrides = 2.0;
 } // namespace
 
 // The last run's ranks know its ghosts, which the kept samples hold: a re-run's steps use them
@@ -311,6 +311,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const lsi::IsopointSettings& settings = last.Settings;
   lsi::SlideSettings slide;
   slide.MaximumMove = settings.DataMaximumMove;
+  slide.FarMove = FarStrides * settings.DataMaximumMove;
+  slide.BandReach = last.HalfWidth - last.Slid;
   slide.Iterations = settings.DataIterations;
   slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
   slide.Quadratic = settings.DataFitOrder == 2;
@@ -334,7 +336,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     isopoints.Normals.resize(kept);
     isopoints.FreeBoundaryCount = 0;
     slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings,
-      isopoints, this->Stage(lsi::IsopointStage));
+      slide.BandReach, isopoints, this->Stage(lsi::IsopointStage));
     aborted = slid.Accepted &&
       !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
         isopoints, this->Stage(lsi::IsopointStage));
@@ -349,9 +351,10 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     return false;
   }
   std::size_t changed = 0;
-  // A sample that changed sides lies between the old and the new level: within the largest
-  // move of the level and the points' spacing (two cells) of a slid point.
-  const double reach = slid.LargestMove + 2.0 * settings.CellSize;
+  // A sample that changed sides lies between the old and the new level: within the move there
+  // and the points' spacing (two cells) of a slid point. (The free boundary's points, shot
+  // anew, count as moved the most.)
+  slid.Moves.resize(isopoints.Points.size() / 3, slid.LargestMove);
   // One search index over the slid points, for this check, the splat radii and the Enclosed
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
@@ -363,10 +366,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
   const double largestMove = ranks.Max(slid.LargestMove);
   // (A rank without points, whose index is null, accepts only if none of its samples changed.)
-  const bool accepted =
-    ranks.All(slid.Accepted && last.Slid + largestMove <= MostSlidSpacings * last.Spacing &&
-      lsi::FloodChangesNearPoints(
-        *geometry, last.Inside, inside, surfaceIndex.get(), reach, changed, counted));
+  const bool accepted = ranks.All(slid.Accepted &&
+    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, surfaceIndex.get(), slid.Moves,
+      2.0 * settings.CellSize, changed, counted));
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
                 << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
                 << largestMove << ", " << changed << " samples changed sides");

@@ -96,6 +96,17 @@ inline void LoadModel(const double* in, Eigen::Vector3d& gradient, Eigen::Matrix
   hessian << in[3], in[6], in[7], in[6], in[4], in[8], in[7], in[8], in[5];
 }
 
+/// The step s to the zero nearest to s = 0 of value + slope s + curvature s^2 / 2 along a line
+/// (slope > 0): the stable form of the quadratic's root, or Newton's step when the curvature
+/// vanishes or the quadratic has no zero.
+inline double StepToQuadraticZero(double value, double slope, double curvature)
+{
+  const double discriminant = slope * slope - 2.0 * curvature * value;
+  return std::isfinite(curvature) && discriminant >= 0.0
+    ? -2.0 * value / (slope + std::sqrt(discriminant))
+    : -value / slope;
+}
+
 /// Moves p along the fixed direction `normal` (unit, pointing out of f > f_iso) to where the
 /// data's approximation `evaluate(p, value, gradient, hessian)` of f - f_iso vanishes, but never
 /// further than `maximumMove` from where it started: the level set already located the surface
@@ -124,13 +135,7 @@ bool SlideOntoDataLevel(Eigen::Vector3d& p, const Eigen::Vector3d& normal, Evalu
     {
       return false;
     }
-    // The zero nearest to the point of value + slope s + curvature s^2 / 2 (the stable form of
-    // the quadratic's root; Newton's step when the curvature vanishes).
-    const double curvature = normal.dot(hessian * normal); // d2 f / d offset2
-    const double discriminant = slope * slope - 2.0 * curvature * value;
-    const double step = std::isfinite(curvature) && discriminant >= 0.0
-      ? -2.0 * value / (slope + std::sqrt(discriminant))
-      : -value / slope;
+    const double step = StepToQuadraticZero(value, slope, normal.dot(hessian * normal));
     const double next = std::max(-maximumMove, std::min(maximumMove, offset + step));
     const bool converged = std::abs(next - offset) <= tolerance;
     offset = next;

@@ -6,7 +6,11 @@
 // method in full, with exactly its outputs.
 #include "vtkLevelSetIsosurface.h"
 
+#include "CaseRuns.h"
 #include "MessageCounter.h"
+#include "SurfaceMetrics.h"
+#include "SyntheticCases.h"
+#include "SyntheticParticles.h"
 #include "TestCheck.h"
 
 #include "vtkDataArray.h"
@@ -90,10 +94,37 @@ double EnclosedVolume(vtkLevelSetIsosurface* filter)
     : 0.0;
 }
 
-// One ball of radius 20 (surface spacing about 1): changes of 0.1 and 0.15 slide (0.25
-// spacings in all), each within the full method's accuracy of the exact sphere and of the full
-// method's enclosed volume and LevelSet array; a change of 3 spacings runs the method, with
-// exactly its outputs; with the property off nothing slides.
+// The largest distance from the sphere of `radius` about (30, 30, 30) (probed at 4000 points
+// spread over it) to a point of `surface`.
+double LargestGapFromSphere(vtkPolyData* surface, double radius)
+{
+  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  const int probes = 4000;
+  double largest = 0.0;
+  for (int k = 0; k < probes; ++k)
+  {
+    const double z = 1.0 - 2.0 * (k + 0.5) / probes, r = std::sqrt(1.0 - z * z);
+    const double probe[3] = { 30 + radius * r * std::cos(golden * k),
+      30 + radius * r * std::sin(golden * k), 30 + radius * z };
+    double nearest = HUGE_VAL;
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      const double* x = surface->GetPoint(i);
+      nearest = std::min(nearest,
+        (x[0] - probe[0]) * (x[0] - probe[0]) + (x[1] - probe[1]) * (x[1] - probe[1]) +
+          (x[2] - probe[2]) * (x[2] - probe[2]));
+    }
+    largest = std::max(largest, std::sqrt(nearest));
+  }
+  return largest;
+}
+
+// One ball of radius 20 (surface spacing about 1): changes of 0.1 and 0.15 slide, then one of
+// 2.75 (the level moves 2.75 spacings: several strides), each within the full method's
+// accuracy of the exact sphere, covering it as well, and within the full method's enclosed
+// volume and LevelSet array; a change that would take the surface out of the band the last
+// full run resolved runs the method, with exactly its outputs; with the property off nothing
+// slides.
 void TestSlidesOnOneBall()
 {
   vtkSmartPointer<vtkPolyData> data =
@@ -111,7 +142,7 @@ void TestSlidesOnOneBall()
   quick->Update();
   Check(!quick->GetSlidLastSurface(), "the first run is the method's");
   double isoValue = 0.0;
-  for (double change : { 0.1, 0.15 })
+  for (double change : { 0.1, 0.15, 2.75 })
   {
     isoValue += change;
     quick->SetIsoValue(isoValue);
@@ -128,11 +159,17 @@ void TestSlidesOnOneBall()
     Check(slidError < 1.2 * fullError + 1e-3,
       "the slid points lie on the new level as closely as the method's" + at + " (" +
         std::to_string(slidError) + " against " + std::to_string(fullError) + ")");
+    // (After a large change the points keep their number: on a shrunk ball they crowd.)
     const double count = static_cast<double>(slid->GetNumberOfPoints());
     const double fullCount = static_cast<double>(full->GetOutput(0)->GetNumberOfPoints());
-    Check(std::abs(count - fullCount) < 0.05 * fullCount,
+    Check(change > 1.0 || std::abs(count - fullCount) < 0.05 * fullCount,
       "as many points as the method's, within 5%" + at + " (" + std::to_string(count) + " and " +
         std::to_string(fullCount) + ")");
+    const double gap = LargestGapFromSphere(slid, 20.0 - isoValue);
+    const double fullGap = LargestGapFromSphere(full->GetOutput(0), 20.0 - isoValue);
+    Check(gap < 1.2 * fullGap + 0.05,
+      "the slid points cover the sphere as the method's do" + at + " (largest gap " +
+        std::to_string(gap) + " against " + std::to_string(fullGap) + ")");
     // The normals are the data's: radial.
     vtkDataArray* normals = slid->GetPointData()->GetArray("Normals");
     double worst = 1.0;
@@ -151,8 +188,10 @@ void TestSlidesOnOneBall()
         " and " + std::to_string(fullVolume) + ")");
     // The LevelSet array, in the band the evolution resolves (|phi| < 2 spacings): against
     // the exact signed distance, as close as the method's own (which itself varies by about a
-    // tenth of a spacing per sample between runs at nearby isovalues), and unbiased to a
-    // twentieth of a spacing.
+    // tenth of a spacing per sample between runs at nearby isovalues), and after a small change
+    // unbiased to a twentieth of a spacing. (After a large one it is the last run's phi from
+    // that depth, shifted: the method's phi overstates depth by about 0.3 spacings there, so
+    // the shifted one is biased by as much, within the method's own mean error.)
     vtkDataArray* phi = quick->GetOutput(1)->GetPointData()->GetArray("LevelSet");
     vtkDataArray* fullPhi = full->GetOutput(1)->GetPointData()->GetArray("LevelSet");
     vtkDataArray* f = data->GetPointData()->GetArray("f");
@@ -164,24 +203,28 @@ void TestSlidesOnOneBall()
         const double exact = f->GetTuple1(i) - isoValue; // |grad f| = 1
         error += std::abs(phi->GetTuple1(i) - exact);
         fullError2 += std::abs(fullPhi->GetTuple1(i) - exact);
-        bias += phi->GetTuple1(i) - fullPhi->GetTuple1(i);
+        bias += phi->GetTuple1(i) - (change > 1.0 ? exact : fullPhi->GetTuple1(i));
         band += 1.0;
       }
     }
     band = std::max(band, 1.0);
-    Check(error / band < 1.1 * fullError2 / band + 0.01 && std::abs(bias / band) < 0.05,
+    Check(error / band < 1.1 * fullError2 / band + 0.01 &&
+        std::abs(bias / band) < (change > 1.0 ? 0.5 : 0.05),
       "the LevelSet array is as close to the signed distance as the method's, unbiased" + at +
         " (mean error " + std::to_string(error / band) + " against " +
         std::to_string(fullError2 / band) + ", mean difference " + std::to_string(bias / band) +
-        ")");
+        (change > 1.0 ? " from the signed distance)" : " from the method's)"));
   }
 
-  quick->SetIsoValue(3.0); // the level moves 2.75 spacings: beyond four steps of half a spacing
+  // The band the last full run resolved reaches about 8.7 spacings from its surface; a point
+  // must stay twice a neighbourhood radius (3.8 spacings) inside it. The surface has slid 3
+  // spacings: 2.5 more would leave it.
+  quick->SetIsoValue(5.5);
   quick->Update();
   vtkNew<vtkLevelSetIsosurface> full;
-  Configure(full, data, 3.0);
+  Configure(full, data, 5.5);
   full->Update();
-  Check(!quick->GetSlidLastSurface(), "a large change runs the method");
+  Check(!quick->GetSlidLastSurface(), "a change out of the band runs the method");
   bool same = quick->GetOutput(0)->GetNumberOfPoints() == full->GetOutput(0)->GetNumberOfPoints();
   for (vtkIdType i = 0; same && i < quick->GetOutput(0)->GetNumberOfPoints(); i += 97)
   {
@@ -191,7 +234,7 @@ void TestSlidesOnOneBall()
   }
   Check(same, "and gives exactly the method's surface");
 
-  quick->SetIsoValue(2.9); // slides from the method's run at 3 (the state is kept again)
+  quick->SetIsoValue(5.4); // slides from the method's run at 5.5 (the state is kept again)
   quick->Update();
   Check(quick->GetSlidLastSurface(), "after a full run, a small change slides again");
   quick->SetSeedCenter(31, 30, 30); // a seed move inside the ball hands the slid outputs on
@@ -205,7 +248,7 @@ void TestSlidesOnOneBall()
     f->SetTuple1(i, f->GetTuple1(i) + 0.5);
   }
   data->Modified();
-  quick->SetIsoValue(3.4); // the level of the run before, were the values unchanged
+  quick->SetIsoValue(5.9); // the level of the run before, were the values unchanged
   quick->Update();
   Check(!quick->GetSlidLastSurface() && !quick->GetReusedLastOutputs(),
     "after values changed in place, an isovalue change runs the method");
@@ -216,19 +259,20 @@ void TestSlidesOnOneBall()
   quick->Update();
   Check(!quick->GetSlidLastSurface(), "with the property off nothing slides");
 
-  // Steps of 0.45 spacings: four slide; the fifth would take the surface past two spacings of
-  // sliding in all and runs the method, which starts the count again.
+  // Steps of 1.9 spacings (the ball grows): two slide; the third would take the surface 5.7
+  // spacings from where the method last put it, out of the band, and runs the method, which
+  // starts the count again.
   quick->QuickIsoValueChangesOn();
   quick->Update();
   std::string pattern;
-  for (int k = 1; k <= 6; ++k)
+  for (int k = 1; k <= 4; ++k)
   {
-    quick->SetIsoValue(2.8 - 0.45 * k);
+    quick->SetIsoValue(2.8 - 1.9 * k);
     quick->Update();
     pattern += quick->GetSlidLastSurface() ? "s" : "m";
   }
-  Check(pattern == "ssssms",
-    "steps of 0.45 spacings: four slides, the method, a slide (" + pattern + ")");
+  Check(
+    pattern == "ssms", "steps of 1.9 spacings: two slides, the method, a slide (" + pattern + ")");
 }
 
 // Two balls of radius 10, 4 apart, joined by a tube of radius 2 along which f = -0.2, the
@@ -301,6 +345,113 @@ void TestCavityOpening()
   Check(!quick->GetSlidLastSurface() && innerPoints > 50,
     "a change that opens a cavity runs the method, which finds its surface (" +
       std::to_string(innerPoints) + " points within 5 of the centre)");
+}
+
+// A ball of radius 15 whose field is four times shallower on one side (x > 30) than on the
+// other, with a pocket (f = 0.5) under the steep side: a shell 1.2 thick, 2.2 to 3.4 below the
+// surface the change below makes, within 35 degrees of the -x axis (about 170 samples).
+// Raising the isovalue from 0 to 0.875 moves the surface 0.875 spacings on the steep side and
+// 3.5 on the shallow one, and opens the pocket as a cavity: nearer to the slid surface than
+// the surface moved anywhere (plus the points' spacing), but further than it moved there. The
+// flood's check, held to each point's own move, sees the cavity: the method runs and finds it.
+void TestCavityNearerThanTheLargestMove()
+{
+  auto inPocket = [](const double* x) {
+    const double r = FromAxisPoint(x, 30.0);
+    return r > 10.725 && r < 11.925 && (30.0 - x[0]) > r * std::cos(35.0 * 3.14159265358979 / 180);
+  };
+  vtkSmartPointer<vtkPolyData> data = Sampled(216000, 60.0, 13, [&](const double* x) {
+    if (inPocket(x))
+    {
+      return 0.5;
+    }
+    const double steepness = 0.25 + 0.75 / (1.0 + std::exp((x[0] - 30.0) / 2.0));
+    return (15.0 - FromAxisPoint(x, 30.0)) * steepness;
+  });
+  // The points on the cavity's walls: within half a spacing of the pocket's shell.
+  auto onPocket = [](vtkPolyData* p) {
+    int count = 0;
+    for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    {
+      const double* x = p->GetPoint(i);
+      const double r = FromAxisPoint(x, 30.0);
+      count += r > 10.2 && r < 12.4 && (30.0 - x[0]) > r * std::cos(38.0 * 3.14159265358979 / 180);
+    }
+    return count;
+  };
+  vtkNew<vtkLevelSetIsosurface> quick;
+  Configure(quick, data, 0.0);
+  quick->SetSeedCenter(38, 30, 30);
+  quick->QuickIsoValueChangesOn();
+  quick->Update();
+  Check(onPocket(quick->GetOutput(0)) == 0, "at isovalue 0 the pocket is inside");
+  quick->SetIsoValue(0.875);
+  quick->Update();
+  const int pocketPoints = onPocket(quick->GetOutput(0));
+  Check(!quick->GetSlidLastSurface() && pocketPoints > 50,
+    "a cavity nearer than the largest move but further than the move there runs the method, "
+    "which finds its surface (" +
+      std::to_string(pocketPoints) + " points on the pocket's walls)");
+  // Without the cavity a change as large slides.
+  quick->SetIsoValue(0.0);
+  quick->Modified(); // (the method, not a slide back)
+  quick->Update();
+  quick->SetIsoValue(0.45); // (below the pocket's 0.5: it stays inside)
+  quick->Update();
+  Check(quick->GetSlidLastSurface(), "a change that opens no cavity slides");
+}
+
+// The paper's one-component case (a bent, flattened shape) at 100,000 samples: raising the
+// isovalue so that a fifth of the samples inside go out moves its surface up to about two
+// spacings, along field lines that bend: from some of its points the straight normal never
+// meets the new level (f along it peaks below the new isovalue). The points follow the data's
+// gradient instead: the change slides, its points as close to the new level as the method's
+// (over the surface: they crowd where it shrank) and covering it as well.
+void TestSlideAlongBendingFieldLines()
+{
+  using namespace lsi::cases;
+  OneComponentCase c;
+  const std::vector<Eigen::Vector3d> samples = c.Samples(100000, 1);
+  vtkSmartPointer<vtkPolyData> particles = MakeParticles(c, samples);
+  const double spacing = c.SurfaceSpacing(samples.size());
+  std::vector<double> inside;
+  for (const Eigen::Vector3d& x : samples)
+  {
+    if (c.Value(x) > c.IsoValue)
+    {
+      inside.push_back(c.Value(x));
+    }
+  }
+  std::sort(inside.begin(), inside.end());
+  OneComponentCase changed = c;
+  changed.IsoValue = inside[inside.size() / 5];
+  auto measure = [&](vtkLevelSetIsosurface* filter) {
+    std::vector<double> points, normals;
+    lsi::cases::IsopointArrays(filter->GetOutput(0), points, normals);
+    return MeasureSurface(changed, points, normals, samples, spacing);
+  };
+  vtkNew<vtkLevelSetIsosurface> quick, full;
+  for (vtkLevelSetIsosurface* filter : { quick.GetPointer(), full.GetPointer() })
+  {
+    filter->SetInputData(particles);
+    SetCaseInputs(filter, c);
+    filter->SetOutputTypeToIsopoints();
+  }
+  quick->QuickIsoValueChangesOn();
+  quick->Update();
+  quick->SetIsoValue(changed.IsoValue);
+  quick->Update();
+  full->SetIsoValue(changed.IsoValue);
+  full->Update();
+  const SurfaceMetrics slid = measure(quick), method = measure(full);
+  Check(quick->GetSlidLastSurface(), "a fifth of the inside out on the bent shape slides");
+  Check(slid.MeanDistanceOverSurface < 1.2 * method.MeanDistanceOverSurface,
+    "its points lie on the new level as closely as the method's (" +
+      std::to_string(slid.MeanDistanceOverSurface / spacing) + " against " +
+      std::to_string(method.MeanDistanceOverSurface / spacing) + " spacings)");
+  Check(slid.MaxGapToIsopoint < 1.2 * method.MaxGapToIsopoint && slid.UnseededIsopoints == 0,
+    "and cover it as well (largest gap " + std::to_string(slid.MaxGapToIsopoint / spacing) +
+      " against " + std::to_string(method.MaxGapToIsopoint / spacing) + " spacings)");
 }
 
 // Units: the same particles with lengths times 1e5 and values times 1e-7 slide to the same
@@ -515,6 +666,8 @@ int main()
   TestSlidesOnOneBall();
   TestComponentsJoinedOrLost();
   TestCavityOpening();
+  TestCavityNearerThanTheLargestMove();
+  TestSlideAlongBendingFieldLines();
   TestUnitsOfLengthAndValue();
   TestPeriodicBox();
   std::cout << (lsi::test::Failures() ? "quick isovalue tests FAILED\n"

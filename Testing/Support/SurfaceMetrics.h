@@ -34,6 +34,9 @@ struct SurfaceMetrics
   std::size_t SurfaceProbes = 0;     // exact surface points of seeded components checked
   double MaxGapToIsopoint = 0.0;     // the farthest any of them is from an isopoint
   double CoveredFraction = 0.0;      // fraction within `coverageRadius`
+  // The mean distance to the surface of the isopoint nearest to each probe: MeanDistance
+  // weighed by the surface's area instead of by where the isopoints crowd.
+  double MeanDistanceOverSurface = 0.0;
 };
 
 /// `points`, `normals`: 3 per isopoint. `samples`: the sample positions (exact surface probes
@@ -88,6 +91,7 @@ inline SurfaceMetrics MeasureSurface(const Case& c, const std::vector<double>& p
     locator->BuildLocator();
   }
   std::size_t covered = 0;
+  double probeDistanceSum = 0.0;
   for (const Eigen::Vector3d& x : samples)
   {
     const Eigen::Vector3d g = c.Gradient(x);
@@ -105,13 +109,17 @@ inline SurfaceMetrics MeasureSurface(const Case& c, const std::vector<double>& p
     if (count)
     {
       double nearest[3];
-      isopointSet->GetPoint(locator->FindClosestPoint(s.data()), nearest);
+      const vtkIdType closest = locator->FindClosestPoint(s.data());
+      isopointSet->GetPoint(closest, nearest);
       gap = (s - Eigen::Vector3d(nearest)).norm();
+      probeDistanceSum += distances[static_cast<std::size_t>(closest)];
     }
     m.MaxGapToIsopoint = std::max(m.MaxGapToIsopoint, gap);
     covered += gap <= coverageRadius;
   }
   m.CoveredFraction = m.SurfaceProbes ? static_cast<double>(covered) / m.SurfaceProbes : 0.0;
+  m.MeanDistanceOverSurface =
+    m.SurfaceProbes && count ? probeDistanceSum / m.SurfaceProbes : HUGE_VAL;
   return m;
 }
 
