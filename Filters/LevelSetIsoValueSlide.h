@@ -1,13 +1,15 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The quick re-run after a small isovalue change (QuickIsoValueChanges; ours, not the paper's).
+// The quick re-run after an isovalue change (QuickIsoValueChanges; ours, not the paper's).
 // With the refinement on the data, the method's surface lies on the level {f = f_iso} of the
 // data (their MLS fit, or the SPH field): the level set decided which components and where
-// each point starts, the data placed it. After a small change of f_iso, each point of the last
-// surface slides along its normal onto the new level by the same refinement, for a fraction of
-// the method's cost. The flood from the seeds, run again at the new isovalue, vouches that the
+// each point starts, the data placed it. After a change of f_iso, each point of the last
+// surface slides onto the new level by the same refinement (along the data's gradient, in
+// strides, when the level moved further than the refinement reaches), for a fraction of the
+// method's cost. The flood from the seeds, run again at the new isovalue, vouches that the
 // components are the same (FloodChangesNearPoints); each point vouches that it still lies
-// between the new inside and outside (SlideIsopoints). Any doubt: the long way.
+// between the new inside and outside, within the band the last full run resolved
+// (SlideIsopoints). Any doubt: the long way.
 #ifndef LevelSetIsoValueSlide_h
 #define LevelSetIsoValueSlide_h
 

@@ -114,23 +114,27 @@ public:
   ///@}
 
   ///@{
-  /** Quick re-runs after small isovalue changes, for exploring (default off). When on, and nothing
-   * but IsoValue changed since the last run, the last surface slides along its normals onto the new
-   * level instead of the method running again: each point by the refinement on the data (the MLS
-   * fit, from the samples of its last fit, the first step from that fit's quadratic model; or the
-   * SPH field, within one kernel support, its free boundary shot anew from the new inside's edge of
-   * the cloud), several times faster. The flood from the seeds runs at the new isovalue and may
-   * change only next to the slid surface; every point must land within two spacings (on the MLS
-   * fit, in steps of half a spacing, each from the samples nearest to where it starts), between the
-   * new inside and outside. Otherwise (a larger change, a component joined or lost, a cavity
-   * opened, MPI in a periodic box) the method runs in full; in a periodic box every point slides,
-   * those beyond the faces too, and the kept cell is cut anew. Under MPI every rank slides the
-   * points it found, and all slide or none. The points then lie on the same level as
-   * the full method's, spread as the last run left them; the LevelSet array is the last one moved
-   * by the change over the data's gradient (within the band), so it and the Enclosed table match a
-   * full run to first order in the change. The surface may slide two spacings in all before the
-   * method runs in full again. Off: every run is the full method, whatever ran before (reproducible
-   * from the parameters alone). SlidLastSurface tells which happened. */
+  /** Quick re-runs after isovalue changes, for exploring (default off). When on, and nothing but
+   * IsoValue changed since the last run, the last surface slides onto the new level instead of the
+   * method running again: each point by the refinement on the data (the MLS fit, from the samples
+   * of its last fit, the first step from that fit's quadratic model; a level beyond half a spacing
+   * is reached in strides of at most a spacing along the data's gradient, each from the samples
+   * nearest to where the last ended; or the SPH field, within one kernel support, its free
+   * boundary shot anew from the new inside's edge of the cloud), several times faster. The flood
+   * from the seeds runs at the new isovalue and may change only next to the slid surface, no
+   * further from it than the surface moved there; every point must land between the new inside
+   * and outside, and within the band the last full run resolved (its move, plus twice the
+   * neighbourhood radius, within the band's half width: about 5 spacings in all at the default
+   * parameters). Otherwise (a larger change, a component joined or lost, a cavity opened, MPI in a
+   * periodic box) the method runs in full; in a periodic box every point slides, those beyond the
+   * faces too, and the kept cell is cut anew. Under MPI every rank slides the points it found, and
+   * all slide or none. The points then lie on the same level as the full method's, as many as the
+   * last run's (crowding where the surface shrank); the LevelSet array is the last one moved by the
+   * change over the data's gradient (within the band), so it and the Enclosed table match a full
+   * run to first order in the change (after a move of several spacings the LevelSet array near the
+   * new surface is the last run's from that depth: within the method's own error of the signed
+   * distance, but not the method's). Off: every run is the full method, whatever ran before
+   * (reproducible from the parameters alone). SlidLastSurface tells which happened. */
   vtkSetMacro(QuickIsoValueChanges, bool);
   vtkGetMacro(QuickIsoValueChanges, bool);
   vtkBooleanMacro(QuickIsoValueChanges, bool);

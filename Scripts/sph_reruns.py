@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""pvpython Scripts/sph_reruns.py PLUGIN SHARED_DATA_DIR [REPEATS]
+"""pvpython Scripts/sph_reruns.py PLUGIN SHARED_DATA_DIR [REPEATS [FRACTION]]
 
 Seconds of the filter on the SPH field of the real snapshots in ../shared/data, through
 ParaView's proxies, for the default output (splats) and for Isopoints. The cases and isovalue
@@ -10,7 +10,7 @@ GADGET-4 isovalue and the seeds can differ slightly from the comparison's:
   first    a fresh filter's first run (neighbour search included);
   method   the method in full after a change of the isovalue by a part in 1e9 (the
            neighbours kept: what an isovalue change costs with QuickIsoValueChanges off);
-  quick    a change that moves 2% of the particles above the isovalue across it, with
+  quick    a change that moves 2% (FRACTION) of the particles above the isovalue across it, with
            QuickIsoValueChanges on, from a fresh filter's first run; `slid` says whether the
            last surface was slid (1) or the method ran (0);
   seed     after the method's re-run, the seed centre moved by a thousandth of the data's
@@ -39,6 +39,7 @@ def fetch(proxy):
 def main():
     plugin, data = sys.argv[1], sys.argv[2]
     repeats = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    fraction = float(sys.argv[4]) if len(sys.argv) > 4 else 0.02
     LoadPlugin(plugin, ns=globals())
 
     def hdf5(path, types):
@@ -78,7 +79,7 @@ def main():
         seed = list(x[np.argmax(values)]) if name != "evrard-summed" else [0.0, 0.0, 0.0]
         extent = float(np.max(np.ptp(x, axis=0)))  # for the seed move
         above = np.sort(values[values > iso])
-        moved = float(above[int(0.02 * len(above))])
+        moved = float(above[int(fraction * len(above))])
         for output_type, label in ((1, "splats"), (0, "isopoints")):
             settings = dict(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
                             SeedCenter=seed, OutputType=output_type)
