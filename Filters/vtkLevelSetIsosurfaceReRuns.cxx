@@ -364,7 +364,25 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const vtkIdType counted = this->Internal->Box.Enabled
     ? this->Internal->OriginalCount
     : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
-  const double largestMove = ranks.Max(slid.LargestMove);
+  // The largest move over the points the ranks keep (under MPI each keeps those nearest its own
+  // samples: together the serial run's points; its others, towards its halo's edge, may have
+  // slid on cut neighbourhoods, and the LevelSet shift is capped by this move).
+  double keptLargestMove = slid.LargestMove;
+  if (ranks.Distributed())
+  {
+    keptLargestMove = 0.0;
+    for (std::size_t i = 0; i < slid.Moves.size(); ++i)
+    {
+      std::uint32_t nearest = 0;
+      double d2 = 0.0;
+      if (geometry->Index->Nearest(&isopoints.Points[3 * i], 1, &nearest, &d2) == 1 &&
+        ranks.Owns(nearest))
+      {
+        keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
+      }
+    }
+  }
+  const double largestMove = ranks.Max(keptLargestMove);
   // (A rank without points, whose index is null, accepts only if none of its samples changed.)
   const bool accepted = ranks.All(slid.Accepted &&
     lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, surfaceIndex.get(), slid.Moves,
