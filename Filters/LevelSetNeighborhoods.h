@@ -6,6 +6,7 @@
 #ifndef LevelSetNeighborhoods_h
 #define LevelSetNeighborhoods_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetParallel.h"
 #include "MovingLeastSquares.h"
 #include "NearestNeighbors.h"
@@ -344,6 +345,16 @@ void PointBounds(vtkPoints* points, double bounds[6]);
 /// Builds everything from the points. Returns false only when aborted.
 bool BuildNeighborhoods(
   vtkPoints* points, int numberOfNeighbors, Neighborhoods& out, const AbortCheck& aborted);
+
+/// Whether this rank owns the sample nearest to `point`: of a piece of surface that several
+/// ranks found, the rank that owns the nearest sample keeps it (always, in one process).
+inline bool OwnsNearestSample(
+  const Neighborhoods& geometry, const Communicator& ranks, const double point[3])
+{
+  std::uint32_t nearest = 0;
+  double d2 = 0.0;
+  return geometry.Index->Nearest(point, 1, &nearest, &d2) == 1 && ranks.Owns(nearest);
+}
 
 } // namespace lsi
 

@@ -1154,12 +1154,7 @@ void vtkLevelSetIsosurface::KeepOwnedIsopoints(
   std::vector<char> kept(isopoints.Points.size() / 3);
   for (std::size_t i = 0; i < kept.size(); ++i)
   {
-    std::uint32_t nearest = 0;
-    double d2 = 0.0;
-    kept[i] = geometry.Index->Nearest(&isopoints.Points[3 * i], 1, &nearest, &d2) == 1 &&
-        ranks.Owns(nearest)
-      ? 1
-      : 0;
+    kept[i] = lsi::OwnsNearestSample(geometry, ranks, &isopoints.Points[3 * i]) ? 1 : 0;
   }
   // (Their fits' samples go with them: the arrays are interpolated over those samples, as in a
   // serial run.)

@@ -373,10 +373,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     keptLargestMove = 0.0;
     for (std::size_t i = 0; i < slid.Moves.size(); ++i)
     {
-      std::uint32_t nearest = 0;
-      double d2 = 0.0;
-      if (geometry->Index->Nearest(&isopoints.Points[3 * i], 1, &nearest, &d2) == 1 &&
-        ranks.Owns(nearest))
+      if (lsi::OwnsNearestSample(*geometry, ranks, &isopoints.Points[3 * i]))
       {
         keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
       }
