@@ -83,6 +83,10 @@ SlideResult RunSlides(std::size_t count, Body&& slide, vtkSMPThreadLocal<Scratch
 std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double valueChange)
 {
   const std::size_t count = isopoints.Points.size() / 3;
+  if (count == 0)
+  {
+    return std::vector<std::uint32_t>();
+  }
   std::vector<double> predicted(count);
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
@@ -438,6 +442,10 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
     return false;
   }
   const PointCloudIndex& index = *points;
+  if (moves.size() != index.Size())
+  {
+    return false; // (every point needs its move)
+  }
   const double reach = *std::max_element(moves.begin(), moves.end()) + margin;
   // A sample between the old and the new level lies within the move there (plus the points'
   // spacing) of the points that passed it; looked for among the few points nearest to it.
