@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <numeric>
 
 namespace lsi
 {
@@ -43,19 +44,18 @@ const char* RefusalText(int refusal)
       return "";
   }
 }
-// What each thread of a slide keeps: a nearest-sample search's results, and the largest move.
+// What each thread of a slide keeps: a nearest-sample search's results.
 struct SlideScratch
 {
   std::vector<std::uint32_t> Ids;
   std::vector<double> D2;
-  double LargestMove = 0.0;
 };
 
 // Runs `slide` over the points in parallel blocks: refused with the first reason a point met,
-// or aborted, or accepted with the largest move over the threads' scratch.
-template <typename Scratch, typename Body>
-SlideResult RunSlides(std::size_t count, Body&& slide, vtkSMPThreadLocal<Scratch>& scratch,
-  const std::atomic<int>& refusal, const AbortCheck& aborted)
+// or aborted, or accepted.
+template <typename Body>
+SlideResult RunSlides(
+  std::size_t count, Body&& slide, const std::atomic<int>& refusal, const AbortCheck& aborted)
 {
   SlideResult result;
   if (!ParallelForInBlocks(count, slide, aborted, IsopointBlock))
@@ -67,10 +67,6 @@ SlideResult RunSlides(std::size_t count, Body&& slide, vtkSMPThreadLocal<Scratch
   {
     result.Refusal = RefusalText(refusal);
     return result;
-  }
-  for (const Scratch& s : scratch)
-  {
-    result.LargestMove = std::max(result.LargestMove, s.LargestMove);
   }
   result.Accepted = true;
   return result;
@@ -100,31 +96,27 @@ std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double va
         slope > 0.0 ? std::abs(StepToQuadraticZero(-valueChange, slope, n.dot(h * n))) : HUGE_VAL;
     }
   });
+  // (A strict order: the longest first, ties by index. The first points are those not after
+  // the one in place first - 1; both groups then keep storage order.)
+  auto before = [&](std::uint32_t a, std::uint32_t b) {
+    return predicted[a] > predicted[b] || (predicted[a] == predicted[b] && a < b);
+  };
   std::vector<std::uint32_t> order(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    order[i] = static_cast<std::uint32_t>(i);
-  }
+  std::iota(order.begin(), order.end(), 0u);
   const std::size_t first = std::min(count, count / 100 + 1);
-  std::nth_element(
-    order.begin(), order.begin() + (first - 1), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return predicted[a] > predicted[b] || (predicted[a] == predicted[b] && a < b);
-    });
-  std::sort(order.begin(), order.begin() + first);
-  std::vector<char> taken(count, 0);
-  for (std::size_t k = 0; k < first; ++k)
-  {
-    taken[order[k]] = 1;
-  }
-  std::size_t k = first;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    if (!taken[i])
-    {
-      order[k++] = static_cast<std::uint32_t>(i);
-    }
-  }
+  std::nth_element(order.begin(), order.begin() + (first - 1), order.end(), before);
+  const std::uint32_t last = order[first - 1];
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_partition(
+    order.begin(), order.end(), [&](std::uint32_t i) { return !before(last, i); });
   return order;
+}
+
+// Whether a point that moved `move` from where the last full run put it, its nearest sample
+// `sample`, leaves the band that run resolved (`bandReach`, SlideSettings::BandReach).
+bool BeyondBand(const Neighborhoods& geometry, double move, std::size_t sample, double bandReach)
+{
+  return move + 2.0 * geometry.RadiusOf(sample) > bandReach;
 }
 
 // The `fit` samples nearest to p into `ids`, searched within the farthest of the `found` samples
@@ -249,7 +241,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
             crossed = false;
             break;
           }
-          if ((p - start).norm() + 2.0 * geometry.RadiusOf(nearest[0]) > settings.BandReach)
+          if (BeyondBand(geometry, (p - start).norm(), nearest[0], settings.BandReach))
           {
             break; // leaving the band (refused below, and soon: the other points stop too)
           }
@@ -300,12 +292,11 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         break;
       }
       const double move = (p - start).norm();
-      if (move + 2.0 * geometry.RadiusOf(nearest[0]) > settings.BandReach)
+      if (BeyondBand(geometry, move, nearest[0], settings.BandReach))
       {
         refusal = TooFar;
         break;
       }
-      s.LargestMove = std::max(s.LargestMove, move);
       moves[i] = move;
       bool in = false, out = false;
       for (std::size_t j = 0; j < found; ++j)
@@ -338,7 +329,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       }
     }
   };
-  result = RunSlides(count, slide, scratch, refusal, aborted);
+  result = RunSlides(count, slide, refusal, aborted);
   if (result.Accepted)
   {
     isopoints.Points.swap(points);
@@ -400,12 +391,11 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         break;
       }
       const double move = (p - start).norm();
-      if (move + 2.0 * geometry.RadiusOf(s.Ids[0]) > bandReach)
+      if (BeyondBand(geometry, move, s.Ids[0], bandReach))
       {
         refusal = TooFar;
         break;
       }
-      s.LargestMove = std::max(s.LargestMove, move);
       moves[i] = move;
       for (int d = 0; d < 3; ++d)
       {
@@ -414,7 +404,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       }
     }
   };
-  SlideResult result = RunSlides(count, slide, scratch, refusal, aborted);
+  SlideResult result = RunSlides(count, slide, refusal, aborted);
   if (result.Accepted)
   {
     isopoints.Points.swap(points);

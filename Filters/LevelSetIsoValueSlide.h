@@ -18,6 +18,7 @@
 #include "LevelSetParallel.h"
 #include "LevelSetSPHField.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -46,8 +47,11 @@ struct SlideResult
 {
   bool Accepted = false;
   std::string Refusal;       // why not, in words (for the debug output)
-  double LargestMove = 0.0;  // of any point
   std::vector<double> Moves; // each point's, when accepted
+  double LargestMove() const // of any point (0 without points)
+  {
+    return this->Moves.empty() ? 0.0 : *std::max_element(this->Moves.begin(), this->Moves.end());
+  }
 };
 
 /// Slides each of `isopoints` along its normal onto the zero of the MLS fit of `dataOffsets`

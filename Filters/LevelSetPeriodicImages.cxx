@@ -174,12 +174,13 @@ std::vector<vtkIdType> OriginalIds(
 std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox& box,
   double margin, vtkIdType originalCount, const std::vector<double>& supports, double& needed)
 {
-  // The room a sample's reach has before the images end, on axis d.
-  auto roomOf = [&](std::size_t i, int d) {
+  // A sample's distance to the nearer face on axis d, and the room its reach has before the
+  // images end (they end margin * L beyond each face; the neighbourhood must end before).
+  auto fromFace = [&](std::size_t i, int d) {
     const double x = geometry.Position(i)[d] - box.Origin[d];
-    // The images end margin * L beyond each face; the neighbourhood must end before.
-    return std::min(x, box.Size[d] - x) + margin * box.Size[d];
+    return std::min(x, box.Size[d] - x);
   };
+  auto roomOf = [&](std::size_t i, int d) { return fromFace(i, d) + margin * box.Size[d]; };
   auto support = [&](std::size_t i) { return supports.empty() ? 0.0 : supports[i]; };
   // Most samples lie too far inside for their reach to pass the images' edge: an upper bound on
   // each radius without a search (RadiusBound) says which, and only the others' neighbour
@@ -205,7 +206,7 @@ std::size_t SamplesBeyondImages(const Neighborhoods& geometry, const PeriodicBox
       if (reach > roomOf(i, d))
       {
         cut = true;
-        needed = std::max(needed, (reach - (roomOf(i, d) - margin * box.Size[d])) / box.Size[d]);
+        needed = std::max(needed, (reach - fromFace(i, d)) / box.Size[d]);
       }
     }
     count += cut ? 1 : 0;

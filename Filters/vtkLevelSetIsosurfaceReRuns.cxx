@@ -354,7 +354,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // A sample that changed sides lies between the old and the new level: within the move there
   // and the points' spacing (two cells) of a slid point. (The free boundary's points, shot
   // anew, count as moved the most.)
-  slid.Moves.resize(isopoints.Points.size() / 3, slid.LargestMove);
+  slid.Moves.resize(isopoints.Points.size() / 3, slid.LargestMove());
   // One search index over the slid points, for this check, the splat radii and the Enclosed
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
@@ -367,7 +367,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // The largest move over the points the ranks keep (under MPI each keeps those nearest its own
   // samples: together the serial run's points; its others, towards its halo's edge, may have
   // slid on cut neighbourhoods, and the LevelSet shift is capped by this move).
-  double keptLargestMove = slid.LargestMove;
+  double keptLargestMove = slid.LargestMove();
   if (ranks.Distributed())
   {
     keptLargestMove = 0.0;
