@@ -44,6 +44,16 @@ const char* RefusalText(int refusal)
       return "";
   }
 }
+// A slid point against the band the last full run resolved: the samples beyond it (phi clamped)
+// lie two neighbourhoods or more from the point (Inside), or may lie nearer (NearEdge: looked
+// for after the slide, ClampedSamplesClear), or the point left the band (Outside: refused).
+enum class BandPlace
+{
+  Inside,
+  NearEdge,
+  Outside
+};
+
 // What each thread of a slide keeps: a nearest-sample search's results.
 struct SlideScratch
 {
@@ -112,11 +122,17 @@ std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double va
   return order;
 }
 
-// Whether a point that moved `move` from where the last full run put it, its nearest sample
-// `sample`, leaves the band that run resolved (`bandReach`, SlideSettings::BandReach).
-bool BeyondBand(const Neighborhoods& geometry, double move, std::size_t sample, double bandReach)
+// Where a point that travelled `way` from where the last full run put it (its nearest sample
+// `sample`) stands against the band that run resolved (`bandReach`, SlideSettings::BandReach).
+BandPlace PlaceInBand(
+  const Neighborhoods& geometry, double way, std::size_t sample, double bandReach)
 {
-  return move + 2.0 * geometry.RadiusOf(sample) > bandReach;
+  if (!(way <= bandReach))
+  {
+    return BandPlace::Outside;
+  }
+  return way + 2.0 * geometry.RadiusOf(sample) > bandReach ? BandPlace::NearEdge
+                                                           : BandPlace::Inside;
 }
 
 // The `fit` samples nearest to p into `ids`, searched within the farthest of the `found` samples
@@ -156,6 +172,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   const std::vector<std::uint32_t>& samples = isopoints.FitSamples;
   std::vector<double> newCentres(points.size()), moves(count);
+  std::vector<char> nearEdge(count);
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
   const std::vector<std::uint32_t> order =
     withModels ? FarthestFirst(isopoints, settings.ValueChange) : std::vector<std::uint32_t>();
@@ -193,6 +210,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
       Eigen::Vector3d p = start, gradient;
       Eigen::Matrix3d lastModelHessian = Eigen::Matrix3d::Zero();
       bool reached = false, crossed = true;
+      double way = 0.0; // the length of the point's path so far
       for (int step = 0; step < settings.Steps && !reached && crossed; ++step)
       {
         double reach = settings.MaximumMove - (p - centre).norm();
@@ -241,7 +259,8 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
             crossed = false;
             break;
           }
-          if (BeyondBand(geometry, (p - start).norm(), nearest[0], settings.BandReach))
+          way += (p - from).norm();
+          if (PlaceInBand(geometry, way, nearest[0], settings.BandReach) == BandPlace::Outside)
           {
             break; // leaving the band (refused below, and soon: the other points stop too)
           }
@@ -276,6 +295,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         {
           break;
         }
+        way += (p - from).norm();
         // The fit's gradient where the point ended, by its quadratic model (the last fit was
         // made where the last iteration started).
         gradient += lastHessian * (p - evaluatedAt);
@@ -291,13 +311,14 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         refusal = crossed ? TooFar : NoCrossing;
         break;
       }
-      const double move = (p - start).norm();
-      if (BeyondBand(geometry, move, nearest[0], settings.BandReach))
+      const BandPlace place = PlaceInBand(geometry, way, nearest[0], settings.BandReach);
+      if (place == BandPlace::Outside)
       {
         refusal = TooFar;
         break;
       }
-      moves[i] = move;
+      moves[i] = way;
+      nearEdge[i] = place == BandPlace::NearEdge;
       bool in = false, out = false;
       for (std::size_t j = 0; j < found; ++j)
       {
@@ -345,6 +366,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
     centres.swap(newCentres);
     isopoints.FitModels.swap(models);
     result.Moves.swap(moves);
+    result.NearBandEdge.swap(nearEdge);
   }
   return result;
 }
@@ -355,6 +377,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 {
   const std::size_t count = isopoints.Points.size() / 3;
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count);
+  std::vector<char> nearEdge(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch : SlideScratch
@@ -390,13 +413,15 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         refusal = TooFar;
         break;
       }
-      const double move = (p - start).norm();
-      if (BeyondBand(geometry, move, s.Ids[0], bandReach))
+      const double way = (p - start).norm(); // (along a straight line)
+      const BandPlace place = PlaceInBand(geometry, way, s.Ids[0], bandReach);
+      if (place == BandPlace::Outside)
       {
         refusal = TooFar;
         break;
       }
-      moves[i] = move;
+      moves[i] = way;
+      nearEdge[i] = place == BandPlace::NearEdge;
       for (int d = 0; d < 3; ++d)
       {
         points[3 * i + d] = p[d];
@@ -410,6 +435,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
     isopoints.Points.swap(points);
     isopoints.Normals.swap(normals);
     result.Moves.swap(moves);
+    result.NearBandEdge.swap(nearEdge);
   }
   return result;
 }
@@ -462,6 +488,46 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
     }
   });
   return near;
+}
+
+bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double>& phi,
+  double halfWidth, const std::vector<double>& points, const std::vector<char>& nearEdge,
+  const std::vector<char>* kept, double margin)
+{
+  const std::size_t count = std::min(points.size() / 3, nearEdge.size());
+  std::atomic<bool> clear(true);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end && clear.load(std::memory_order_relaxed); ++i)
+    {
+      if (!nearEdge[i] || (kept && !(*kept)[i]))
+      {
+        continue;
+      }
+      const double* p = &points[3 * i];
+      std::uint32_t nearest;
+      double d2;
+      if (geometry.Index->Nearest(p, 1, &nearest, &d2) == 0)
+      {
+        continue;
+      }
+      // (Searched within twice the nearest sample's radius: the Inside rule's bound.)
+      const double search = 2.0 * geometry.RadiusOf(nearest) + margin;
+      const bool found =
+        geometry.Index->AnyWithin(p, search * search, [&](std::uint32_t j, double distance2) {
+          if (std::abs(phi[j]) < halfWidth)
+          {
+            return false;
+          }
+          const double shell = geometry.RadiusOf(j) + margin;
+          return distance2 < shell * shell;
+        });
+      if (found)
+      {
+        clear = false;
+      }
+    }
+  });
+  return clear;
 }
 
 std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,

@@ -32,10 +32,11 @@ struct SlideSettings
   double MaximumMove = 0.0; // per step: the refinement's reach from where it gathered
   double FarMove = 0.0;     // a stride's longest towards a level beyond that reach
   int Steps = 12;           // steps at most, each from the samples nearest to where it starts
-  // How far the surface may move: a point's move plus twice the neighbourhood radius of the
-  // sample nearest to it must stay within this (the band's half width less the slides before:
-  // the samples beyond the band, whose phi stays clamped, then lie two neighbourhoods or more
-  // from the new surface, where the Enclosed table counts them whole or not at all).
+  // How far the surface may move: the band's half width less the slides before. A point's path
+  // must stay within it; where its path plus twice the neighbourhood radius of the sample
+  // nearest to it leaves it, samples beyond the band (whose phi stays clamped) may lie nearer
+  // than two neighbourhoods to the new surface: the point is flagged (NearBandEdge) for
+  // ClampedSamplesClear.
   double BandReach = HUGE_VAL;
   int Iterations = 3; // the refinement's iterations and tolerance (IsopointSettings)
   double Tolerance = 0.0;
@@ -46,8 +47,13 @@ struct SlideSettings
 struct SlideResult
 {
   bool Accepted = false;
-  std::string Refusal;       // why not, in words (for the debug output)
-  std::vector<double> Moves; // each point's, when accepted
+  std::string Refusal; // why not, in words (for the debug output)
+  // Each point's way (the length of its path: a sample it passed lies within it of where the
+  // point ended), when accepted.
+  std::vector<double> Moves;
+  // Per point, when accepted: 1 where its way plus twice the neighbourhood radius of the sample
+  // nearest to it leaves SlideSettings::BandReach (ClampedSamplesClear then looks around it).
+  std::vector<char> NearBandEdge;
   double LargestMove() const // of any point (0 without points)
   {
     return this->Moves.empty() ? 0.0 : *std::max_element(this->Moves.begin(), this->Moves.end());
@@ -92,6 +98,18 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
   double margin, std::size_t& changed, vtkIdType particles);
+
+/// Whether no sample beyond the band the last full run resolved (|phi| at least `halfWidth`,
+/// clamped: its distance to the surface unknown) lies within its own neighbourhood radius plus
+/// `margin` of one of `points` flagged in `nearEdge` (and in `kept`, when given: under MPI the
+/// points this rank keeps). The Enclosed table counts a sample a shell width (that radius) or
+/// more from the surface whole or not at all, by phi's sign, which a clamped phi still gives;
+/// nearer, it would need the distance a clamped phi lacks. `margin`: how far the surface may
+/// lie from its nearest point (its points' spacing). Looked for within twice the radius of the
+/// sample nearest to each flagged point, plus `margin`.
+bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double>& phi,
+  double halfWidth, const std::vector<double>& points, const std::vector<char>& nearEdge,
+  const std::vector<char>* kept, double margin);
 
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the
 /// samples of the band (|phi| < halfWidth, whose MLS stencils the evolution computed) with the

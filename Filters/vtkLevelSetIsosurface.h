@@ -123,18 +123,21 @@ public:
    * boundary shot anew from the new inside's edge of the cloud), several times faster. The flood
    * from the seeds runs at the new isovalue and may change only next to the slid surface, no
    * further from it than the surface moved there; every point must land between the new inside
-   * and outside, and within the band the last full run resolved (its move, plus twice the
-   * neighbourhood radius, within the band's half width: about 5 spacings in all at the default
-   * parameters). Otherwise (a larger change, a component joined or lost, a cavity opened, MPI in a
-   * periodic box) the method runs in full; in a periodic box every point slides, those beyond the
-   * faces too, and the kept cell is cut anew. Under MPI every rank slides the points it found, and
-   * all slide or none. The points then lie on the same level as the full method's, as many as the
-   * last run's (crowding where the surface shrank); the LevelSet array is the last one moved by the
-   * change over the data's gradient (within the band), so it and the Enclosed table match a full
-   * run to first order in the change (after a move of several spacings the LevelSet array near the
-   * new surface is the last run's from that depth: within the method's own error of the signed
-   * distance, but not the method's). Off: every run is the full method, whatever ran before
-   * (reproducible from the parameters alone). SlidLastSurface tells which happened. */
+   * and outside, within the band the last full run resolved (about 8 spacings from where it put
+   * the surface, at the default parameters), and no particle beyond that band (whose LevelSet
+   * stays clamped) may come within its neighbourhood radius plus a cell of the new surface: the
+   * Enclosed table weighs those by their distance, which the clamped LevelSet lacks (about 6
+   * spacings of move in all at the default parameters). Otherwise (a larger change, a component
+   * joined or lost, a cavity opened, MPI in a periodic box) the method runs in full; in a periodic
+   * box every point slides, those beyond the faces too, and the kept cell is cut anew. Under MPI
+   * every rank slides the points it found, and all slide or none. The points then lie on the same
+   * level as the full method's, as many as the last run's (crowding where the surface shrank); the
+   * LevelSet array is the last one moved by the change over the data's gradient (within the band),
+   * so it and the Enclosed table match a full run to first order in the change (after a move of
+   * several spacings the LevelSet array near the new surface is the last run's from that depth:
+   * within the method's own error of the signed distance, but not the method's). Off: every run is
+   * the full method, whatever ran before (reproducible from the parameters alone). SlidLastSurface
+   * tells which happened. */
   vtkSetMacro(QuickIsoValueChanges, bool);
   vtkGetMacro(QuickIsoValueChanges, bool);
   vtkBooleanMacro(QuickIsoValueChanges, bool);

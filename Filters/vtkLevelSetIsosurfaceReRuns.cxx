@@ -351,10 +351,12 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     return false;
   }
   std::size_t changed = 0;
-  // A sample that changed sides lies between the old and the new level: within the move there
+  // A sample that changed sides lies between the old and the new level: within the way there
   // and the points' spacing (two cells) of a slid point. (The free boundary's points, shot
-  // anew, count as moved the most.)
-  slid.Moves.resize(isopoints.Points.size() / 3, slid.LargestMove());
+  // anew along the cloud's edge, count as moved the most, and as away from the band's edge.)
+  const std::size_t pointCount = isopoints.Points.size() / 3;
+  slid.Moves.resize(pointCount, slid.LargestMove());
+  slid.NearBandEdge.resize(pointCount, 0);
   // One search index over the slid points, for this check, the splat radii and the Enclosed
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
@@ -364,16 +366,20 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const vtkIdType counted = this->Internal->Box.Enabled
     ? this->Internal->OriginalCount
     : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
-  // The largest move over the points the ranks keep (under MPI each keeps those nearest its own
-  // samples: together the serial run's points; its others, towards its halo's edge, may have
-  // slid on cut neighbourhoods, and the LevelSet shift is capped by this move).
+  // The points the ranks keep (under MPI each keeps those nearest its own samples: together the
+  // serial run's points; its others, towards its halo's edge, may have slid on cut
+  // neighbourhoods): the LevelSet shift is capped by their largest move, and only they are
+  // checked against the samples beyond the band.
+  std::vector<char> keptPoints;
   double keptLargestMove = slid.LargestMove();
   if (ranks.Distributed())
   {
     keptLargestMove = 0.0;
-    for (std::size_t i = 0; i < slid.Moves.size(); ++i)
+    keptPoints.resize(pointCount);
+    for (std::size_t i = 0; i < pointCount; ++i)
     {
-      if (lsi::OwnsNearestSample(*geometry, ranks, &isopoints.Points[3 * i]))
+      keptPoints[i] = lsi::OwnsNearestSample(*geometry, ranks, &isopoints.Points[3 * i]);
+      if (keptPoints[i])
       {
         keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
       }
@@ -381,12 +387,21 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   }
   const double largestMove = ranks.Max(keptLargestMove);
   // (A rank without points, whose index is null, accepts only if none of its samples changed.)
-  const bool accepted = ranks.All(slid.Accepted &&
+  const bool changesNear = slid.Accepted &&
     lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, surfaceIndex.get(), slid.Moves,
-      2.0 * settings.CellSize, changed, counted));
+      2.0 * settings.CellSize, changed, counted);
+  // (The surface lies within about half its points' spacing of them: one cell is the margin.)
+  const bool clampedClear = changesNear &&
+    lsi::ClampedSamplesClear(*geometry, last.Phi, last.HalfWidth, isopoints.Points,
+      slid.NearBandEdge, ranks.Distributed() ? &keptPoints : nullptr, settings.CellSize);
+  const bool accepted = ranks.All(clampedClear);
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
-                << (slid.Accepted ? std::string() : ": " + slid.Refusal) << "; largest move "
-                << largestMove << ", " << changed << " samples changed sides");
+                << (!slid.Accepted    ? ": " + slid.Refusal
+                       : !changesNear ? std::string(": samples changed sides away from the points")
+                       : !clampedClear
+                       ? std::string(": a sample beyond the band would lie within a shell width")
+                       : std::string())
+                << "; largest move " << largestMove << ", " << changed << " samples changed sides");
   if (!accepted)
   {
     return false;

@@ -78,6 +78,16 @@ public:
     return this->Nearest(query, k, indices, squaredDistances);
   }
 
+  /// Whether a point closer than sqrt(squaredRadius) to `query` satisfies `accept(index,
+  /// squaredDistance)`; the walk stops at the first that does.
+  template <typename Accept>
+  bool AnyWithin(const double query[3], double squaredRadius, Accept&& accept) const
+  {
+    FirstAccepted<Accept> result(squaredRadius, accept);
+    this->Tree.findNeighbors(result, query, nanoflann::SearchParams());
+    return result.Found;
+  }
+
   std::size_t Size() const { return this->Cloud.Count; }
 
 private:
@@ -95,6 +105,33 @@ private:
     {
       return false;
     }
+  };
+  // A nanoflann result set that keeps nothing: it stops the walk at the first point within the
+  // radius that `Accept` takes.
+  template <typename Accept>
+  struct FirstAccepted
+  {
+    double Radius2;
+    Accept& Take;
+    bool Found = false;
+    FirstAccepted(double radius2, Accept& take)
+      : Radius2(radius2)
+      , Take(take)
+    {
+    }
+    void init() {}
+    std::size_t size() const { return this->Found ? 1 : 0; }
+    bool full() const { return true; }
+    bool addPoint(double distance2, std::uint32_t index)
+    {
+      if (distance2 < this->Radius2 && this->Take(index, distance2))
+      {
+        this->Found = true;
+        return false; // stop
+      }
+      return true;
+    }
+    double worstDist() const { return this->Radius2; }
   };
   using Tree3D = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
     Adaptor, 3, std::uint32_t>;

@@ -650,6 +650,53 @@ void TestBoundedSearchKeepsTies()
   Check(compared == 4 * n && same == compared, what.c_str());
 }
 
+// AnyWithin (the slide's look for clamped samples near a point): on a lattice, whether a point
+// with an accepted index lies strictly within the radius, against a scan of every point; and the
+// walk stops at the first accepted point.
+void TestAnyWithin()
+{
+  const int side = 10;
+  lsi::UninitializedVector<double> xyz;
+  for (int x = 0; x < side; ++x)
+    for (int y = 0; y < side; ++y)
+      for (int z = 0; z < side; ++z)
+        xyz.insert(xyz.end(), { double(x), double(y), double(z) });
+  lsi::UninitializedVector<std::uint32_t> oldIndex;
+  const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(xyz, oldIndex);
+  const std::size_t n = xyz.size() / 3;
+  std::size_t agreed = 0, asked = 0, found = 0;
+  for (const double radius : { 0.5, 1.0, 1.7, 3.2 })
+  {
+    for (std::size_t q = 0; q < n; q += 7)
+    {
+      const double query[3] = { xyz[3 * q] + 0.3, xyz[3 * q + 1] - 0.2, xyz[3 * q + 2] + 0.1 };
+      auto accepted = [](std::uint32_t i) { return i % 5 == 3; };
+      bool scanned = false;
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        double d2 = 0.0;
+        for (int d = 0; d < 3; ++d)
+          d2 += (xyz[3 * i + d] - query[d]) * (xyz[3 * i + d] - query[d]);
+        scanned = scanned || (d2 < radius * radius && accepted(static_cast<std::uint32_t>(i)));
+      }
+      int afterAccepted = 0; // points offered after one was accepted: the walk must stop
+      bool taken = false;
+      const bool any = tree->AnyWithin(query, radius * radius, [&](std::uint32_t i, double d2) {
+        afterAccepted += taken ? 1 : 0;
+        taken = taken || accepted(i);
+        return accepted(i) && d2 < radius * radius;
+      });
+      agreed += any == scanned && afterAccepted == 0 ? 1 : 0;
+      found += any ? 1 : 0;
+      ++asked;
+    }
+  }
+  const std::string what = "AnyWithin agrees with a scan of every point (" +
+    std::to_string(agreed) + " of " + std::to_string(asked) + ", " + std::to_string(found) +
+    " found)";
+  Check(agreed == asked && found > 0 && found < asked, what.c_str());
+}
+
 void TestRosenthalLinsen()
 {
   // phi relaxes towards g by the rate, and never by more than the step bound.
@@ -969,6 +1016,7 @@ int main()
   TestMortonTree();
   TestStillNearest();
   TestBoundedSearchKeepsTies();
+  TestAnyWithin();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
   TestSolveOnLine();

@@ -275,6 +275,67 @@ void TestSlidesOnOneBall()
     pattern == "ssms", "steps of 1.9 spacings: two slides, the method, a slide (" + pattern + ")");
 }
 
+// The same ball, its surface moved by changes the band the last full run resolved (to about 8
+// spacings deep: the method's phi overstates depth by a fraction of a spacing there) holds only
+// in part: a point's path plus twice a neighbourhood radius (3.8 spacings) leaves it, so
+// samples beyond the band (phi clamped) may come within a shell width of the new surface.
+// Shrunk by 5 spacings, or grown by 4.5, they stay a shell width and a cell away: the change
+// slides, and the Enclosed table's volume and area are the method's (and the exact ball's, as
+// closely). Shrunk by 6.5, a clamped sample lies 1.5 spacings inside the new surface, within
+// its shell: the method runs, with exactly its outputs.
+void TestSlideNearTheBandsEdge()
+{
+  vtkSmartPointer<vtkPolyData> data =
+    Sampled(216000, 60.0, 7, [](const double* x) { return 20.0 - FromAxisPoint(x, 30.0); });
+  auto column = [](vtkLevelSetIsosurface* filter, const char* name) {
+    vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(3));
+    return table && table->GetNumberOfRows() > 0
+      ? table->GetValueByName(table->GetNumberOfRows() - 1, name).ToDouble()
+      : 0.0;
+  };
+  const double pi = 3.14159265358979323846;
+  for (double change : { 5.0, -4.5, 6.5 })
+  {
+    vtkNew<vtkLevelSetIsosurface> quick;
+    Configure(quick, data, 0.0);
+    quick->QuickIsoValueChangesOn();
+    quick->Update();
+    quick->SetIsoValue(change);
+    quick->Update();
+    vtkNew<vtkLevelSetIsosurface> full;
+    Configure(full, data, change);
+    full->Update();
+    const std::string at = " after a change of " + std::to_string(change);
+    if (change > 6.0)
+    {
+      Check(
+        !quick->GetSlidLastSurface(), "samples beyond the band within a shell: the method" + at);
+      vtkPolyData* a = quick->GetOutput(0);
+      vtkPolyData* b = full->GetOutput(0);
+      bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints();
+      for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); i += 97)
+      {
+        same = a->GetPoint(i)[0] == b->GetPoint(i)[0] && a->GetPoint(i)[2] == b->GetPoint(i)[2];
+      }
+      Check(same, "with exactly the method's surface" + at);
+      continue;
+    }
+    Check(quick->GetSlidLastSurface(), "a change near the band's edge slides" + at);
+    const double radius = 20.0 - change;
+    const double volume = column(quick, "Volume"), fullVolume = column(full, "Volume");
+    const double exactVolume = 4.0 / 3.0 * pi * radius * radius * radius;
+    Check(std::abs(volume - fullVolume) < 0.002 * fullVolume,
+      "the enclosed volume is the method's within 0.2%" + at + " (" + std::to_string(volume) +
+        " and " + std::to_string(fullVolume) + ", exact " + std::to_string(exactVolume) + ")");
+    const double area = column(quick, "SurfaceArea"), fullArea = column(full, "SurfaceArea");
+    const double exactArea = 4.0 * pi * radius * radius;
+    Check(std::abs(area - exactArea) < std::abs(fullArea - exactArea) + 0.005 * exactArea,
+      "the surface area is as close to the sphere's as the method's" + at + " (" +
+        std::to_string(area) + " and " + std::to_string(fullArea) + ", exact " +
+        std::to_string(exactArea) + ")");
+  }
+}
+
 // Two balls of radius 10, 4 apart, joined by a tube of radius 2 along which f = -0.2, the
 // seed in the first: at isovalue 0 only the first ball is flooded. Lowering the isovalue by
 // 0.35 (the level moves a third of a spacing) floods the tube and the second ball, away from
@@ -664,6 +725,7 @@ void TestPeriodicBox()
 int main()
 {
   TestSlidesOnOneBall();
+  TestSlideNearTheBandsEdge();
   TestComponentsJoinedOrLost();
   TestCavityOpening();
   TestCavityNearerThanTheLargestMove();
