@@ -10,7 +10,8 @@
 //     of either route, the fastest of 3 from the same state;
 //   - the same isovalue changes with QuickIsoValueChanges on, and one of 10% (whether the
 //     surface slid; its points, their mean distance to the exact new level and the largest gap
-//     from that level's points to them, and the full method's);
+//     from that level's points to them, the Enclosed table's volume and area against the exact
+//     level's, and the full method's);
 //   - the whole filter with 1 and with 2 threads;
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
@@ -24,6 +25,7 @@
 //   LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] [--json FILE]
 //   LevelSetInteractive --first-run-only N   (the child: prints its measurements on one line)
 #include "CaseRuns.h"
+#include "ExactEnclosed.h"
 #include "GridRoute.h"
 #include "PeakMemory.h"
 #include "SurfaceMetrics.h"
@@ -35,6 +37,8 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkTable.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <array>
@@ -412,6 +416,19 @@ int main(int argc, char* argv[])
   };
   std::array<bool, 3> slid{};
   std::array<std::array<double, 8>, 3> quickStages{};
+  // What each surface encloses (the Enclosed table's total row): the slid one's, the method's,
+  // and the exact level's.
+  auto enclosedOf = [&]() {
+    vtkTable* table = vtkTable::SafeDownCast(filter->GetOutputDataObject(3));
+    Enclosed e;
+    if (table && table->GetNumberOfRows() > 0)
+    {
+      e.Volume = table->GetValueByName(table->GetNumberOfRows() - 1, "Volume").ToDouble();
+      e.Area = table->GetValueByName(table->GetNumberOfRows() - 1, "SurfaceArea").ToDouble();
+    }
+    return e;
+  };
+  std::array<Enclosed, 3> quickEnclosed, methodEnclosed, exactEnclosed;
   for (std::size_t k = 0; k < 3; ++k)
   {
     // Each from the full method at the case's isovalue (Modified: not a slide back), which keeps
@@ -424,9 +441,12 @@ int main(int argc, char* argv[])
       [&]() { filter->SetIsoValue(isoValues[k]); }, quickStages[k]);
     slid[k] = filter->GetSlidLastSurface();
     quickMetrics[k] = measureAt(isoValues[k]);
+    quickEnclosed[k] = enclosedOf();
     filter->SetQuickIsoValueChanges(false); // the full method at the new isovalue, to compare
     TimedUpdate(filter);
     methodMetrics[k] = measureAt(isoValues[k]);
+    methodEnclosed[k] = enclosedOf();
+    exactEnclosed[k] = ExactEnclosed(c, isoValues[k]);
     filter->SetQuickIsoValueChanges(true);
   }
   filter->SetQuickIsoValueChanges(false);
@@ -457,6 +477,12 @@ int main(int argc, char* argv[])
     report.Add(prefix + ".largest_gap_spacings", quickMetrics[k].MaxGapToIsopoint / surfaceSpacing);
     report.Add(
       prefix + ".method_largest_gap_spacings", methodMetrics[k].MaxGapToIsopoint / surfaceSpacing);
+    // The Enclosed table's volume and surface area against the exact level's, relative.
+    const Enclosed& exact = exactEnclosed[k];
+    report.Add(prefix + ".volume_error", quickEnclosed[k].Volume / exact.Volume - 1.0);
+    report.Add(prefix + ".method_volume_error", methodEnclosed[k].Volume / exact.Volume - 1.0);
+    report.Add(prefix + ".area_error", quickEnclosed[k].Area / exact.Area - 1.0);
+    report.Add(prefix + ".method_area_error", methodEnclosed[k].Area / exact.Area - 1.0);
   }
 
   // Threads: fresh filters on the same particles, the fastest of 3 runs each.
