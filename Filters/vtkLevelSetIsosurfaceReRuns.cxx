@@ -421,12 +421,20 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const lsi::PointCloudIndex* shownIndex = surfaceIndex.get();
   lsi::IsopointSet cut;
   std::unique_ptr<lsi::PointCloudIndex> cutIndex;
-  // Under MPI each rank shows the points nearest its own particles (KeepOwnedIsopoints).
+  // Under MPI each rank shows the points nearest its own particles (KeepOwnedIsopoints): those
+  // marked kept above (a slide under MPI has no periodic box to cut first).
   if (this->Internal->Box.Enabled || ranks.Distributed())
   {
     cut = isopoints;
     this->KeepPeriodicCell(cut);
-    this->KeepOwnedIsopoints(*geometry, cut);
+    if (ranks.Distributed() && !this->Internal->Box.Enabled)
+    {
+      lsi::KeepSelected(cut, lsi::ValidIndices(keptPoints));
+    }
+    else
+    {
+      this->KeepOwnedIsopoints(*geometry, cut);
+    }
     cutIndex = lsi::IndexOfPoints(cut.Points);
     shown = &cut;
     shownIndex = cutIndex.get();
