@@ -7,6 +7,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <vector>
 
@@ -111,6 +112,13 @@ std::uint64_t ValueFingerprint(vtkDataArray* array)
   });
 }
 
+std::uint64_t ValueFingerprint(const std::vector<double>& values)
+{
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  return BlockHash(n, Mix(static_cast<std::uint64_t>(VTK_DOUBLE), static_cast<std::uint64_t>(n)),
+    [&](vtkIdType i, std::uint64_t h) { return Mix(h, DoubleBits(values[i])); });
+}
+
 const Neighborhoods* NeighborCache::Get(
   vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built)
 {
@@ -155,6 +163,8 @@ const Neighborhoods* NeighborCache::Get(
   {
     return nullptr;
   }
+  static std::atomic<std::uint64_t> builds(0);
+  entry->Geometry.BuildNumber = ++builds;
   entry->Points = points;
   entry->PointsTime = points->GetMTime();
   entry->NumberOfPoints = n;

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <list>
 #include <memory>
+#include <vector>
 
 class vtkDataArray;
 class vtkPoints;
@@ -27,6 +28,9 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points);
 /// The same of an array's values (all components, bit patterns, in order), with its type and
 /// size.
 std::uint64_t ValueFingerprint(vtkDataArray* array);
+
+/// The same of a vector of doubles (as a one-component double array's).
+std::uint64_t ValueFingerprint(const std::vector<double>& values);
 
 class NeighborCache
 {

@@ -59,6 +59,10 @@ struct Neighborhoods
 
   double MeanRadius = 0.0; // mean h_i over the fixed sample of the samples (InRadiusSample)
 
+  // Which build this is: unique per build in the process (NeighborCache), so that what was
+  // computed on these samples is recognised as theirs (0: not numbered).
+  std::uint64_t BuildNumber = 0;
+
   // Seconds spent on each part of the build.
   double SortSeconds = 0.0, SearchSeconds = 0.0; // SearchSeconds includes TreeSeconds
   double TreeSeconds = 0.0;

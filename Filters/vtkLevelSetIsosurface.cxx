@@ -900,6 +900,28 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   const std::vector<double> spheres =
     lsi::SeedSpheres(this->SeedCenter, this->SeedRadius, this->AdditionalSeeds, bounds);
   lsi::KeptCellCenter(spheres, this->Internal->Box, this->Internal->SeedCenter);
+  // The same flood as the last run's (after a change of CurvatureWeight, say): start from its
+  // level set.
+  lsi::LastOutputs& last = this->Internal->Last;
+  lsi::FloodStart flood;
+  if (this->Initialization == FLOOD)
+  {
+    flood.Samples = geometry.BuildNumber;
+    flood.Offsets = lsi::ValueFingerprint(dataOffsets);
+    flood.Spheres = spheres;
+    std::copy(bounds, bounds + 6, flood.Bounds);
+    flood.HalfWidth = lsi::ReinitializationHalfWidth(settings);
+    flood.Spacing = settings.Spacing;
+    if (ranks.All(last.Start.SameStart(flood) && last.Start.Phi.size() == geometry.NumberOfSamples))
+    {
+      phi = last.Start.Phi;
+      last.SeedSpheres = spheres;
+      std::copy(bounds, bounds + 6, last.Bounds);
+      last.InSeed = last.Start.InSeed;
+      this->InitializationSeconds = SecondsSince(start);
+      return true;
+    }
+  }
   const lsi::SeedSphereStart seeds =
     lsi::SeedSphereDistance(geometry, spheres, bounds, 0.5 * settings.Spacing, phi, ranks);
   const std::string problem = lsi::CheckSeedSpheres(spheres, seeds.SamplesPerSphere);
@@ -913,7 +935,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   }
   if (this->Initialization == FLOOD)
   {
-    lsi::LastOutputs& last = this->Internal->Last; // the seeds, for quick re-runs
+    // (The seeds, for quick re-runs.)
     last.SeedSpheres = spheres;
     std::copy(bounds, bounds + 6, last.Bounds);
     last.InSeed = seeds.InSeed;
@@ -932,6 +954,10 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     {
       return false;
     }
+    flood.Phi = phi;
+    flood.InSeed = last.InSeed;
+    last.Start = std::move(flood);
+    ++this->FloodCount;
   }
   this->InitializationSeconds = SecondsSince(start);
   return true;
@@ -1329,7 +1355,7 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
     { "Kernel", this->Kernel }, { "SupportPerSmoothingLength", this->SupportPerSmoothingLength },
     { "UsedSPHField", this->UsedSPHField }, { "Periodic", this->Periodic },
     { "PeriodicMargin", this->PeriodicMargin }, { "PeriodicOutput", this->PeriodicOutput },
-    { "NeighborSearchCount", this->NeighborSearchCount },
+    { "NeighborSearchCount", this->NeighborSearchCount }, { "FloodCount", this->FloodCount },
     { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
     { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },
     { "Converged", this->Converged }, { "MeanSampleSpacing", this->MeanSampleSpacing },

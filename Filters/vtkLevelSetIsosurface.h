@@ -447,6 +447,10 @@ public:
   ///@{
   /** Read-only results of the last execution. */
   vtkGetMacro(NeighborSearchCount, int); // how many times the neighbourhoods were built
+  // How many times the flood ran (Initialization FLOOD): a run whose particles, scalars,
+  // IsoValue, seeds and band are the last flood's (a change of CurvatureWeight, TimeStep or an
+  // output property, say) starts from that flood's level set instead.
+  vtkGetMacro(FloodCount, int);
   // Whether the last run only moved the seeds within the same flooded samples and handed on
   // the run before's outputs (the evolution, isopoint and output stages then take 0 s).
   vtkGetMacro(ReusedLastOutputs, bool);
@@ -535,7 +539,7 @@ protected:
   int PeriodicOutput = IN_BOX;
 
   // Read-only results of the last execution (see the getters).
-  int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0;
+  int NeighborSearchCount = 0, NumberOfIterationsPerformed = 0, FloodCount = 0;
   vtkIdType NumberOfIsopoints = 0;
   bool Converged = false, UsedSPHField = false;
   double CommunicationSeconds = 0.0, GhostFraction = 0.0;

@@ -347,6 +347,88 @@ void TestReuseAfterSeedMove()
   Check(!filter->GetReusedLastOutputs(), "the seed-sphere start always runs again");
 }
 
+// A run whose flood would be the last one's (the same particles, scalars, isovalue, seeds and
+// band) starts from that flood's level set: after a change of CurvatureWeight or TimeStep the
+// flood does not run again, and the outputs are a fresh filter's to the bit. A change of the
+// seeds, the isovalue, the scalars or the points floods again, with again a fresh filter's
+// outputs.
+void TestReuseOfFlood()
+{
+  vtkNew<vtkPolyData> data = Ball(20000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  auto sameAsFresh = [&](const std::string& what) {
+    vtkNew<vtkLevelSetIsosurface> fresh;
+    Configure(fresh, data);
+    fresh->SetCurvatureWeight(filter->GetCurvatureWeight());
+    fresh->SetTimeStep(filter->GetTimeStep());
+    fresh->SetIsoValue(filter->GetIsoValue());
+    fresh->SetSeedCenter(filter->GetSeedCenter());
+    fresh->Update();
+    vtkPolyData* a = filter->GetOutput(0);
+    vtkPolyData* b = fresh->GetOutput(0);
+    bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints() && a->GetNumberOfPoints() > 500;
+    for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
+      }
+    }
+    vtkDataArray* phi = filter->GetOutput(1)->GetPointData()->GetArray("LevelSet");
+    vtkDataArray* freshPhi = fresh->GetOutput(1)->GetPointData()->GetArray("LevelSet");
+    for (vtkIdType i = 0; same && phi && freshPhi && i < phi->GetNumberOfTuples(); ++i)
+    {
+      same = phi->GetTuple1(i) == freshPhi->GetTuple1(i);
+    }
+    Check(same && phi && freshPhi, what + ": the outputs are a fresh filter's");
+  };
+  filter->Update();
+  Check(filter->GetFloodCount() == 1, "the first run floods");
+  filter->SetCurvatureWeight(0.3);
+  filter->Update();
+  Check(filter->GetFloodCount() == 1, "a CurvatureWeight change starts from the last flood");
+  sameAsFresh("after a CurvatureWeight change");
+  filter->SetTimeStep(0.5 * filter->GetEffectiveTimeStep());
+  filter->Update();
+  Check(filter->GetFloodCount() == 1, "a TimeStep change starts from the last flood");
+  sameAsFresh("after a TimeStep change");
+  filter->SetSeedCenter(31, 30, 30);
+  filter->SetCurvatureWeight(0.2);
+  filter->Update();
+  Check(filter->GetFloodCount() == 2, "moved seeds flood again");
+  sameAsFresh("after a seed move");
+  filter->SetIsoValue(1.0);
+  filter->Update();
+  Check(filter->GetFloodCount() == 3, "another isovalue floods again");
+  sameAsFresh("after an isovalue change");
+  // Scalars changed by a millionth (no sample changes sides, so the scale of the method does not
+  // change either; the crossings the flood measures from do).
+  vtkDataArray* f = data->GetPointData()->GetArray("f");
+  for (vtkIdType i = 0; i < f->GetNumberOfTuples(); i += 2)
+  {
+    f->SetTuple1(i, f->GetTuple1(i) + 1e-6);
+  }
+  f->Modified();
+  filter->Update();
+  Check(filter->GetFloodCount() == 4, "changed scalars flood again");
+  sameAsFresh("after the scalars changed");
+  // Points moved by up to a five-hundredth of a spacing (the same values): new neighbourhoods,
+  // a new flood.
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    data->GetPoint(i, x);
+    x[0] += 1e-3 * static_cast<double>(i % 3);
+    data->GetPoints()->SetPoint(i, x);
+  }
+  data->GetPoints()->Modified();
+  filter->SetCurvatureWeight(0.25);
+  filter->Update();
+  Check(filter->GetFloodCount() == 5, "moved points flood again");
+  sameAsFresh("after the points moved");
+}
+
 void TestReuseOfNeighbours()
 {
   vtkNew<vtkPolyData> data = Ball(20000);
@@ -817,6 +899,7 @@ int main()
   TestEnclosedComponents();
   TestReuseOfNeighbours();
   TestReuseAfterSeedMove();
+  TestReuseOfFlood();
   TestProgressThroughStages();
   TestStageTimesCoverTheRun();
   TestSeedRadiusMeanings();
