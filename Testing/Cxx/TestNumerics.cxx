@@ -612,18 +612,24 @@ void TestStillNearest()
   Check(held > 50 && failed > 50 && wrong == 0, what.c_str());
 }
 
+// The points of a side x side x side unit lattice.
+lsi::UninitializedVector<double> Lattice(int side)
+{
+  lsi::UninitializedVector<double> xyz;
+  for (int x = 0; x < side; ++x)
+    for (int y = 0; y < side; ++y)
+      for (int z = 0; z < side; ++z)
+        xyz.insert(xyz.end(), { double(x), double(y), double(z) });
+  return xyz;
+}
+
 // The neighbour lists are computed when first needed, some with a search bounded by a nearby
 // sample's radius (LevelSetNeighborhoods): the bound must not change the list, not even which of
 // several samples at the same distance comes last. On a lattice, 10 neighbours cut through the
 // shell of 12 at distance sqrt(2).
 void TestBoundedSearchKeepsTies()
 {
-  const int side = 14;
-  lsi::UninitializedVector<double> xyz;
-  for (int x = 0; x < side; ++x)
-    for (int y = 0; y < side; ++y)
-      for (int z = 0; z < side; ++z)
-        xyz.insert(xyz.end(), { double(x), double(y), double(z) });
+  lsi::UninitializedVector<double> xyz = Lattice(14);
   lsi::UninitializedVector<std::uint32_t> oldIndex;
   const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(xyz, oldIndex);
   const lsi::PointCloudIndex& index = *tree;
@@ -655,12 +661,7 @@ void TestBoundedSearchKeepsTies()
 // walk stops at the first accepted point.
 void TestAnyWithin()
 {
-  const int side = 10;
-  lsi::UninitializedVector<double> xyz;
-  for (int x = 0; x < side; ++x)
-    for (int y = 0; y < side; ++y)
-      for (int z = 0; z < side; ++z)
-        xyz.insert(xyz.end(), { double(x), double(y), double(z) });
+  lsi::UninitializedVector<double> xyz = Lattice(10);
   lsi::UninitializedVector<std::uint32_t> oldIndex;
   const std::unique_ptr<lsi::PointCloudIndex> tree = lsi::MortonTree(xyz, oldIndex);
   const std::size_t n = xyz.size() / 3;
