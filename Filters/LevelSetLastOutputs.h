@@ -77,14 +77,14 @@ struct InputStamp
 /// The level set the flood started the last evolution from, with what it depends on: a run on
 /// the same samples (told by their neighbourhoods' BuildNumber) with the same data offsets (f -
 /// f_iso in storage order, told by a fingerprint), seed spheres, band and spacing starts from it
-/// instead of flooding again: a change of CurvatureWeight, Epsilon, TimeStep or an output
-/// property. Under MPI each rank keeps its own, and all start from theirs or none does.
+/// instead of flooding again: a change of CurvatureWeight, TimeStep or an output property (not
+/// of Epsilon, which sets the band). Under MPI each rank keeps its own, and all start from
+/// theirs or none does.
 struct FloodStart
 {
   std::uint64_t Samples = 0; // Neighborhoods::BuildNumber (0: nothing kept)
   std::uint64_t Offsets = 0; // ValueFingerprint of the data offsets
   std::vector<double> Spheres;
-  double Bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // the input's, which the spheres use
   double HalfWidth = 0.0, Spacing = 0.0;
   std::vector<double> Phi;  // the flood's signed distances (storage order)
   std::vector<char> InSeed; // the samples in the spheres

@@ -909,7 +909,6 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     flood.Samples = geometry.BuildNumber;
     flood.Offsets = lsi::ValueFingerprint(dataOffsets);
     flood.Spheres = spheres;
-    std::copy(bounds, bounds + 6, flood.Bounds);
     flood.HalfWidth = lsi::ReinitializationHalfWidth(settings);
     flood.Spacing = settings.Spacing;
     if (ranks.All(last.Start.SameStart(flood) && last.Start.Phi.size() == geometry.NumberOfSamples))
