@@ -138,6 +138,14 @@ struct LastOutputs
   double Slid = 0.0;
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
   FloodStart Start;              // the last flood's level set, for runs that change no input to it
+  // What the surface output was made from, for a change of its own properties alone (with
+  // QuickCheck): the points shown, with their fits' samples, and the points near them (under
+  // MPI every point this rank found: the splat radii's neighbours); whether the SPH field made
+  // it (then kept in Field, or the output is not remade).
+  bool SurfaceReady = false;
+  IsopointSet Shown;
+  std::vector<double> Nearby;
+  bool OnField = false;
 
   /// Keeps shallow copies of a successful run's outputs.
   void Remember(

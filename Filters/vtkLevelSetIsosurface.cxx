@@ -242,7 +242,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return true;
   }
+  const bool onlyOutputsChanged = this->GetMTime() == this->OutputsOnlyTime;
+  if ((ranks.Distributed() || onlyOutputsChanged) &&
+    this->RemakeSurfaceOutput(
+      onlyOutputsChanged, input, surfaceOutput, particleOutput, convergence, enclosed))
+  {
+    return true;
+  }
   last.Valid = false; // until this run succeeds
+  last.SurfaceReady = false;
   this->Internal->LastRanks.reset();
   this->InputSeconds = this->ParticleOutputSeconds = 0.0;
   auto inputStart = lsi::Clock::now();
@@ -390,6 +398,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
+  // (What the surface output was made from, for a change of its properties alone.)
+  last.Shown = last.QuickCheck ? isopoints : lsi::IsopointSet();
+  last.Nearby = last.QuickCheck && ranks.Distributed() ? nearby.Points : std::vector<double>();
+  last.OnField = field != nullptr;
   const auto particleStart = lsi::Clock::now();
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
@@ -416,6 +428,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   last.GhostFraction = this->GhostFraction;
+  last.SurfaceReady = last.QuickCheck;
   if (last.QuickCheck && ranks.Distributed())
   {
     this->Internal->LastRanks = std::move(thisRunsRanks); // (`ranks` stays valid: the same object)

@@ -402,7 +402,7 @@ public:
   ///@{
   /** What port 0 holds: SPLATS (default), a closed surface of small oriented polygons that any
    * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). */
-  vtkSetClampWarnMacro(OutputType, int, ISOPOINTS, SPLATS);
+  vtkSetClampWarnThenMacro(OutputType, int, ISOPOINTS, SPLATS, OutputsModified);
   vtkGetMacro(OutputType, int);
   void SetOutputTypeToIsopoints() { this->SetOutputType(ISOPOINTS); }
   void SetOutputTypeToSplats() { this->SetOutputType(SPLATS); }
@@ -411,13 +411,13 @@ public:
   ///@{
   /** Splat radius (the "SplatRadius" array, and the size of the polygons) relative to the
    * distance from each isopoint to its 6th nearest isopoint. Default 1. */
-  vtkSetClampWarnMacro(SplatScale, double, 0.01, 100.0);
+  vtkSetClampWarnThenMacro(SplatScale, double, 0.01, 100.0, OutputsModified);
   vtkGetMacro(SplatScale, double);
   ///@}
 
   ///@{
   /** Corners of each splat polygon. Default 8. */
-  vtkSetClampWarnMacro(SplatSides, int, 3, 64);
+  vtkSetClampWarnThenMacro(SplatSides, int, 3, 64, OutputsModified);
   vtkGetMacro(SplatSides, int);
   ///@}
 
@@ -425,7 +425,14 @@ public:
   /** Interpolate every point array of the input onto the surface (MLS linear fit over the
    * 2 (NumberOfNeighbors + 1) nearest particles), so it can be coloured by any particle
    * quantity. Default on. */
-  vtkSetMacro(InterpolateArrays, bool);
+  virtual void SetInterpolateArrays(bool interpolate)
+  {
+    if (this->InterpolateArrays != interpolate)
+    {
+      this->InterpolateArrays = interpolate;
+      this->OutputsModified();
+    }
+  }
   vtkGetMacro(InterpolateArrays, bool);
   vtkBooleanMacro(InterpolateArrays, bool);
   ///@}
@@ -564,8 +571,16 @@ private:
   // the main seed of the last flood's spheres).
   bool SameKeptCell() const;
   // Likewise for IsoValue: IsoValueOnlyTime is the modification time after an isovalue change
-  // when nothing else changed since the last run.
-  vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0, IsoValueOnlyTime = 0;
+  // when nothing else changed since the last run; and for the surface output's own properties
+  // (OutputType, SplatScale, SplatSides, InterpolateArrays): OutputsOnlyTime.
+  vtkMTimeType LastRunTime = 0, SeedsOnlyTime = 0, IsoValueOnlyTime = 0, OutputsOnlyTime = 0;
+  void OutputsModified();
+  // With only the surface output's properties changed since the last run: makes the surface
+  // output anew from the points the last run showed, and hands on its other outputs. False
+  // (nothing kept, or the input changed): run the method. Under MPI every rank calls it on
+  // every run (it decides with the others).
+  bool RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPointSet* input, vtkPolyData* surfaceOutput,
+    vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
   bool ReusedLastOutputs = false, SlidLastSurface = false;
   // With only IsoValue changed since the last run and QuickIsoValueChanges on: slides the last
   // surface onto the new level (LevelSetIsoValueSlide.h) if the checks there allow. False: run

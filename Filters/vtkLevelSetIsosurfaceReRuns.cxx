@@ -103,6 +103,54 @@ vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
   return this->GetInputArrayToProcess(0, input, association);
 }
 
+void vtkLevelSetIsosurface::OutputsModified()
+{
+  const vtkMTimeType before = this->GetMTime();
+  const bool onlyOutputs = before == this->LastRunTime || before == this->OutputsOnlyTime;
+  this->Modified();
+  this->OutputsOnlyTime = onlyOutputs ? this->GetMTime() : 0;
+}
+
+bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPointSet* input,
+  vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
+  vtkTable* enclosed)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  // Under MPI every rank decides with the others: all remake, or none.
+  const lsi::Neighborhoods* geometry = onlyOutputsChanged ? this->LastGeometry(input) : nullptr;
+  if (!this->Internal->Ranks->All(
+        geometry && this->LastRanksMatch() && last.SurfaceReady && (!last.OnField || last.Field)))
+  {
+    return false;
+  }
+  const LastRanksScope lastRanks(*this->Internal);
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  const auto start = lsi::Clock::now();
+  // (Under MPI the splat radii come from every point this rank found, as in a full run.)
+  const std::vector<double>& nearby = ranks.Distributed() ? last.Nearby : last.Shown.Points;
+  const std::unique_ptr<lsi::PointCloudIndex> nearbyIndex = lsi::IndexOfPoints(nearby);
+  vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
+  last.Valid = false; // until the surface is made
+  if (!ranks.All(this->MakeSurfaceOutput(
+        work, *geometry, last.Shown, nearby, last.Field.get(), nearbyIndex.get(), surfaceOutput)))
+  {
+    return false;
+  }
+  particleOutput->ShallowCopy(last.Particles);
+  convergence->ShallowCopy(last.Convergence);
+  enclosed->ShallowCopy(last.Enclosed);
+  last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
+  this->NumberOfIterationsPerformed = last.Iterations;
+  this->Converged = last.Converged;
+  this->GhostFraction = last.GhostFraction;
+  this->NeighborSearchSeconds = this->InitializationSeconds = this->EvolutionSeconds =
+    this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
+      this->InputSeconds = this->ParticleOutputSeconds = 0.0;
+  this->OutputSeconds = lsi::SecondsSince(start);
+  this->LastRunTime = this->GetMTime();
+  return true;
+}
+
 const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)
 {
   const lsi::LastOutputs& last = this->Internal->Last;
@@ -449,6 +497,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   {
     return false;
   }
+  // (What the surface output was made from, for a change of its properties alone.)
+  last.Shown = *shown;
+  last.Nearby = ranks.Distributed() ? nearby.Points : std::vector<double>();
   start = lsi::Clock::now();
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;

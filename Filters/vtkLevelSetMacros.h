@@ -9,6 +9,10 @@
 #include "vtkSetGet.h"
 
 #define vtkSetClampWarnMacro(name, type, min, max)                                                 \
+  vtkSetClampWarnThenMacro(name, type, min, max, Modified)
+
+// The same, calling `touch` (a member function) instead of Modified when the value changes.
+#define vtkSetClampWarnThenMacro(name, type, min, max, touch)                                      \
   virtual void Set##name(type value)                                                               \
   {                                                                                                \
     const type clamped = value < (min) ? (min) : (value > (max) ? (max) : value);                  \
@@ -20,7 +24,7 @@
     if (!(this->name == clamped))                                                                  \
     {                                                                                              \
       this->name = clamped;                                                                        \
-      this->Modified();                                                                            \
+      this->touch();                                                                               \
     }                                                                                              \
   }
 

@@ -429,6 +429,94 @@ void TestReuseOfFlood()
   sameAsFresh("after the points moved");
 }
 
+// A change of the surface output's own properties (OutputType, SplatScale, SplatSides,
+// InterpolateArrays) alone makes that output anew from the last run's points, without running
+// the method (no evolution, no isopoints), to a fresh filter's output to the bit; the other
+// outputs are handed on. With another change too, the method runs. After a quick isovalue
+// change, the slid points are the ones shown anew.
+void TestRemakeOfSurfaceOutput()
+{
+  vtkNew<vtkPolyData> data = Ball(20000);
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  filter->Update();
+  auto sameAsFresh = [&](const std::string& what) {
+    vtkNew<vtkLevelSetIsosurface> fresh;
+    Configure(fresh, data);
+    fresh->SetOutputType(filter->GetOutputType());
+    fresh->SetSplatScale(filter->GetSplatScale());
+    fresh->SetSplatSides(filter->GetSplatSides());
+    fresh->SetInterpolateArrays(filter->GetInterpolateArrays());
+    fresh->SetCurvatureWeight(filter->GetCurvatureWeight());
+    fresh->Update();
+    vtkPolyData* a = filter->GetOutput(0);
+    vtkPolyData* b = fresh->GetOutput(0);
+    bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints() && a->GetNumberOfPoints() > 500 &&
+      a->GetNumberOfCells() == b->GetNumberOfCells() &&
+      a->GetPointData()->GetNumberOfArrays() == b->GetPointData()->GetNumberOfArrays();
+    for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
+      }
+    }
+    Check(same, what + ": a fresh filter's surface output");
+    Check(filter->GetOutput(1)->GetPointData()->GetArray("LevelSet") &&
+        vtkTable::SafeDownCast(filter->GetOutputDataObject(3))->GetNumberOfRows() > 0,
+      what + ": the other outputs are handed on");
+  };
+  auto remade = [&]() {
+    return filter->GetEvolutionSeconds() == 0.0 && filter->GetIsopointSeconds() == 0.0 &&
+      filter->GetOutputSeconds() > 0.0;
+  };
+  filter->SetOutputTypeToSplats();
+  filter->Update();
+  Check(remade(), "an OutputType change makes the surface output alone");
+  sameAsFresh("splats");
+  filter->SetSplatScale(2.0);
+  filter->SetSplatSides(5);
+  filter->Update();
+  Check(remade(), "SplatScale and SplatSides changes make the surface output alone");
+  sameAsFresh("larger splats with 5 sides");
+  filter->SetInterpolateArrays(false);
+  filter->SetOutputTypeToIsopoints();
+  filter->Update();
+  Check(remade() && !filter->GetOutput(0)->GetPointData()->GetArray("f"),
+    "InterpolateArrays off makes the surface output alone, without the arrays");
+  sameAsFresh("isopoints without arrays");
+  filter->SetInterpolateArrays(true);
+  filter->SetCurvatureWeight(0.3);
+  filter->Update();
+  Check(filter->GetEvolutionSeconds() > 0.0, "with a CurvatureWeight change the method runs");
+  sameAsFresh("after a CurvatureWeight change with InterpolateArrays");
+
+  // After a quick isovalue change the slid points are shown anew.
+  filter->QuickIsoValueChangesOn();
+  filter->Update();
+  filter->SetIsoValue(0.2);
+  filter->Update();
+  Check(filter->GetSlidLastSurface(), "a small isovalue change slides");
+  vtkNew<vtkPolyData> slid;
+  slid->DeepCopy(filter->GetOutput(0));
+  filter->SetOutputTypeToSplats();
+  filter->Update();
+  bool same = remade() && filter->GetOutput(0)->GetNumberOfPoints() > 0 &&
+    filter->GetOutput(0)->GetNumberOfCells() == slid->GetNumberOfPoints();
+  Check(same, "the slid points are shown as splats, one each");
+  filter->SetOutputTypeToIsopoints();
+  filter->Update();
+  same = remade() && filter->GetOutput(0)->GetNumberOfPoints() == slid->GetNumberOfPoints();
+  for (vtkIdType i = 0; same && i < slid->GetNumberOfPoints(); ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      same = same && filter->GetOutput(0)->GetPoint(i)[d] == slid->GetPoint(i)[d];
+    }
+  }
+  Check(same, "and back as isopoints, the slid points to the bit");
+}
+
 void TestReuseOfNeighbours()
 {
   vtkNew<vtkPolyData> data = Ball(20000);
@@ -900,6 +988,7 @@ int main()
   TestReuseOfNeighbours();
   TestReuseAfterSeedMove();
   TestReuseOfFlood();
+  TestRemakeOfSurfaceOutput();
   TestProgressThroughStages();
   TestStageTimesCoverTheRun();
   TestSeedRadiusMeanings();
