@@ -401,7 +401,10 @@ public:
   };
   ///@{
   /** What port 0 holds: SPLATS (default), a closed surface of small oriented polygons that any
-   * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). */
+   * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). A change
+   * of this, SplatScale, SplatSides or InterpolateArrays alone makes port 0 anew from the last
+   * run's points, without running the method (on the SPH field when QuickIsoValueChanges kept
+   * it); the other ports are handed on. */
   vtkSetClampWarnThenMacro(OutputType, int, ISOPOINTS, SPLATS, OutputsModified);
   vtkGetMacro(OutputType, int);
   void SetOutputTypeToIsopoints() { this->SetOutputType(ISOPOINTS); }
