@@ -347,6 +347,20 @@ void TestReuseAfterSeedMove()
   Check(!filter->GetReusedLastOutputs(), "the seed-sphere start always runs again");
 }
 
+// Whether two surfaces have the same points, to the bit, in the same order.
+bool SamePoints(vtkPolyData* a, vtkPolyData* b)
+{
+  bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints();
+  for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
+    }
+  }
+  return same;
+}
+
 // A run whose flood would be the last one's (the same particles, scalars, isovalue, seeds and
 // band) starts from that flood's level set: after a change of CurvatureWeight or TimeStep the
 // flood does not run again, and the outputs are a fresh filter's to the bit. A change of the
@@ -365,16 +379,8 @@ void TestReuseOfFlood()
     fresh->SetIsoValue(filter->GetIsoValue());
     fresh->SetSeedCenter(filter->GetSeedCenter());
     fresh->Update();
-    vtkPolyData* a = filter->GetOutput(0);
-    vtkPolyData* b = fresh->GetOutput(0);
-    bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints() && a->GetNumberOfPoints() > 500;
-    for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
-      }
-    }
+    bool same = filter->GetOutput(0)->GetNumberOfPoints() > 500 &&
+      SamePoints(filter->GetOutput(0), fresh->GetOutput(0));
     vtkDataArray* phi = filter->GetOutput(1)->GetPointData()->GetArray("LevelSet");
     vtkDataArray* freshPhi = fresh->GetOutput(1)->GetPointData()->GetArray("LevelSet");
     for (vtkIdType i = 0; same && phi && freshPhi && i < phi->GetNumberOfTuples(); ++i)
@@ -451,16 +457,9 @@ void TestRemakeOfSurfaceOutput()
     fresh->Update();
     vtkPolyData* a = filter->GetOutput(0);
     vtkPolyData* b = fresh->GetOutput(0);
-    bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints() && a->GetNumberOfPoints() > 500 &&
+    const bool same = a->GetNumberOfPoints() > 500 && SamePoints(a, b) &&
       a->GetNumberOfCells() == b->GetNumberOfCells() &&
       a->GetPointData()->GetNumberOfArrays() == b->GetPointData()->GetNumberOfArrays();
-    for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
-      }
-    }
     Check(same, what + ": a fresh filter's surface output");
     Check(filter->GetOutput(1)->GetPointData()->GetArray("LevelSet") &&
         vtkTable::SafeDownCast(filter->GetOutputDataObject(3))->GetNumberOfRows() > 0,
@@ -506,14 +505,7 @@ void TestRemakeOfSurfaceOutput()
   Check(same, "the slid points are shown as splats, one each");
   filter->SetOutputTypeToIsopoints();
   filter->Update();
-  same = remade() && filter->GetOutput(0)->GetNumberOfPoints() == slid->GetNumberOfPoints();
-  for (vtkIdType i = 0; same && i < slid->GetNumberOfPoints(); ++i)
-  {
-    for (int d = 0; d < 3; ++d)
-    {
-      same = same && filter->GetOutput(0)->GetPoint(i)[d] == slid->GetPoint(i)[d];
-    }
-  }
+  same = remade() && SamePoints(filter->GetOutput(0), slid);
   Check(same, "and back as isopoints, the slid points to the bit");
 }
 
