@@ -562,6 +562,9 @@ protected:
          ParticleOutputSeconds = 0.0;
 
 private:
+  // Marks the filter modified. Returns its new modification time when nothing but changes of
+  // one kind, whose last such time is `alone`, came since the last run; else 0.
+  vtkMTimeType ModifiedAlone(vtkMTimeType alone);
   // Seed changes mark the filter modified through this: when nothing else changed since the
   // last run, SeedsOnlyTime is the filter's modification time after them.
   void SeedsModified();

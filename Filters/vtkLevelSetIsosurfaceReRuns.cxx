@@ -76,12 +76,17 @@ bool vtkLevelSetIsosurface::LastRanksMatch() const
     : !internal.LastRanks;
 }
 
-void vtkLevelSetIsosurface::SeedsModified()
+vtkMTimeType vtkLevelSetIsosurface::ModifiedAlone(vtkMTimeType alone)
 {
   const vtkMTimeType before = this->GetMTime();
-  const bool onlySeeds = before == this->LastRunTime || before == this->SeedsOnlyTime;
+  const bool only = before == this->LastRunTime || before == alone;
   this->Modified();
-  this->SeedsOnlyTime = onlySeeds ? this->GetMTime() : 0;
+  return only ? this->GetMTime() : 0;
+}
+
+void vtkLevelSetIsosurface::SeedsModified()
+{
+  this->SeedsOnlyTime = this->ModifiedAlone(this->SeedsOnlyTime);
 }
 
 void vtkLevelSetIsosurface::SetIsoValue(double value)
@@ -90,11 +95,8 @@ void vtkLevelSetIsosurface::SetIsoValue(double value)
   {
     return;
   }
-  const vtkMTimeType before = this->GetMTime();
-  const bool onlyIsoValue = before == this->LastRunTime || before == this->IsoValueOnlyTime;
   this->IsoValue = value;
-  this->Modified();
-  this->IsoValueOnlyTime = onlyIsoValue ? this->GetMTime() : 0;
+  this->IsoValueOnlyTime = this->ModifiedAlone(this->IsoValueOnlyTime);
 }
 
 vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
@@ -105,10 +107,7 @@ vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
 
 void vtkLevelSetIsosurface::OutputsModified()
 {
-  const vtkMTimeType before = this->GetMTime();
-  const bool onlyOutputs = before == this->LastRunTime || before == this->OutputsOnlyTime;
-  this->Modified();
-  this->OutputsOnlyTime = onlyOutputs ? this->GetMTime() : 0;
+  this->OutputsOnlyTime = this->ModifiedAlone(this->OutputsOnlyTime);
 }
 
 bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPointSet* input,
