@@ -139,13 +139,25 @@ struct LastOutputs
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
   FloodStart Start;              // the last flood's level set, for runs that change no input to it
   // What the surface output was made from, for a change of its own properties alone (with
-  // QuickCheck): the points shown, with their fits' samples, and the points near them (under
-  // MPI every point this rank found: the splat radii's neighbours); whether the SPH field made
-  // it (then kept in Field, or the output is not remade).
+  // QuickCheck): the points shown, with their fits' samples (Isopoints themselves when those
+  // are they: one process, no periodic cell to cut; not kept twice), and under MPI the points
+  // near them, every point this rank found (the splat radii's neighbours: Isopoints when a
+  // slide keeps them); whether the SPH field made it (then kept in Field, or the output is not
+  // remade).
   bool SurfaceReady = false;
+  bool ShownAreIsopoints = false;
   IsopointSet Shown;
-  std::vector<double> Nearby;
+  std::vector<double> Nearby; // under MPI, without SlideReady
   bool OnField = false;
+  const IsopointSet& ShownPoints() const
+  {
+    return this->ShownAreIsopoints ? this->Isopoints : this->Shown;
+  }
+  const std::vector<double>& NearbyPoints(bool distributed) const
+  {
+    return !distributed ? this->ShownPoints().Points
+                        : (this->SlideReady ? this->Isopoints.Points : this->Nearby);
+  }
 
   /// Keeps shallow copies of a successful run's outputs.
   void Remember(

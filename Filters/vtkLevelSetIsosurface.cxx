@@ -398,9 +398,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  // (What the surface output was made from, for a change of its properties alone.)
-  last.Shown = last.QuickCheck ? isopoints : lsi::IsopointSet();
-  last.Nearby = last.QuickCheck && ranks.Distributed() ? nearby.Points : std::vector<double>();
   last.OnField = field != nullptr;
   const auto particleStart = lsi::Clock::now();
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
@@ -428,7 +425,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   last.GhostFraction = this->GhostFraction;
-  last.SurfaceReady = last.QuickCheck;
   if (last.QuickCheck && ranks.Distributed())
   {
     this->Internal->LastRanks = std::move(thisRunsRanks); // (`ranks` stays valid: the same object)
@@ -470,6 +466,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.HalfWidth = halfWidth;
     last.Slid = 0.0;
   }
+  // What the surface output was made from, for a change of its properties alone (LastOutputs::
+  // ShownPoints and NearbyPoints: Isopoints, where those are they).
+  last.SurfaceReady = last.QuickCheck;
+  last.ShownAreIsopoints = last.SlideReady && !keepsUncut;
+  last.Shown =
+    last.QuickCheck && !last.ShownAreIsopoints ? std::move(isopoints) : lsi::IsopointSet();
+  last.Nearby = last.QuickCheck && ranks.Distributed() && !last.SlideReady
+    ? std::move(allFound.Points)
+    : std::vector<double>();
   this->LastRunTime = this->GetMTime();
   return true;
 }

@@ -126,12 +126,12 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const auto start = lsi::Clock::now();
   // (Under MPI the splat radii come from every point this rank found, as in a full run.)
-  const std::vector<double>& nearby = ranks.Distributed() ? last.Nearby : last.Shown.Points;
+  const std::vector<double>& nearby = last.NearbyPoints(ranks.Distributed());
   const std::unique_ptr<lsi::PointCloudIndex> nearbyIndex = lsi::IndexOfPoints(nearby);
   vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
   last.Valid = false; // until the surface is made
-  if (!ranks.All(this->MakeSurfaceOutput(
-        work, *geometry, last.Shown, nearby, last.Field.get(), nearbyIndex.get(), surfaceOutput)))
+  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, last.ShownPoints(), nearby,
+        last.Field.get(), nearbyIndex.get(), surfaceOutput)))
   {
     return false;
   }
@@ -496,9 +496,6 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   {
     return false;
   }
-  // (What the surface output was made from, for a change of its properties alone.)
-  last.Shown = *shown;
-  last.Nearby = ranks.Distributed() ? nearby.Points : std::vector<double>();
   start = lsi::Clock::now();
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
@@ -527,6 +524,10 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   last.Inside = std::move(inside);
   last.IsoValue = isoValue;
   last.Slid += largestMove;
+  // (The points shown, for a change of the surface output's properties alone: the slid ones,
+  // or the cell or rank's cut of them.)
+  last.ShownAreIsopoints = shown == &isopoints;
+  last.Shown = last.ShownAreIsopoints ? lsi::IsopointSet() : std::move(cut);
   this->LastRunTime = this->GetMTime();
   return true;
 }

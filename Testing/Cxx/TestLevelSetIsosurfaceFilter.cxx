@@ -490,8 +490,15 @@ void TestRemakeOfSurfaceOutput()
   Check(filter->GetEvolutionSeconds() > 0.0, "with a CurvatureWeight change the method runs");
   sameAsFresh("after a CurvatureWeight change with InterpolateArrays");
 
-  // After a quick isovalue change the slid points are shown anew.
+  // With QuickIsoValueChanges on (the shown points are the ones kept for a slide), and after a
+  // quick isovalue change (the slid points) they are shown anew.
   filter->QuickIsoValueChangesOn();
+  filter->Update();
+  filter->SetOutputTypeToSplats();
+  filter->Update();
+  Check(remade(), "with QuickIsoValueChanges on, an OutputType change makes the output alone");
+  sameAsFresh("splats, QuickIsoValueChanges on");
+  filter->SetOutputTypeToIsopoints();
   filter->Update();
   filter->SetIsoValue(0.2);
   filter->Update();
