@@ -453,11 +453,38 @@ int main(int argc, char* argv[])
 
   filter->SetCurvatureWeight(2.0 * filter->GetCurvatureWeight() + 0.05);
   const double curvature = TimedUpdate(filter);
+
+  // Output-only changes (port 0 remade from the last run's points): isopoints to splats, and a
+  // new SplatScale; each against the method's run at the same settings (Modified: all again).
+  std::array<double, 8> outputTypeStages{}, splatScaleStages{}, unused{};
+  const double toSplats = fastestReRun([&]() { filter->SetOutputTypeToIsopoints(); },
+    [&]() { filter->SetOutputTypeToSplats(); }, outputTypeStages);
+  const vtkIdType remadeSplats = filter->GetOutput(0)->GetNumberOfCells();
+  const double toSplatsMethod = fastestReRun([&]() { filter->SetOutputTypeToIsopoints(); },
+    [&]() {
+      filter->SetOutputTypeToSplats();
+      filter->Modified();
+    },
+    unused);
+  const vtkIdType methodSplats = filter->GetOutput(0)->GetNumberOfCells();
+  const double scale = filter->GetSplatScale();
+  const double splatScale = fastestReRun([&]() { filter->SetSplatScale(scale); },
+    [&]() { filter->SetSplatScale(1.5 * scale); }, splatScaleStages);
+  filter->SetSplatScale(scale);
+  filter->SetOutputTypeToIsopoints();
   report.Add("level_set.isovalue_change_small_s", isoSmall);
   report.Add("level_set.isovalue_change_large_s", isoLarge);
   report.Add("level_set.seed_move_s", seed);
   report.Add("level_set.curvature_weight_change_s", curvature);
   report.Add("level_set.level_distance_spacings", fullDistance / surfaceSpacing);
+  report.Add("level_set.output_type_change_s", toSplats);
+  AddStages(report, "level_set.output_type_change.", outputTypeStages);
+  report.Add("level_set.output_type_change_method_s", toSplatsMethod);
+  // The remade splats and the method's are the same surface: their cell counts agree.
+  report.Add("level_set.output_type_change_splats", static_cast<double>(remadeSplats));
+  report.Add("level_set.output_type_change_method_splats", static_cast<double>(methodSplats));
+  report.Add("level_set.splat_scale_change_s", splatScale);
+  AddStages(report, "level_set.splat_scale_change.", splatScaleStages);
   const char* sizes[3] = { "small", "large", "medium" };
   for (std::size_t k = 0; k < 3; ++k)
   {
