@@ -135,16 +135,26 @@ BandPlace PlaceInBand(
                                                            : BandPlace::Inside;
 }
 
-// The `fit` samples nearest to p into `ids`, searched within the farthest of the `found` samples
-// `last` (the last gather's, nearby), which bounds them: the same samples as a search without
-// the bound (within it the tree walk visits the same leaves in the same order), found sooner.
+// The `fit` samples nearest to p into `ids`: the same samples as a search without a bound
+// (within one, the tree walk visits the same leaves in the same order), found sooner. Searched
+// first within a little more than the radius of the `found` samples `last` about where they
+// were gathered (`lastCentre`: the density changes little over a stride), then within the
+// farthest of them from p, which bounds them.
 std::size_t GatherNear(const Neighborhoods& geometry, const Eigen::Vector3d& p,
-  const std::uint32_t* last, std::size_t found, std::size_t fit, std::uint32_t* ids, double* d2)
+  const Eigen::Vector3d& lastCentre, const std::uint32_t* last, std::size_t found, std::size_t fit,
+  std::uint32_t* ids, double* d2)
 {
-  double bound = 0.0;
+  double radius = 0.0, bound = 0.0;
   for (std::size_t j = 0; j < found; ++j)
   {
-    bound = std::max(bound, (Eigen::Vector3d(geometry.Position(last[j])) - p).squaredNorm());
+    const Eigen::Vector3d x(geometry.Position(last[j]));
+    radius = std::max(radius, (x - lastCentre).squaredNorm());
+    bound = std::max(bound, (x - p).squaredNorm());
+  }
+  if (found == fit && radius > 0.0 && radius < bound &&
+    geometry.Index->NearestWithin(p.data(), fit, 1.44 * radius, ids, d2) == fit)
+  {
+    return fit;
   }
   if (found == fit && bound > 0.0 &&
     geometry.Index->NearestWithin(p.data(), fit, bound * (1.0 + 1e-9), ids, d2) == fit)
@@ -216,7 +226,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         double reach = settings.MaximumMove - (p - centre).norm();
         if (step > 0 || reach < 0.25 * settings.MaximumMove)
         {
-          found = GatherNear(geometry, p, nearest, found, fit, s.Ids.data(), s.D2.data());
+          found = GatherNear(geometry, p, centre, nearest, found, fit, s.Ids.data(), s.D2.data());
           nearest = s.Ids.data();
           centre = p;
           reach = settings.MaximumMove;

@@ -142,8 +142,8 @@ struct LastOutputs
   // QuickCheck): the points shown, with their fits' samples (Isopoints themselves when those
   // are they: one process, no periodic cell to cut; not kept twice), and under MPI the points
   // near them, every point this rank found (the splat radii's neighbours: Isopoints when a
-  // slide keeps them); whether the SPH field made it (then kept in Field, or the output is not
-  // remade).
+  // slide keeps them); whether the SPH field made it (then kept in Field, or built again for the
+  // remake).
   bool SurfaceReady = false;
   bool ShownAreIsopoints = false;
   IsopointSet Shown;

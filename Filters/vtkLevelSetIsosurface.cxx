@@ -208,7 +208,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   this->NumberOfIterationsPerformed = 0;
   this->Converged = false;
   this->GhostFraction = 0.0;
-  this->ReusedLastOutputs = this->SlidLastSurface = false;
+  this->ReusedLastOutputs = this->SlidLastSurface = this->RemadeSurfaceOutput = false;
   // Whether nothing but the seeds (or the isovalue) changed since the last run; the input is
   // checked below.
   const bool onlySeedsChanged = this->GetMTime() == this->SeedsOnlyTime;
@@ -1373,6 +1373,8 @@ void vtkLevelSetIsosurface::PrintSelf(ostream& os, vtkIndent indent)
     { "UsedSPHField", this->UsedSPHField }, { "Periodic", this->Periodic },
     { "PeriodicMargin", this->PeriodicMargin }, { "PeriodicOutput", this->PeriodicOutput },
     { "NeighborSearchCount", this->NeighborSearchCount }, { "FloodCount", this->FloodCount },
+    { "ReusedLastOutputs", this->ReusedLastOutputs }, { "SlidLastSurface", this->SlidLastSurface },
+    { "RemadeSurfaceOutput", this->RemadeSurfaceOutput },
     { "NumberOfIsopoints", static_cast<double>(this->NumberOfIsopoints) },
     { "NumberOfIterationsPerformed", this->NumberOfIterationsPerformed },
     { "Converged", this->Converged }, { "MeanSampleSpacing", this->MeanSampleSpacing },

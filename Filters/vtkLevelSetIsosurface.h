@@ -403,8 +403,8 @@ public:
   /** What port 0 holds: SPLATS (default), a closed surface of small oriented polygons that any
    * renderer or exporter draws, or ISOPOINTS, the points themselves (one vertex each). A change
    * of this, SplatScale, SplatSides or InterpolateArrays alone makes port 0 anew from the last
-   * run's points, without running the method (on the SPH field when QuickIsoValueChanges kept
-   * it); the other ports are handed on. */
+   * run's points, without running the method (on the SPH field, with that field: kept by
+   * QuickIsoValueChanges, else built again); the other ports are handed on. */
   vtkSetClampWarnThenMacro(OutputType, int, ISOPOINTS, SPLATS, OutputsModified);
   vtkGetMacro(OutputType, int);
   void SetOutputTypeToIsopoints() { this->SetOutputType(ISOPOINTS); }
@@ -467,6 +467,10 @@ public:
   // Whether the last run slid the run before's surface onto a new IsoValue (QuickIsoValueChanges)
   // instead of running the method: the evolution then takes 0 s.
   vtkGetMacro(SlidLastSurface, bool);
+  // Whether the last run only made the surface output anew from the run before's points (a
+  // change of OutputType, SplatScale, SplatSides or InterpolateArrays alone; under MPI when
+  // every rank did) and handed on the other outputs.
+  vtkGetMacro(RemadeSurfaceOutput, bool);
   vtkGetMacro(NumberOfIsopoints, vtkIdType);
   vtkGetMacro(NumberOfIterationsPerformed, int);
   vtkGetMacro(Converged, bool);
@@ -587,7 +591,11 @@ private:
   // every run (it decides with the others).
   bool RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPointSet* input, vtkPolyData* surfaceOutput,
     vtkPolyData* particleOutput, vtkTable* convergence, vtkTable* enclosed);
-  bool ReusedLastOutputs = false, SlidLastSurface = false;
+  // The SPH field the last run used, built again on its particles (`work`: with their ghosts
+  // and images) when it was not kept; null if it cannot be.
+  std::unique_ptr<lsi::SPHField> RebuildSPHField(
+    vtkPointSet* work, const lsi::Neighborhoods& geometry);
+  bool ReusedLastOutputs = false, SlidLastSurface = false, RemadeSurfaceOutput = false;
   // With only IsoValue changed since the last run and QuickIsoValueChanges on: slides the last
   // surface onto the new level (LevelSetIsoValueSlide.h) if the checks there allow. False: run
   // the method. Under MPI every rank calls it on every run (it decides with the others).

@@ -117,21 +117,32 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   lsi::LastOutputs& last = this->Internal->Last;
   // Under MPI every rank decides with the others: all remake, or none.
   const lsi::Neighborhoods* geometry = onlyOutputsChanged ? this->LastGeometry(input) : nullptr;
-  if (!this->Internal->Ranks->All(
-        geometry && this->LastRanksMatch() && last.SurfaceReady && (!last.OnField || last.Field)))
+  if (!this->Internal->Ranks->All(geometry && this->LastRanksMatch() && last.SurfaceReady))
   {
     return false;
   }
   const LastRanksScope lastRanks(*this->Internal);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const auto start = lsi::Clock::now();
+  vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
+  // On the SPH field the arrays are its interpolants: the field the last run kept (for quick
+  // isovalue changes), else the same one built again from the same particles.
+  std::unique_ptr<lsi::SPHField> rebuilt;
+  if (last.OnField && !last.Field)
+  {
+    rebuilt = this->RebuildSPHField(work, *geometry);
+  }
+  const lsi::SPHField* field = last.Field ? last.Field.get() : rebuilt.get();
+  if (!ranks.All(!last.OnField || field))
+  {
+    return false;
+  }
   // (Under MPI the splat radii come from every point this rank found, as in a full run.)
   const std::vector<double>& nearby = last.NearbyPoints(ranks.Distributed());
   const std::unique_ptr<lsi::PointCloudIndex> nearbyIndex = lsi::IndexOfPoints(nearby);
-  vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
   last.Valid = false; // until the surface is made
-  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, last.ShownPoints(), nearby,
-        last.Field.get(), nearbyIndex.get(), surfaceOutput)))
+  if (!ranks.All(this->MakeSurfaceOutput(
+        work, *geometry, last.ShownPoints(), nearby, field, nearbyIndex.get(), surfaceOutput)))
   {
     return false;
   }
@@ -146,8 +157,36 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
     this->IsopointSeconds = this->CompletionSeconds = this->DataRefinementSeconds =
       this->InputSeconds = this->ParticleOutputSeconds = 0.0;
   this->OutputSeconds = lsi::SecondsSince(start);
+  this->RemadeSurfaceOutput = true;
   this->LastRunTime = this->GetMTime();
   return true;
+}
+
+std::unique_ptr<lsi::SPHField> vtkLevelSetIsosurface::RebuildSPHField(
+  vtkPointSet* work, const lsi::Neighborhoods& geometry)
+{
+  // The last run's choices (arrays, kernel, support) from the same request on the same
+  // particles, and f as the method read it (ghosts and images carry their originals' arrays):
+  // the same field, without its checks' messages (they were given).
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
+  const vtkIdType n = work->GetNumberOfPoints();
+  lsi::SPHFieldArrays arrays;
+  std::string problem, choice;
+  if (!scalars || scalars->GetNumberOfTuples() != n ||
+    static_cast<std::size_t>(n) != geometry.NumberOfSamples ||
+    !lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice) ||
+    !problem.empty())
+  {
+    return nullptr;
+  }
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    values[i] = scalars->GetTuple1(i);
+  }
+  std::unique_ptr<lsi::SPHField> field(new lsi::SPHField(geometry, arrays, values, problem));
+  return field->Valid() ? std::move(field) : nullptr;
 }
 
 const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)

@@ -14,7 +14,9 @@ GADGET-4 isovalue and the seeds can differ slightly from the comparison's:
            QuickIsoValueChanges on, from a fresh filter's first run; `slid` says whether the
            last surface was slid (1) or the method ran (0);
   seed     after the method's re-run, the seed centre moved by a thousandth of the data's
-           extent (the same flood); `reused` says whether the last outputs were handed on.
+           extent (the same flood); `reused` says whether the last outputs were handed on;
+  output   then OutputType changed to the other one (splats <-> isopoints): the surface output
+           made anew from the last run's points, on the SPH field built again.
 The fastest of REPEATS (default 3) of each. One line per case and output; the points and a
 checksum of their coordinates show that two builds give the same output.
 Scripts/run-sph-reruns.sh runs it for a base commit's build and this one's, in turn."""
@@ -65,9 +67,9 @@ def main():
                             ResultArrayName="VelocityZ", Function="Velocities_Z"),
          "VelocityZ", lambda v: 0.7),
     ]
-    print("%-22s %-9s %9s %9s %9s %5s %9s %6s %9s %14s" % (
-        "case", "output", "first s", "method s", "quick s", "slid", "seed s", "reused", "points",
-        "checksum"))
+    print("%-22s %-9s %9s %9s %9s %5s %9s %6s %9s %9s %14s" % (
+        "case", "output", "first s", "method s", "quick s", "slid", "seed s", "reused",
+        "output s", "points", "checksum"))
     for name, make, scalar, rule in cases:
         source = make()
         particles = fetch(source)
@@ -83,7 +85,7 @@ def main():
         for output_type, label in ((1, "splats"), (0, "isopoints")):
             settings = dict(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
                             SeedCenter=seed, OutputType=output_type)
-            first = method = quick = moved_seed = float("inf")
+            first = method = quick = moved_seed = remake = float("inf")
             slid = reused = -1
             for r in range(repeats):
                 f = LevelSetIsosurface(**settings)
@@ -101,6 +103,10 @@ def main():
                 moved_seed = min(moved_seed, time.time() - t)
                 f.UpdatePropertyInformation()
                 reused = f.GetProperty("ReusedLastOutputs").GetData()
+                f.OutputType = 1 - output_type
+                t = time.time()
+                f.UpdatePipeline()
+                remake = min(remake, time.time() - t)
                 Delete(f)
                 g = LevelSetIsosurface(QuickIsoValueChanges=1, **settings)
                 g.UpdatePipeline()
@@ -113,8 +119,8 @@ def main():
                 Delete(g)
             points = vtk_to_numpy(out.GetPoints().GetData()) if out.GetNumberOfPoints() else []
             checksum = float(np.sum(np.asarray(points, dtype=float) * [1.0, 2.0, 3.0]))
-            print("%-22s %-9s %9.3f %9.3f %9.3f %5d %9.4f %6d %9d %14.8g" % (
-                name, label, first, method, quick, slid, moved_seed, reused,
+            print("%-22s %-9s %9.3f %9.3f %9.3f %5d %9.4f %6d %9.4f %9d %14.8g" % (
+                name, label, first, method, quick, slid, moved_seed, reused, remake,
                 out.GetNumberOfPoints(), checksum), flush=True)
         Delete(source)
 

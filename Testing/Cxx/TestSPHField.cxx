@@ -192,9 +192,10 @@ void TestEnclosed(vtkLevelSetIsosurface* filter)
 // the same radius about the centre in the periodic metric), half of them on each side of the
 // box; centred on the seed, one closed sphere; with Periodic off, a surface closed off at the
 // face instead.
-void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double openRadius)
+// The glass moved to `center` in a periodic box of side L (marked by a BoxSize field array),
+// wrapped into [0, L).
+vtkSmartPointer<vtkPolyData> InPeriodicBox(vtkPolyData* glass, double L, const double center[3])
 {
-  const double L = 3.0, center[3] = { 0.0, 1.5, 1.5 };
   auto box = vtkSmartPointer<vtkPolyData>::New();
   box->DeepCopy(glass);
   for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
@@ -211,6 +212,13 @@ void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double
   size->SetName("BoxSize");
   size->InsertNextValue(L);
   box->GetFieldData()->AddArray(size);
+  return box;
+}
+
+void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double openRadius)
+{
+  const double L = 3.0, center[3] = { 0.0, 1.5, 1.5 };
+  vtkSmartPointer<vtkPolyData> box = InPeriodicBox(glass, L, center);
   const double seed[3] = { 0.1, 1.5, 1.5 };
   auto radiusAbout = [&](const double* x, bool periodic) {
     double r2 = 0.0;
@@ -339,6 +347,63 @@ void TestPeriodicBox(vtkPolyData* glass, double iso, vtkIdType openCount, double
   std::cout << "Periodic off: " << cut->GetNumberOfPoints()
             << " isopoints, largest deviation from the sphere " << worst << "\n";
   Check(worst > 0.2, "Periodic off: the face cuts the component (a surface closed off there)");
+}
+
+// Whether two outputs have the same points, cells and point arrays, to the bit.
+bool SameOutput(vtkPolyData* a, vtkPolyData* b)
+{
+  bool same = a->GetNumberOfPoints() == b->GetNumberOfPoints() &&
+    a->GetNumberOfCells() == b->GetNumberOfCells() &&
+    a->GetPointData()->GetNumberOfArrays() == b->GetPointData()->GetNumberOfArrays();
+  for (vtkIdType i = 0; same && i < a->GetNumberOfPoints(); ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      same = same && a->GetPoint(i)[d] == b->GetPoint(i)[d];
+    }
+  }
+  for (int k = 0; same && k < a->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* x = a->GetPointData()->GetArray(k);
+    vtkDataArray* y = x ? b->GetPointData()->GetArray(x->GetName()) : nullptr;
+    same = x && y && x->GetNumberOfValues() == y->GetNumberOfValues();
+    for (vtkIdType v = 0; same && v < x->GetNumberOfValues(); ++v)
+    {
+      same = x->GetComponent(v / x->GetNumberOfComponents(), v % x->GetNumberOfComponents()) ==
+        y->GetComponent(v / y->GetNumberOfComponents(), v % y->GetNumberOfComponents());
+    }
+  }
+  return same;
+}
+
+// A change of the surface output's properties alone on the SPH field, QuickIsoValueChanges off
+// (no field kept): the output is made again from the last run's points, on the same field built
+// again (the interpolated arrays are its interpolants), without running the method: a fresh
+// filter's output to the bit. `what` names the input (the glass, or it in a periodic box).
+void TestRemakeOnSPHField(
+  vtkPolyData* input, double iso, const double seed[3], const std::string& what)
+{
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Run(input, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, filter);
+  Check(filter->GetUsedSPHField(), what + ": the SPH field is used");
+  auto remade = [&]() {
+    return filter->GetRemadeSurfaceOutput() && filter->GetEvolutionSeconds() == 0.0 &&
+      filter->GetIsopointSeconds() == 0.0 && filter->GetOutputSeconds() > 0.0;
+  };
+  auto sameAsFresh = [&]() {
+    vtkNew<vtkLevelSetIsosurface> fresh;
+    fresh->SetSplatScale(filter->GetSplatScale());
+    auto out = Run(input, iso, seed, 0.1, filter->GetOutputType(), fresh);
+    return out->GetNumberOfPoints() > 100 && out->GetPointData()->GetArray("TwoPlusX") &&
+      SameOutput(filter->GetOutput(0), out);
+  };
+  filter->SetOutputTypeToSplats();
+  filter->Update();
+  Check(remade(), what + ": an OutputType change makes the surface output alone");
+  Check(sameAsFresh(), what + ": splats with the SPH interpolants, a fresh filter's to the bit");
+  filter->SetSplatScale(1.5);
+  filter->Update();
+  Check(remade() && sameAsFresh(), what + ": larger splats alone, a fresh filter's to the bit");
 }
 
 // A Tipsy file's particles with Particle Density's summed density and smoothing lengths (64
@@ -480,6 +545,9 @@ void TestEvrard(const std::string& path)
   Check(interpolated && worst < 1e-9, "Evrard: arrays interpolated as sum (m/rho) A W");
 
   TestPeriodicBox(glass, iso, isopoints->GetNumberOfPoints(), meanRadius);
+  TestRemakeOnSPHField(glass, iso, seed, "Evrard");
+  const double boxCenter[3] = { 0.0, 1.5, 1.5 }, boxSeed[3] = { 0.1, 1.5, 1.5 };
+  TestRemakeOnSPHField(InPeriodicBox(glass, 3.0, boxCenter), iso, boxSeed, "Evrard in a box");
   TestEnclosed(filter);
   TestQuickIsoValueChange(glass, p, iso);
   TestQuickAtCloudEdge(glass, p);

@@ -11,7 +11,9 @@
 
 CASE: one-component, multi-component or adaptive-noisy (files of LevelSetGenerateData), or
 swift-vz: the SWIFT Roberts flow (Data/SWIFT), the SPH interpolant of the velocity's z, 0.7, in
-its periodic box, every component (tubes through the faces).
+its periodic box, every component (tubes through the faces), or evrard: the Tipsy glass
+(Data/ChaNGa) with Particle Density's summed density (64 neighbours), the SPH field's level
+1 / pi (near r = 0.5), in open space.
 SEED: inside (the seeds inside one rank's half) or cut (a seed across the middle, where the
 ranks' parts meet). PARTITION: single-piece (the .vtp as read: rank 0 holds every particle,
 the default) or distribute-points (ParaView's Distribute Points first).
@@ -27,6 +29,9 @@ Option iso-change (with QuickIsoValueChanges on): then the isovalue rises until 
 particles lie above it (the serial reference run chooses it and slides too): every rank must
 slide its surface (SlidLastSurface), and the result passes the same checks against the serial
 slid surface.
+Option output-change: then OutputType becomes Splats and back Isopoints: every rank must make
+its surface output anew from its last points (RemadeSurfaceOutput), one splat per isopoint,
+and back the same isopoints, which pass the same checks again.
 Option around-seed (a periodic case): PeriodicOutput "around the seed" (the points moved into
 the periodic cell centred on the seed; their splat radii from points moved alike)."""
 import sys
@@ -57,6 +62,7 @@ CASES = {
                         {"inside": [], "cut": [70, 64, 64, 14]}),
     "adaptive-noisy": (0.000839224, {"inside": [56, 64, 64, 4], "cut": [64, 64, 64, 8]}, []),
     "swift-vz": (0.7, {"inside": [1.5, 3.0, 3.0, 1.0], "cut": [0, 0, 0, 0]}, []),
+    "evrard": (1.0 / np.pi, {"inside": [-0.3, 0.0, 0.0, 0.1], "cut": [0.0, 0.0, 0.0, 0.1]}, []),
 }
 iso, seeds, additional = CASES[case]
 main = seeds[seed]
@@ -67,6 +73,10 @@ if case == "swift-vz":
     reader = OpenDataFile(path)
     reader.UpdatePipelineInformation()
     source = Calculator(Input=reader, ResultArrayName="f", Function="Velocities_Z")
+elif case == "evrard":
+    from paraview.simple import Calculator, OpenDataFile
+    density = ParticleDensity(Input=OpenDataFile(path), NumberOfNeighbors=64)
+    source = Calculator(Input=density, ResultArrayName="f", Function="Density")
 else:
     source = XMLPolyDataReader(FileName=[path])
 if "distribute-points" in options:
@@ -184,6 +194,8 @@ def compare(result, serial):
 
 
 result = run()
+if case == "evrard":
+    check(surface.GetPropertyValue("UsedSPHField") == 1, "the SPH field is used")
 if "--reference" in options:
     saved = dict(result)
     if slide:
@@ -225,6 +237,24 @@ if "seed-move" in options:
         check(len(fewer["points"]) < 0.9 * len(result["points"]),
               "and gives fewer isopoints: %d, before %d"
               % (len(fewer["points"]), len(result["points"])))
+if "output-change" in options:
+    # The surface output alone changes: made anew from the last points on every rank.
+    surface.OutputType = "Splats"
+    surface.UpdatePipeline()
+    surface.UpdatePropertyInformation()
+    remade = surface.GetPropertyValue("RemadeSurfaceOutput")
+    splats = servermanager.Fetch(surface, idx=0)
+    check(remade == 1 and splats.GetNumberOfCells() == len(result["points"]),
+          "an OutputType change makes the surface output alone (RemadeSurfaceOutput %d): %d "
+          "splats for %d isopoints" % (remade, splats.GetNumberOfCells(), len(result["points"])))
+    surface.OutputType = "Isopoints"
+    back = run()
+    remade = surface.GetPropertyValue("RemadeSurfaceOutput")
+    check(remade == 1 and np.array_equal(back["points"], result["points"]) and
+          np.array_equal(back["splat_radius"], result["splat_radius"]),
+          "and back to Isopoints, alone again (RemadeSurfaceOutput %d): the same isopoints and "
+          "splat radii" % remade)
+    compare(back, serial)
 if slide:
     surface.IsoValue = float(serial["new_iso"][0])
     slid = run()
