@@ -4,9 +4,9 @@
 # The filter's first runs and re-runs on the real snapshots (Scripts/sph_reruns.py: splats and
 # Isopoints; first run, the method after an isovalue change, a quick 2% change, a seed move, an
 # OutputType change), for this build and, given a BASE commit, for that commit's build too, in
-# turn, RUNS times each (this machine's speed drifts by 5-10% over minutes: compare runs taken side by side). BASE is
-# built in a git worktree under /tmp (a few minutes the first time). About 2 minutes per run
-# and build here. Run after Scripts/setup-debian12.sh.
+# turn, RUNS times each (this machine's speed drifts by 5-10% over minutes: compare runs taken
+# side by side). BASE is built in a git worktree under /tmp (a few minutes the first time).
+# About 2 minutes per run and build here. Run after Scripts/setup-debian12.sh.
 #   bash Scripts/run-sph-reruns.sh [BASE [RUNS [SHARED_DATA_DIR]]]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
