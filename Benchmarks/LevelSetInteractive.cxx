@@ -12,6 +12,10 @@
 //     surface slid; its points, their mean distance to the exact new level and the largest gap
 //     from that level's points to them, the Enclosed table's volume and area against the exact
 //     level's, and the full method's);
+//   - a slider dragged back and forth: 24 quick changes in turn to the small change's isovalue
+//     and back, their mean and largest seconds and how many slid, against the grid route's
+//     re-contour of the same changes;
+//   - output-only changes (to splats, a new SplatScale) against the method's run;
 //   - the whole filter with 1 and with 2 threads;
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
@@ -62,6 +66,8 @@ using namespace lsi::cases;
 // route, is timed this many times from the same state and the fastest counts (one timing moved
 // by half between runs here).
 constexpr int ReRunRepeats = 3;
+// Quick isovalue changes in a slider drag, back and forth between two isovalues.
+constexpr int SliderChanges = 24;
 
 struct Options
 {
@@ -449,7 +455,26 @@ int main(int argc, char* argv[])
     exactEnclosed[k] = ExactEnclosed(c, isoValues[k]);
     filter->SetQuickIsoValueChanges(true);
   }
+  // A slider dragged back and forth: SliderChanges quick changes between the case's isovalue
+  // and the small change's, from a full run; each one's seconds (mean and largest) and how many
+  // slid, against the grid route's re-contour of the same changes (mean).
+  filter->SetIsoValue(c.IsoValue);
+  filter->Modified();
+  TimedUpdate(filter);
+  double sliderSum = 0.0, sliderLargest = 0.0, sliderSlid = 0.0, gridSliderSum = 0.0;
+  for (int k = 1; k <= SliderChanges; ++k)
+  {
+    const double isoValue = k % 2 ? isoValues[0] : c.IsoValue;
+    filter->SetIsoValue(isoValue);
+    const double seconds = TimedUpdate(filter);
+    sliderSum += seconds;
+    sliderLargest = std::max(sliderLargest, seconds);
+    sliderSlid += filter->GetSlidLastSurface() ? 1.0 : 0.0;
+    gridSliderSum += grid.Contour(isoValue) + grid.Connect(seeds);
+  }
   filter->SetQuickIsoValueChanges(false);
+  filter->SetIsoValue(c.IsoValue);
+  TimedUpdate(filter);
 
   filter->SetCurvatureWeight(2.0 * filter->GetCurvatureWeight() + 0.05);
   const double curvature = TimedUpdate(filter);
@@ -477,6 +502,11 @@ int main(int argc, char* argv[])
   report.Add("level_set.seed_move_s", seed);
   report.Add("level_set.curvature_weight_change_s", curvature);
   report.Add("level_set.level_distance_spacings", fullDistance / surfaceSpacing);
+  report.Add("level_set.slider_changes", SliderChanges);
+  report.Add("level_set.slider_slid", sliderSlid);
+  report.Add("level_set.slider_mean_s", sliderSum / SliderChanges);
+  report.Add("level_set.slider_largest_s", sliderLargest);
+  report.Add("grid_route.slider_mean_s", gridSliderSum / SliderChanges);
   report.Add("level_set.output_type_change_s", toSplats);
   AddStages(report, "level_set.output_type_change.", outputTypeStages);
   report.Add("level_set.output_type_change_method_s", toSplatsMethod);
@@ -558,6 +588,7 @@ int main(int argc, char* argv[])
   report.Add("target.quick_isovalue_change_medium_over_grid (<= 5)", quick[2] / gridIsoMedium);
   report.Add("target.quick_isovalue_change_large_over_grid (<= 5)", quick[1] / gridIsoLarge);
   report.Add("target.seed_move_over_grid (<= 5)", seed / gridSeed);
+  report.Add("target.slider_mean_over_grid (<= 5)", sliderSum / gridSliderSum);
   report.Add("target.two_thread_speedup (>= 1.85)", threads[0] / threads[1]);
   if (scaled)
   {

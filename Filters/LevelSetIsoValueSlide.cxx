@@ -122,17 +122,26 @@ std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double va
   return order;
 }
 
-// Where a point that travelled `way` from where the last full run put it (its nearest sample
-// `sample`) stands against the band that run resolved (`bandReach`, SlideSettings::BandReach).
+// Where a point whose distance to the last full run's surface is at most `bound` (BandDrift::At;
+// its nearest sample `sample`) stands against the band that run resolved (null: no band).
 BandPlace PlaceInBand(
-  const Neighborhoods& geometry, double way, std::size_t sample, double bandReach)
+  const Neighborhoods& geometry, double bound, std::size_t sample, const BandDrift* drift)
 {
-  if (!(way <= bandReach))
+  if (!drift)
+  {
+    return BandPlace::Inside;
+  }
+  if (!(bound <= drift->HalfWidth))
   {
     return BandPlace::Outside;
   }
-  return way + 2.0 * geometry.RadiusOf(sample) > bandReach ? BandPlace::NearEdge
-                                                           : BandPlace::Inside;
+  return bound + 2.0 * geometry.RadiusOf(sample) > drift->HalfWidth ? BandPlace::NearEdge
+                                                                    : BandPlace::Inside;
+}
+// Point i's bound at p (way travelled this slide) where there is a band, else 0.
+double BoundAt(const BandDrift* drift, std::size_t i, const Eigen::Vector3d& p, double way)
+{
+  return drift ? drift->At(i, p, way) : 0.0;
 }
 
 // The `fit` samples nearest to p into `ids`: the same samples as a search without a bound
@@ -181,7 +190,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   // largest, are not copied: the few points that gather anew record theirs.)
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   const std::vector<std::uint32_t>& samples = isopoints.FitSamples;
-  std::vector<double> newCentres(points.size()), moves(count);
+  std::vector<double> newCentres(points.size()), moves(count), bounds(count);
   std::vector<char> nearEdge(count);
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
   const std::vector<std::uint32_t> order =
@@ -270,7 +279,8 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
             break;
           }
           way += (p - from).norm();
-          if (PlaceInBand(geometry, way, nearest[0], settings.BandReach) == BandPlace::Outside)
+          if (PlaceInBand(geometry, BoundAt(settings.Drift, i, p, way), nearest[0],
+                settings.Drift) == BandPlace::Outside)
           {
             break; // leaving the band (refused below, and soon: the other points stop too)
           }
@@ -321,13 +331,15 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         refusal = crossed ? TooFar : NoCrossing;
         break;
       }
-      const BandPlace place = PlaceInBand(geometry, way, nearest[0], settings.BandReach);
+      const double bound = BoundAt(settings.Drift, i, p, way);
+      const BandPlace place = PlaceInBand(geometry, bound, nearest[0], settings.Drift);
       if (place == BandPlace::Outside)
       {
         refusal = TooFar;
         break;
       }
       moves[i] = way;
+      bounds[i] = bound;
       nearEdge[i] = place == BandPlace::NearEdge;
       bool in = false, out = false;
       for (std::size_t j = 0; j < found; ++j)
@@ -377,16 +389,18 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
     isopoints.FitModels.swap(models);
     result.Moves.swap(moves);
     result.NearBandEdge.swap(nearEdge);
+    result.Bounds.swap(bounds);
   }
   return result;
 }
 
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  double bandReach, IsopointSet& isopoints, const AbortCheck& aborted)
+  const BandDrift* drift, IsopointSet& isopoints, const AbortCheck& aborted)
 {
   const std::size_t count = isopoints.Points.size() / 3;
-  std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count);
+  std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count),
+    bounds(count);
   std::vector<char> nearEdge(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
@@ -424,13 +438,15 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         break;
       }
       const double way = (p - start).norm(); // (along a straight line)
-      const BandPlace place = PlaceInBand(geometry, way, s.Ids[0], bandReach);
+      const double bound = BoundAt(drift, i, p, way);
+      const BandPlace place = PlaceInBand(geometry, bound, s.Ids[0], drift);
       if (place == BandPlace::Outside)
       {
         refusal = TooFar;
         break;
       }
       moves[i] = way;
+      bounds[i] = bound;
       nearEdge[i] = place == BandPlace::NearEdge;
       for (int d = 0; d < 3; ++d)
       {
@@ -446,6 +462,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
     isopoints.Normals.swap(normals);
     result.Moves.swap(moves);
     result.NearBandEdge.swap(nearEdge);
+    result.Bounds.swap(bounds);
   }
   return result;
 }

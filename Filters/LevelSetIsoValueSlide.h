@@ -27,17 +27,47 @@
 namespace lsi
 {
 
+// How far each point of the surface may lie from the surface about which the last full run
+// resolved its band (|phi| < HalfWidth): at most its distance to where that run put it
+// (Origins), the point having started there, and at most its bound when this slide began
+// (Bounds) plus its way since. Per point, in the order of the kept surface (LastOutputs::
+// Isopoints). A slider dragged back and forth so returns its points near their origins, and the
+// band's reach with them.
+struct BandDrift
+{
+  double HalfWidth = HUGE_VAL;
+  std::vector<double> Origins; // 3 per point; NaN where not known (the free boundary's points)
+  std::vector<double> Bounds;  // per point (none: 0)
+  /// Points on the last full run's surface: each at its origin, bound 0.
+  void Reset(const std::vector<double>& points, double halfWidth)
+  {
+    this->HalfWidth = halfWidth;
+    this->Origins = points;
+    this->Bounds.assign(points.size() / 3, 0.0);
+  }
+  /// Point i's bound at `p`, having travelled `way` since this slide began.
+  double At(std::size_t i, const Eigen::Vector3d& p, double way) const
+  {
+    double bound = (i < this->Bounds.size() ? this->Bounds[i] : 0.0) + way;
+    if (3 * i + 2 < this->Origins.size() && std::isfinite(this->Origins[3 * i]))
+    {
+      bound = std::min(bound, (p - Eigen::Vector3d(&this->Origins[3 * i])).norm());
+    }
+    return bound;
+  }
+};
+
 struct SlideSettings
 {
   double MaximumMove = 0.0; // per step: the refinement's reach from where it gathered
   double FarMove = 0.0;     // a stride's longest towards a level beyond that reach
   int Steps = 12;           // steps at most, each from the samples nearest to where it starts
-  // How far the surface may move: the band's half width less the slides before. A point's path
-  // must stay within it; where its path plus twice the neighbourhood radius of the sample
-  // nearest to it leaves it, samples beyond the band (whose phi stays clamped) may lie nearer
-  // than two neighbourhoods to the new surface: the point is flagged (NearBandEdge) for
-  // ClampedSamplesClear.
-  double BandReach = HUGE_VAL;
+  // How far the surface may move: within the band. A point's path must stay within it (its
+  // BandDrift bound at most HalfWidth); where its bound plus twice the neighbourhood radius of
+  // the sample nearest to it leaves it, samples beyond the band (whose phi stays clamped) may lie
+  // nearer than two neighbourhoods to the new surface: the point is flagged (NearBandEdge) for
+  // ClampedSamplesClear. Null: no band.
+  const BandDrift* Drift = nullptr;
   int Iterations = 3; // the refinement's iterations and tolerance (IsopointSettings)
   double Tolerance = 0.0;
   bool Quadratic = true;    // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
@@ -51,9 +81,11 @@ struct SlideResult
   // Each point's way (the length of its path: a sample it passed lies within it of where the
   // point ended), when accepted.
   std::vector<double> Moves;
-  // Per point, when accepted: 1 where its way plus twice the neighbourhood radius of the sample
-  // nearest to it leaves SlideSettings::BandReach (ClampedSamplesClear then looks around it).
+  // Per point, when accepted: 1 where its band bound plus twice the neighbourhood radius of the
+  // sample nearest to it leaves the band (ClampedSamplesClear then looks around it).
   std::vector<char> NearBandEdge;
+  // Per point, when accepted: its BandDrift bound where it ended (the next slide's Bounds).
+  std::vector<double> Bounds;
   double LargestMove() const // of any point (0 without points)
   {
     return this->Moves.empty() ? 0.0 : *std::max_element(this->Moves.begin(), this->Moves.end());
@@ -70,7 +102,7 @@ struct SlideResult
 /// on the first normal at all); at most Steps in all. FitSamples and `centres` then hold each
 /// point's last fit (the surface's arrays are interpolated over those samples), and the normals
 /// the fit's gradient. Refused (isopoints and centres then unchanged) if a point's level lies
-/// beyond those steps or BandReach, or the data's gradient there does not cross the surface, or
+/// beyond those steps or the band, or the data's gradient there does not cross the surface, or
 /// its samples are not on both sides of the new flood (`inside`, per sample): it would lie on a
 /// component the seeds no longer reach, or on none.
 SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
@@ -80,12 +112,12 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
 /// The same on the SPH field (the points the refinement solved onto its level): each point is
 /// solved along its normal onto the field's new level `isoValue` within SPHMaximumMove kernel
 /// supports of the sample nearest to it (RefineIsopointsOnSPHField's step), the normal becoming
-/// the field's. Refused as above when a point finds no level within that reach or `bandReach`
-/// (SlideSettings::BandReach), or when the samples nearest to it are not on both sides of the
-/// new flood.
+/// the field's. Refused as above when a point finds no level within that reach or the band
+/// (`drift`, SlideSettings::Drift), or when the samples nearest to it are not on both sides of
+/// the new flood.
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  double bandReach, IsopointSet& isopoints, const AbortCheck& aborted);
+  const BandDrift* drift, IsopointSet& isopoints, const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
 /// within its move (`moves`, per point) plus `margin` of one of the points that `points` indexes

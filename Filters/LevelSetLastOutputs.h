@@ -11,6 +11,7 @@
 #define LevelSetLastOutputs_h
 
 #include "LevelSetEnclosed.h"
+#include "LevelSetIsoValueSlide.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborCache.h"
 #include "LevelSetSPHField.h"
@@ -124,8 +125,8 @@ struct LastOutputs
   // For the quick re-run after an isovalue change (with QuickCheck, QuickIsoValueChanges and
   // the refinement on the data): f at the samples, the level set phi after the evolution, in
   // storage order, the surface's points with their fits' samples and models, the isopoint
-  // settings, the SPH field if the run used one, and the band's half width; how far the surface
-  // has slid since the method last ran in full.
+  // settings, the SPH field if the run used one, and the band's half width; how far each point
+  // may have slid from the surface the method last made in full.
   bool SlideReady = false;
   std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
   double IsoValue = 0.0;
@@ -135,7 +136,7 @@ struct LastOutputs
   IsopointSettings Settings;
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
   double HalfWidth = 0.0;
-  double Slid = 0.0;
+  BandDrift Drift; // how far each of Isopoints may lie from the surface the band is about
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
   FloodStart Start;              // the last flood's level set, for runs that change no input to it
   // What the surface output was made from, for a change of its own properties alone (with

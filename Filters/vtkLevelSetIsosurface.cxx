@@ -464,7 +464,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
     last.HalfWidth = halfWidth;
-    last.Slid = 0.0;
+    last.Drift.Reset(last.Isopoints.Points, halfWidth);
   }
   // What the surface output was made from, for a change of its properties alone (LastOutputs::
   // ShownPoints and NearbyPoints: Isopoints, where those are they).

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -398,7 +399,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   lsi::SlideSettings slide;
   slide.MaximumMove = settings.DataMaximumMove;
   slide.FarMove = FarStrides * settings.DataMaximumMove;
-  slide.BandReach = last.HalfWidth - last.Slid;
+  slide.Drift = &last.Drift;
   slide.Iterations = settings.DataIterations;
   slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
   slide.Quadratic = settings.DataFitOrder == 2;
@@ -422,7 +423,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     isopoints.Normals.resize(kept);
     isopoints.FreeBoundaryCount = 0;
     slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings,
-      slide.BandReach, isopoints, this->Stage(lsi::IsopointStage));
+      slide.Drift, isopoints, this->Stage(lsi::IsopointStage));
     aborted = slid.Accepted &&
       !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
         isopoints, this->Stage(lsi::IsopointStage));
@@ -562,7 +563,13 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Inside = std::move(inside);
   last.IsoValue = isoValue;
-  last.Slid += largestMove;
+  // Each point's bound for the next slide; the free boundary's new points (shot from the new
+  // inside's edge, no origin) are bound by the farthest slid point.
+  const double farthest =
+    slid.Bounds.empty() ? 0.0 : *std::max_element(slid.Bounds.begin(), slid.Bounds.end());
+  last.Drift.Bounds = std::move(slid.Bounds);
+  last.Drift.Bounds.resize(pointCount, farthest);
+  last.Drift.Origins.resize(3 * pointCount, std::numeric_limits<double>::quiet_NaN());
   // (The points shown, for a change of the surface output's properties alone: the slid ones,
   // or the cell or rank's cut of them.)
   last.ShownAreIsopoints = shown == &isopoints;

@@ -6,10 +6,11 @@
 # grid, Flying Edges, connectivity) per stage, with their mean distances to the exact surface;
 # re-runs after an isovalue change (with QuickIsoValueChanges off and on) and a seed move (and a
 # CurvatureWeight change, and output-only changes: to splats, a new SplatScale) against the grid
-# route's re-contour and re-connect; 1 against 2 threads (the fastest of 3 runs each); and first
-# runs at 2M and 20M particles, each in a
-# process of its own, with peak memory per particle and the profiles of their re-runs. Prints a
-# table and writes Results/interactive-benchmark.json. Run after Scripts/setup-debian12.sh.
+# route's re-contour and re-connect; a slider dragged back and forth (24 quick changes); 1
+# against 2 threads (the fastest of 3 runs each); and first runs at 2M and 20M particles, each
+# in a process of its own, with peak memory per particle and the profiles of their re-runs.
+# Prints a table and writes Results/interactive-benchmark.json. Run after
+# Scripts/setup-debian12.sh.
 #   bash Scripts/run-interactive-benchmark.sh [SAMPLES [SCALING_SAMPLES]]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
