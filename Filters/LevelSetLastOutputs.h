@@ -108,9 +108,10 @@ struct LastOutputs
   int Iterations = 0;
   bool Converged = false;
   double GhostFraction = 0.0; // under MPI
-  // For the quick check of a seed move (serial runs with the flood start and no merged
-  // duplicates): the flooded samples, f - f_iso and the spacing, in storage order; in a
-  // periodic box, the particles with their images (the samples are theirs).
+  // For the quick check of a seed move (runs with the flood start and no merged duplicates,
+  // not under MPI in a periodic box): the flooded samples, f - f_iso and the spacing, in
+  // storage order. Work: in a periodic box the particles with their images (the samples are
+  // theirs), under MPI with their ghosts (kept with SurfaceReady).
   bool QuickCheck = false;
   vtkSmartPointer<vtkPointSet> Work;
   vtkSmartPointer<vtkPointSet> Owned; // under MPI: this rank's particles (before the ghosts)
@@ -139,8 +140,9 @@ struct LastOutputs
   BandDrift Drift; // how far each of Isopoints may lie from the surface the band is about
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
   FloodStart Start;              // the last flood's level set, for runs that change no input to it
-  // What the surface output was made from, for a change of its own properties alone (with
-  // QuickCheck): the points shown, with their fits' samples (Isopoints themselves when those
+  // What the surface output was made from, for a change of its own properties alone
+  // (SurfaceReady: any run without merged duplicates, whatever its start, ranks or box; with
+  // Work and Stamp): the points shown, with their fits' samples (Isopoints themselves when those
   // are they: one process, no periodic cell to cut; not kept twice), and under MPI the points
   // near them, every point this rank found (the splat radii's neighbours: Isopoints when a
   // slide keeps them); whether the SPH field made it (then kept in Field, or built again for the

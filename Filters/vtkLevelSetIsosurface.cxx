@@ -343,10 +343,13 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // periodic box (where the method's flood crosses faces and ranks in the same rounds).
   last.QuickCheck = this->Initialization == FLOOD && mergedId.empty() &&
     !(ranks.Distributed() && this->Internal->Box.Enabled);
+  // What a change of the surface output's properties alone needs (the last run's points and
+  // input, whatever the start; any layout of ranks and box): no duplicates merged.
+  last.SurfaceReady = mergedId.empty();
   // In a periodic box the method ran on the particles and their images, under MPI with ghosts:
   // a re-run needs them.
   last.Work =
-    last.QuickCheck && (this->Internal->Box.Enabled || ranks.Distributed()) ? input : nullptr;
+    last.SurfaceReady && (this->Internal->Box.Enabled || ranks.Distributed()) ? input : nullptr;
   last.Inside = last.QuickCheck ? lsi::LastOutputs::InsideOf(phi) : std::vector<char>();
   if (!last.QuickCheck)
   {
@@ -420,12 +423,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.Remember(surfaceOutput, particleOutput, convergence, enclosed);
   last.Input = requested;
   // (Only what a re-run can reuse needs the stamp: its scalars' fingerprint is a pass over them.)
-  last.Stamp = last.QuickCheck ? lsi::InputStamp::Of(requested, this->ScalarsOf(requested))
-                               : lsi::InputStamp();
+  last.Stamp = last.SurfaceReady ? lsi::InputStamp::Of(requested, this->ScalarsOf(requested))
+                                 : lsi::InputStamp();
   last.Iterations = this->NumberOfIterationsPerformed;
   last.Converged = this->Converged;
   last.GhostFraction = this->GhostFraction;
-  if (last.QuickCheck && ranks.Distributed())
+  if (last.SurfaceReady && ranks.Distributed())
   {
     this->Internal->LastRanks = std::move(thisRunsRanks); // (`ranks` stays valid: the same object)
   }
@@ -468,11 +471,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   // What the surface output was made from, for a change of its properties alone (LastOutputs::
   // ShownPoints and NearbyPoints: Isopoints, where those are they).
-  last.SurfaceReady = last.QuickCheck;
   last.ShownAreIsopoints = last.SlideReady && !keepsUncut;
   last.Shown =
-    last.QuickCheck && !last.ShownAreIsopoints ? std::move(isopoints) : lsi::IsopointSet();
-  last.Nearby = last.QuickCheck && ranks.Distributed() && !last.SlideReady
+    last.SurfaceReady && !last.ShownAreIsopoints ? std::move(isopoints) : lsi::IsopointSet();
+  last.Nearby = last.SurfaceReady && ranks.Distributed() && !last.SlideReady
     ? std::move(allFound.Points)
     : std::vector<double>();
   this->LastRunTime = this->GetMTime();

@@ -605,8 +605,9 @@ private:
   // The array the scalars come from (SetInputArrayToProcess(0, ...)), or null.
   vtkDataArray* ScalarsOf(vtkPointSet* input);
   // The geometry the last run searched, if still cached and of this input (no search); else
-  // null.
-  const lsi::Neighborhoods* LastGeometry(vtkPointSet* input);
+  // null. `withFlood`: also the last run's flood kept (QuickCheck, the flood start), which a seed
+  // move or a slide needs and a remake of the surface output does not.
+  const lsi::Neighborhoods* LastGeometry(vtkPointSet* input, bool withFlood = true);
   // The flood from the current seeds over `dataOffsets` (f - f_iso per sample) on the last
   // run's geometry (and its points: their bounds and, for the same spheres, the samples in them
   // are kept); false if the seeds are refused or reach no sample above the isovalue.

@@ -119,8 +119,10 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
 {
   lsi::LastOutputs& last = this->Internal->Last;
   // Under MPI every rank decides with the others: all remake, or none.
-  const lsi::Neighborhoods* geometry = onlyOutputsChanged ? this->LastGeometry(input) : nullptr;
-  if (!this->Internal->Ranks->All(geometry && this->LastRanksMatch() && last.SurfaceReady))
+  // (Whatever the start, and under MPI in a periodic box too: the surface needs no flood.)
+  const lsi::Neighborhoods* geometry =
+    onlyOutputsChanged ? this->LastGeometry(input, false) : nullptr;
+  if (!this->Internal->Ranks->All(geometry && this->LastRanksMatch()))
   {
     return false;
   }
@@ -192,12 +194,13 @@ std::unique_ptr<lsi::SPHField> vtkLevelSetIsosurface::RebuildSPHField(
   return field->Valid() ? std::move(field) : nullptr;
 }
 
-const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input)
+const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input, bool withFlood)
 {
   const lsi::LastOutputs& last = this->Internal->Last;
   // (Under MPI a rank's piece may be empty, without points: its samples are in last.Work.)
-  if (!last.Valid || !last.QuickCheck || this->Initialization != FLOOD || input != last.Input ||
+  if (!last.Valid || !last.SurfaceReady || input != last.Input ||
     !(last.Work || input->GetPoints()) ||
+    (withFlood && (!last.QuickCheck || this->Initialization != FLOOD)) ||
     !(lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp))
   {
     return nullptr;
@@ -206,8 +209,9 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
   vtkPoints* points = last.Work ? last.Work->GetPoints() : input->GetPoints();
   const lsi::Neighborhoods* geometry = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
     static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
-  return geometry && !searched && geometry->NumberOfSamples == last.Inside.size() ? geometry
-                                                                                  : nullptr;
+  return geometry && !searched && (!withFlood || geometry->NumberOfSamples == last.Inside.size())
+    ? geometry
+    : nullptr;
 }
 
 bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,

@@ -515,6 +515,22 @@ void TestRemakeOfSurfaceOutput()
   filter->Update();
   same = remade() && SamePoints(filter->GetOutput(0), slid);
   Check(same, "and back as isopoints, the slid points to the bit");
+
+  // The paper's start (seed spheres, no flood kept): the surface output is remade all the same.
+  filter->QuickIsoValueChangesOff();
+  filter->SetIsoValue(0.0);
+  filter->SetInitializationToSeedSpheres();
+  filter->Update();
+  vtkNew<vtkPolyData> spheres;
+  spheres->DeepCopy(filter->GetOutput(0));
+  filter->SetOutputTypeToSplats();
+  filter->Update();
+  same = remade() && filter->GetOutput(0)->GetNumberOfCells() == spheres->GetNumberOfPoints();
+  Check(same, "from the seed spheres' start, an OutputType change makes the output alone");
+  filter->SetOutputTypeToIsopoints();
+  filter->Update();
+  Check(remade() && spheres->GetNumberOfPoints() > 500 && SamePoints(filter->GetOutput(0), spheres),
+    "and back as isopoints, the same points to the bit");
 }
 
 void TestReuseOfNeighbours()
