@@ -108,10 +108,10 @@ struct LastOutputs
   int Iterations = 0;
   bool Converged = false;
   double GhostFraction = 0.0; // under MPI
-  // For the quick check of a seed move (runs with the flood start and no merged duplicates,
-  // not under MPI in a periodic box): the flooded samples, f - f_iso and the spacing, in
-  // storage order. Work: in a periodic box the particles with their images (the samples are
-  // theirs), under MPI with their ghosts (kept with SurfaceReady).
+  // For the quick check of a seed move (runs with the flood start and no merged duplicates):
+  // the flooded samples, f - f_iso and the spacing, in storage order. Work: in a periodic box
+  // the particles with their images (the samples are theirs), under MPI with their ghosts
+  // (kept with SurfaceReady).
   bool QuickCheck = false;
   vtkSmartPointer<vtkPointSet> Work;
   vtkSmartPointer<vtkPointSet> Owned; // under MPI: this rank's particles (before the ghosts)
@@ -150,7 +150,8 @@ struct LastOutputs
   bool SurfaceReady = false;
   bool ShownAreIsopoints = false;
   IsopointSet Shown;
-  std::vector<double> Nearby; // under MPI, without SlideReady
+  std::vector<double> Nearby;      // under MPI, unless NearbyAreIsopoints
+  bool NearbyAreIsopoints = false; // under MPI with SlideReady, outside a periodic box
   bool OnField = false;
   const IsopointSet& ShownPoints() const
   {
@@ -159,7 +160,7 @@ struct LastOutputs
   const std::vector<double>& NearbyPoints(bool distributed) const
   {
     return !distributed ? this->ShownPoints().Points
-                        : (this->SlideReady ? this->Isopoints.Points : this->Nearby);
+                        : (this->NearbyAreIsopoints ? this->Isopoints.Points : this->Nearby);
   }
 
   /// Keeps shallow copies of a successful run's outputs.

@@ -339,10 +339,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   // What a later seed move needs to recognise the same flood (ReuseAfterSeedMove): runs with
-  // the flood start only (a periodic cell around the seed moves with it), not under MPI in a
-  // periodic box (where the method's flood crosses faces and ranks in the same rounds).
-  last.QuickCheck = this->Initialization == FLOOD && mergedId.empty() &&
-    !(ranks.Distributed() && this->Internal->Box.Enabled);
+  // the flood start only (a periodic cell around the seed moves with it). FloodFromSeeds floods
+  // as the method does: across faces and ranks in the same rounds.
+  last.QuickCheck = this->Initialization == FLOOD && mergedId.empty();
   // What a change of the surface output's properties alone needs (the last run's points and
   // input, whatever the start; any layout of ranks and box): no duplicates merged.
   last.SurfaceReady = mergedId.empty();
@@ -474,7 +473,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.ShownAreIsopoints = last.SlideReady && !keepsUncut;
   last.Shown =
     last.SurfaceReady && !last.ShownAreIsopoints ? std::move(isopoints) : lsi::IsopointSet();
-  last.Nearby = last.SurfaceReady && ranks.Distributed() && !last.SlideReady
+  // (Under MPI in a periodic box, the points found in the cell: Isopoints holds every one.)
+  last.NearbyAreIsopoints = last.SlideReady && ranks.Distributed() && !this->Internal->Box.Enabled;
+  last.Nearby = last.SurfaceReady && ranks.Distributed() && !last.NearbyAreIsopoints
     ? std::move(allFound.Points)
     : std::vector<double>();
   this->LastRunTime = this->GetMTime();

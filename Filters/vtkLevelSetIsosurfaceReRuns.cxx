@@ -251,29 +251,45 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     last.SeedSpheres = spheres;
     last.InSeed = std::move(seeds.InSeed);
   }
+  // As the method floods (FloodAcrossRanks, FollowAcrossFaces): in a periodic box a particle
+  // the flood reached seeds its images, and the flood runs again; under MPI, where a rank's
+  // flood reached another's samples they are seeded there, and every rank floods again.
+  std::vector<char> inSeed = last.InSeed;
+  const std::vector<vtkIdType> original = internal.Box.Enabled
+    ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
+    : std::vector<vtkIdType>();
   lsi::FloodResult flood;
-  inside = lsi::FloodedInside(geometry, dataOffsets, last.InSeed,
-    static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-  if (!ranks.All(!flood.Aborted))
+  auto floodHere = [&]() {
+    inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
+      static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
+    for (int round = 0;
+         !flood.Aborted && internal.Box.Enabled && round < lsi::FloodRoundsAcrossFaces &&
+         lsi::SeedImagesOfReached(
+           original, internal.OriginalCount, dataOffsets,
+           [&](std::size_t i) { return inside[i] != 0; }, inSeed);
+         ++round)
+    {
+      lsi::FloodResult again;
+      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
+        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
+      flood.Aborted = again.Aborted;
+    }
+    return !flood.Aborted;
+  };
+  if (!ranks.All(floodHere()))
   {
     return false;
   }
   const double seedSamples = ranks.Sum(static_cast<double>(flood.SeedSamples));
-  // As the method floods (FloodAcrossRanks): where a rank's flood reached another's samples,
-  // they are seeded there, and every rank floods again.
   if (ranks.Distributed())
   {
-    std::vector<char> inSeed = last.InSeed;
     int round = 0;
     for (; round < lsi::FloodRoundsAcrossRanks(ranks) &&
          lsi::SeedWhereRanksReached(
            ranks, dataOffsets, [&](std::size_t i) { return inside[i] != 0; }, inSeed) != 0.0;
          ++round)
     {
-      lsi::FloodResult again;
-      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
-      if (!ranks.All(!again.Aborted))
+      if (!ranks.All(floodHere()))
       {
         return false;
       }
@@ -286,28 +302,6 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     std::vector<double> insideAtOwner(inside.begin(), inside.end());
     ranks.RefreshGhosts(insideAtOwner);
     std::copy(insideAtOwner.begin(), insideAtOwner.end(), inside.begin());
-  }
-  // As the method floods (FollowAcrossFaces): in a periodic box, a particle the flood reached
-  // seeds its images, and the flood runs again.
-  if (internal.Box.Enabled)
-  {
-    const std::vector<vtkIdType> original =
-      lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf);
-    std::vector<char> inSeed = last.InSeed;
-    for (int round = 0; round < lsi::FloodRoundsAcrossFaces &&
-         lsi::SeedImagesOfReached(
-           original, internal.OriginalCount, dataOffsets,
-           [&](std::size_t i) { return inside[i] != 0; }, inSeed);
-         ++round)
-    {
-      lsi::FloodResult again;
-      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
-      if (again.Aborted)
-      {
-        return false;
-      }
-    }
   }
   return seedSamples > 0.0;
 }
@@ -512,14 +506,22 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
   const lsi::IsopointSet* shown = &isopoints;
   const lsi::PointCloudIndex* shownIndex = surfaceIndex.get();
-  lsi::IsopointSet cut;
-  std::unique_ptr<lsi::PointCloudIndex> cutIndex;
+  lsi::IsopointSet cut, inCell;
+  std::unique_ptr<lsi::PointCloudIndex> cutIndex, inCellIndex;
   // Under MPI each rank shows the points nearest its own particles (KeepOwnedIsopoints): those
   // marked kept above (a slide under MPI has no periodic box to cut first).
   if (this->Internal->Box.Enabled || ranks.Distributed())
   {
     cut = isopoints;
     this->KeepPeriodicCell(cut);
+    if (ranks.Distributed() && this->Internal->Box.Enabled)
+    {
+      // (The splat radii's and the Enclosed table's points: those this rank found in the cell,
+      // as in a full run.)
+      inCell.Points = cut.Points;
+      inCell.Normals = cut.Normals;
+      inCellIndex = lsi::IndexOfPoints(inCell.Points);
+    }
     if (ranks.Distributed() && !this->Internal->Box.Enabled)
     {
       lsi::KeepSelected(cut, lsi::ValidIndices(keptPoints));
@@ -535,8 +537,11 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   this->IsopointSeconds = lsi::SecondsSince(start);
   // (Under MPI the splat radii and the Enclosed table's distances come from every point this
   // rank found, as in a full run.)
-  const lsi::IsopointSet& nearby = ranks.Distributed() ? isopoints : *shown;
-  const lsi::PointCloudIndex* nearbyIndex = ranks.Distributed() ? surfaceIndex.get() : shownIndex;
+  const bool nearbyInCell = ranks.Distributed() && this->Internal->Box.Enabled;
+  const lsi::IsopointSet& nearby =
+    nearbyInCell ? inCell : (ranks.Distributed() ? isopoints : *shown);
+  const lsi::PointCloudIndex* nearbyIndex =
+    nearbyInCell ? inCellIndex.get() : (ranks.Distributed() ? surfaceIndex.get() : shownIndex);
   if (!ranks.All(this->MakeSurfaceOutput(
         work, *geometry, *shown, nearby.Points, last.Field.get(), nearbyIndex, surfaceOutput)))
   {
@@ -580,6 +585,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // or the cell or rank's cut of them.)
   last.ShownAreIsopoints = shown == &isopoints;
   last.Shown = last.ShownAreIsopoints ? lsi::IsopointSet() : std::move(cut);
+  last.NearbyAreIsopoints = ranks.Distributed() && !nearbyInCell;
+  last.Nearby = nearbyInCell ? std::move(inCell.Points) : std::vector<double>();
   this->LastRunTime = this->GetMTime();
   return true;
 }
