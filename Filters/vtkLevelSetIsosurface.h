@@ -118,7 +118,7 @@ public:
    * IsoValue changed since the last run, the last surface slides onto the new level instead of the
    * method running again: each point by the refinement on the data (the MLS fit, from the samples
    * of its last fit, the first step from that fit's quadratic model; a level beyond half a spacing
-   * is reached in strides of at most a spacing along the data's gradient, each from the samples
+   * is reached in strides of at most two spacings along the data's gradient, each from the samples
    * nearest to where the last ended; or the SPH field, within one kernel support, its free
    * boundary shot anew from the new inside's edge of the cloud), several times faster. The flood
    * from the seeds runs at the new isovalue and may change only next to the slid surface, no
@@ -128,16 +128,17 @@ public:
    * stays clamped) may come within its neighbourhood radius plus a cell of the new surface: the
    * Enclosed table weighs those by their distance, which the clamped LevelSet lacks (about 6
    * spacings of move in all at the default parameters). Otherwise (a larger change, a component
-   * joined or lost, a cavity opened, MPI in a periodic box) the method runs in full; in a periodic
-   * box every point slides, those beyond the faces too, and the kept cell is cut anew. Under MPI
-   * every rank slides the points it found, and all slide or none. The points then lie on the same
-   * level as the full method's, as many as the last run's (crowding where the surface shrank); the
-   * LevelSet array is the last one moved by the change over the data's gradient (within the band),
-   * so it and the Enclosed table match a full run to first order in the change (after a move of
-   * several spacings the LevelSet array near the new surface is the last run's from that depth:
-   * within the method's own error of the signed distance, but not the method's). Off: every run is
-   * the full method, whatever ran before (reproducible from the parameters alone). SlidLastSurface
-   * tells which happened. */
+   * joined or lost, a cavity opened) the method runs in full; in a periodic box every point
+   * slides, those beyond the faces too, and the kept cell is cut anew. Under MPI (in a periodic
+   * box too) every rank slides the points it found, and all slide or none. A point's move counts
+   * from where the last full run put it: a slider dragged back and forth keeps sliding. The points
+   * then lie on the same level as the full method's, as many as the last run's (crowding where the
+   * surface shrank); the LevelSet array is the last one moved by the change over the data's
+   * gradient (within the band), so it and the Enclosed table match a full run to first order in the
+   * change (after a move of several spacings the LevelSet array near the new surface is the last
+   * run's from that depth: within the method's own error of the signed distance, but not the
+   * method's). Off: every run is the full method, whatever ran before (reproducible from the
+   * parameters alone). SlidLastSurface tells which happened. */
   vtkSetMacro(QuickIsoValueChanges, bool);
   vtkGetMacro(QuickIsoValueChanges, bool);
   vtkBooleanMacro(QuickIsoValueChanges, bool);
