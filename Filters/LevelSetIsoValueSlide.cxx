@@ -411,26 +411,32 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {
     Scratch& s = scratch.Local();
-    s.Ids.resize(stride);
-    s.D2.resize(stride);
     for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
     {
       Eigen::Vector3d p(&points[3 * i]);
       const Eigen::Vector3d start = p, n(&normals[3 * i]);
-      const std::size_t near = geometry.Index->Nearest(p.data(), stride, s.Ids.data(), s.D2.data());
-      // The samples nearest to where the point starts must lie on both sides of the new flood:
-      // checked before the solve, so that a refused slide costs little.
-      bool in = false, out = false;
-      for (std::size_t j = 0; j < near; ++j)
+      std::uint32_t nearest;
+      double d2;
+      if (geometry.Index->Nearest(p.data(), 1, &nearest, &d2) == 0)
       {
-        (inside[s.Ids[j]] ? in : out) = true;
+        refusal = OneSide;
+        break;
+      }
+      // The samples around where the point starts (the nearest and its neighbours: their lists
+      // are kept, a quarter of a search of as many) must lie on both sides of the new flood:
+      // checked before the solve, so that a refused slide costs little.
+      const std::uint32_t* around = geometry.NeighborsOf(nearest);
+      bool in = false, out = false;
+      for (std::size_t j = 0; j < stride; ++j)
+      {
+        (inside[around[j]] ? in : out) = true;
       }
       if (!in || !out)
       {
         refusal = OneSide;
         break;
       }
-      const double reach = settings.SPHMaximumMove * field.Support(s.Ids[0]);
+      const double reach = settings.SPHMaximumMove * field.Support(nearest);
       Eigen::Vector3d normal;
       if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal))
       {
@@ -439,7 +445,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       }
       const double way = (p - start).norm(); // (along a straight line)
       const double bound = BoundAt(drift, i, p, way);
-      const BandPlace place = PlaceInBand(geometry, bound, s.Ids[0], drift);
+      const BandPlace place = PlaceInBand(geometry, bound, nearest, drift);
       if (place == BandPlace::Outside)
       {
         refusal = TooFar;
