@@ -404,7 +404,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   std::vector<char> nearEdge(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  struct Scratch : SlideScratch
+  struct Scratch
   {
     SPHCandidates Candidates;
   };
