@@ -578,8 +578,10 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // inside's edge, no origin) are bound by the farthest slid point.
   const double farthest =
     slid.Bounds.empty() ? 0.0 : *std::max_element(slid.Bounds.begin(), slid.Bounds.end());
+  const std::size_t slidCount = slid.Bounds.size();
   last.Drift.Bounds = std::move(slid.Bounds);
   last.Drift.Bounds.resize(pointCount, farthest);
+  last.Drift.Origins.resize(3 * slidCount); // (the last free boundary's origins are not these)
   last.Drift.Origins.resize(3 * pointCount, std::numeric_limits<double>::quiet_NaN());
   // (The points shown, for a change of the surface output's properties alone: the slid ones,
   // or the cell or rank's cut of them.)
