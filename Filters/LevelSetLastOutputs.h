@@ -126,8 +126,8 @@ struct LastOutputs
   // For the quick re-run after an isovalue change (with QuickCheck, QuickIsoValueChanges and
   // the refinement on the data): f at the samples, the level set phi after the evolution, in
   // storage order, the surface's points with their fits' samples and models, the isopoint
-  // settings, the SPH field if the run used one, and the band's half width; how far each point
-  // may have slid from the surface the method last made in full.
+  // settings, the SPH field if the run used one, and the band (its half width, and how far each
+  // point may have slid from the surface the method last made in full).
   bool SlideReady = false;
   std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
   double IsoValue = 0.0;
@@ -136,8 +136,7 @@ struct LastOutputs
   std::vector<double> FitCentres; // where FitSamples were gathered (empty: at the points)
   IsopointSettings Settings;
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
-  double HalfWidth = 0.0;
-  BandDrift Drift; // how far each of Isopoints may lie from the surface the band is about
+  BandDrift Drift;               // the band, and how far each of Isopoints may lie from its surface
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
   FloodStart Start;              // the last flood's level set, for runs that change no input to it
   // What the surface output was made from, for a change of its own properties alone

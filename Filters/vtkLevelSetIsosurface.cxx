@@ -465,7 +465,6 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Phi = std::move(phi);
     last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
-    last.HalfWidth = halfWidth;
     last.Drift.Reset(last.Isopoints.Points, halfWidth);
   }
   // What the surface output was made from, for a change of its properties alone (LastOutputs::

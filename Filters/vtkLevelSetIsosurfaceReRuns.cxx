@@ -175,20 +175,16 @@ std::unique_ptr<lsi::SPHField> vtkLevelSetIsosurface::RebuildSPHField(
   // the same field, without its checks' messages (they were given).
   int association = -1;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
-  const vtkIdType n = work->GetNumberOfPoints();
+  std::vector<double> values;
+  double range[2];
   lsi::SPHFieldArrays arrays;
-  std::string problem, choice;
-  if (!scalars || scalars->GetNumberOfTuples() != n ||
-    static_cast<std::size_t>(n) != geometry.NumberOfSamples ||
+  std::string choice;
+  std::string problem = lsi::CheckPiece(work, scalars, association, values, range);
+  if (!problem.empty() || values.size() != geometry.NumberOfSamples ||
     !lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice) ||
     !problem.empty())
   {
     return nullptr;
-  }
-  std::vector<double> values(static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    values[i] = scalars->GetTuple1(i);
   }
   std::unique_ptr<lsi::SPHField> field(new lsi::SPHField(geometry, arrays, values, problem));
   return field->Valid() ? std::move(field) : nullptr;
@@ -479,7 +475,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
       2.0 * settings.CellSize, changed, counted);
   // (The surface lies within about half its points' spacing of them: one cell is the margin.)
   const bool clampedClear = changesNear &&
-    lsi::ClampedSamplesClear(*geometry, last.Phi, last.HalfWidth, isopoints.Points,
+    lsi::ClampedSamplesClear(*geometry, last.Phi, last.Drift.HalfWidth, isopoints.Points,
       slid.NearBandEdge, ranks.Distributed() ? &keptPoints : nullptr, settings.CellSize);
   const bool accepted = ranks.All(clampedClear);
   vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
@@ -498,7 +494,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (The band lies among the kept deep inside's near samples, where it was found.)
   const bool nearKept = last.DeepInside.Group.size() == geometry->NumberOfSamples;
   const std::vector<std::size_t> changedSamples =
-    lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.HalfWidth,
+    lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.Drift.HalfWidth,
       largestMove, phi, nearKept ? &last.DeepInside.Near : nullptr);
   ranks.RefreshGhosts(phi); // (a ghost's stencil may be cut: its owner's value is the serial one)
   // In a periodic box the outputs show the kept cell's points, with a search index of their
@@ -551,7 +547,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
   this->MakeParticleOutputs(particles, work, *geometry, phi, std::vector<vtkIdType>(),
-    last.HalfWidth, nearby, nearbyIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
+    last.Drift.HalfWidth, nearby, nearbyIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
     &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);

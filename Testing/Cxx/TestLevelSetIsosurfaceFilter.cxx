@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkVariant.h"
 
@@ -361,6 +362,24 @@ bool SamePoints(vtkPolyData* a, vtkPolyData* b)
   return same;
 }
 
+// A fresh filter on `data`, configured as `filter` is (Configure, then the settings these tests
+// change), run: the outputs a re-run of `filter` must give.
+vtkSmartPointer<vtkLevelSetIsosurface> FreshLike(vtkLevelSetIsosurface* filter, vtkPolyData* data)
+{
+  auto fresh = vtkSmartPointer<vtkLevelSetIsosurface>::New();
+  Configure(fresh, data);
+  fresh->SetIsoValue(filter->GetIsoValue());
+  fresh->SetSeedCenter(filter->GetSeedCenter());
+  fresh->SetCurvatureWeight(filter->GetCurvatureWeight());
+  fresh->SetTimeStep(filter->GetTimeStep());
+  fresh->SetOutputType(filter->GetOutputType());
+  fresh->SetSplatScale(filter->GetSplatScale());
+  fresh->SetSplatSides(filter->GetSplatSides());
+  fresh->SetInterpolateArrays(filter->GetInterpolateArrays());
+  fresh->Update();
+  return fresh;
+}
+
 // A run whose flood would be the last one's (the same particles, scalars, isovalue, seeds and
 // band) starts from that flood's level set: after a change of CurvatureWeight or TimeStep the
 // flood does not run again, and the outputs are a fresh filter's to the bit. A change of the
@@ -372,13 +391,7 @@ void TestReuseOfFlood()
   vtkNew<vtkLevelSetIsosurface> filter;
   Configure(filter, data);
   auto sameAsFresh = [&](const std::string& what) {
-    vtkNew<vtkLevelSetIsosurface> fresh;
-    Configure(fresh, data);
-    fresh->SetCurvatureWeight(filter->GetCurvatureWeight());
-    fresh->SetTimeStep(filter->GetTimeStep());
-    fresh->SetIsoValue(filter->GetIsoValue());
-    fresh->SetSeedCenter(filter->GetSeedCenter());
-    fresh->Update();
+    vtkSmartPointer<vtkLevelSetIsosurface> fresh = FreshLike(filter, data);
     bool same = filter->GetOutput(0)->GetNumberOfPoints() > 500 &&
       SamePoints(filter->GetOutput(0), fresh->GetOutput(0));
     vtkDataArray* phi = filter->GetOutput(1)->GetPointData()->GetArray("LevelSet");
@@ -447,14 +460,7 @@ void TestRemakeOfSurfaceOutput()
   Configure(filter, data);
   filter->Update();
   auto sameAsFresh = [&](const std::string& what) {
-    vtkNew<vtkLevelSetIsosurface> fresh;
-    Configure(fresh, data);
-    fresh->SetOutputType(filter->GetOutputType());
-    fresh->SetSplatScale(filter->GetSplatScale());
-    fresh->SetSplatSides(filter->GetSplatSides());
-    fresh->SetInterpolateArrays(filter->GetInterpolateArrays());
-    fresh->SetCurvatureWeight(filter->GetCurvatureWeight());
-    fresh->Update();
+    vtkSmartPointer<vtkLevelSetIsosurface> fresh = FreshLike(filter, data);
     vtkPolyData* a = filter->GetOutput(0);
     vtkPolyData* b = fresh->GetOutput(0);
     const bool same = a->GetNumberOfPoints() > 500 && SamePoints(a, b) &&
