@@ -22,31 +22,63 @@ namespace lsi
 
 namespace
 {
-// Breadth-first flood from the seed samples through neighbours with f > f_iso.
+// Breadth-first flood from the seed samples through neighbours with f > f_iso, a wave at a
+// time, each wave in parallel (a sample reached by several threads at once is claimed by one).
+// The inside is the same whatever the order: the seeds' connected component.
 std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  std::vector<char> inside(n, 0);
-  std::vector<std::uint32_t> queue = IndicesWhere<std::uint32_t>(
+  const std::unique_ptr<std::atomic<unsigned char>[]> claimed = FilledAtomics<unsigned char>(n, 0);
+  std::vector<std::uint32_t> wave = IndicesWhere<std::uint32_t>(
     n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0; });
-  for (const std::uint32_t i : queue)
+  for (const std::uint32_t i : wave)
   {
-    inside[i] = 1;
+    claimed[i].store(1, std::memory_order_relaxed);
   }
-  result.SeedSamples = queue.size();
-  BreadthFirst(
-    geometry, queue,
-    [&](std::uint32_t j) {
-      if (inside[j] || !(dataOffsets[j] > 0.0))
+  result.SeedSamples = wave.size();
+  std::size_t reached = 0;
+  while (!wave.empty() && !stop.Stop())
+  {
+    reached += wave.size();
+    geometry.EnsureNeighbors(wave);
+    vtkSMPThreadLocal<std::vector<std::uint32_t>> next;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), [&](vtkIdType begin, vtkIdType end) {
+      std::vector<std::uint32_t>& mine = next.Local();
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        return Visit::Skip;
+        const std::uint32_t i = wave[static_cast<std::size_t>(k)];
+        if (geometry.IsTruncated(i))
+        {
+          continue;
+        }
+        const std::uint32_t* ids = geometry.NeighborsOf(i);
+        for (int m = 1; m < geometry.Stride; ++m)
+        {
+          const std::uint32_t j = ids[m];
+          unsigned char unclaimed = 0;
+          if (dataOffsets[j] > 0.0 && claimed[j].load(std::memory_order_relaxed) == 0 &&
+            claimed[j].compare_exchange_strong(unclaimed, 1, std::memory_order_relaxed))
+          {
+            mine.push_back(j);
+          }
+        }
       }
-      inside[j] = 1;
-      return Visit::Enqueue;
-    },
-    &stop);
-  result.InsideSamples = queue.size();
+    });
+    wave.clear();
+    for (const std::vector<std::uint32_t>& part : next)
+    {
+      wave.insert(wave.end(), part.begin(), part.end());
+    }
+  }
+  result.InsideSamples = reached;
+  std::vector<char> inside(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      inside[i] = static_cast<char>(claimed[i].load(std::memory_order_relaxed));
+    }
+  });
   return inside;
 }
 
@@ -90,6 +122,14 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
         }
       }
     });
+  // Their lists, in parallel: the searches below start there, and the distances after the
+  // flood read them anyway (InsideAndNeighbors).
+  std::vector<std::uint32_t> allStarts;
+  for (const std::vector<std::uint32_t>& starts : found)
+  {
+    allStarts.insert(allStarts.end(), starts.begin(), starts.end());
+  }
+  geometry.EnsureNeighbors(allStarts);
   for (const std::vector<std::uint32_t>& starts : found)
   {
     for (const std::uint32_t start : starts)
