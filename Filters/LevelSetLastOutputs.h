@@ -23,6 +23,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkType.h"
@@ -190,10 +191,12 @@ struct LastOutputs
   static std::vector<char> InsideOf(const std::vector<double>& phi)
   {
     std::vector<char> inside(phi.size());
-    for (std::size_t i = 0; i < phi.size(); ++i)
-    {
-      inside[i] = phi[i] > 0.0;
-    }
+    vtkSMPTools::For(0, static_cast<vtkIdType>(phi.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        inside[i] = phi[i] > 0.0;
+      }
+    });
     return inside;
   }
 };

@@ -355,7 +355,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.InSeed.clear();
     last.SeedSpheres.clear();
   }
-  last.DataOffsets = last.QuickCheck ? dataOffsets : std::vector<double>();
+  last.DataOffsets = std::vector<double>(); // (this run's, moved there at its end: no copy)
   last.Spacing = settings.Spacing;
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
   if (!this->Evolve(*geometry, dataSign, dataOffsets, settings, phi, iterations))
@@ -466,6 +466,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
     last.Drift.Reset(last.Isopoints.Points, halfWidth);
+  }
+  if (last.QuickCheck)
+  {
+    last.DataOffsets = std::move(dataOffsets);
   }
   // What the surface output was made from, for a change of its properties alone (LastOutputs::
   // ShownPoints and NearbyPoints: Isopoints, where those are they).
