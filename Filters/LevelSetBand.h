@@ -42,12 +42,13 @@ private:
 template <typename Body>
 void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
 {
-  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      body(static_cast<std::size_t>(k), where[static_cast<std::size_t>(k)]);
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), BalancedGrain(where.size()),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        body(static_cast<std::size_t>(k), where[static_cast<std::size_t>(k)]);
+      }
+    });
 }
 
 } // namespace lsi

@@ -43,28 +43,29 @@ std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>
     reached += wave.size();
     geometry.EnsureNeighbors(wave);
     vtkSMPThreadLocal<std::vector<std::uint32_t>> next;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), [&](vtkIdType begin, vtkIdType end) {
-      std::vector<std::uint32_t>& mine = next.Local();
-      for (vtkIdType k = begin; k < end; ++k)
-      {
-        const std::uint32_t i = wave[static_cast<std::size_t>(k)];
-        if (geometry.IsTruncated(i))
+    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), BalancedGrain(wave.size()),
+      [&](vtkIdType begin, vtkIdType end) {
+        std::vector<std::uint32_t>& mine = next.Local();
+        for (vtkIdType k = begin; k < end; ++k)
         {
-          continue;
-        }
-        const std::uint32_t* ids = geometry.NeighborsOf(i);
-        for (int m = 1; m < geometry.Stride; ++m)
-        {
-          const std::uint32_t j = ids[m];
-          unsigned char unclaimed = 0;
-          if (dataOffsets[j] > 0.0 && claimed[j].load(std::memory_order_relaxed) == 0 &&
-            claimed[j].compare_exchange_strong(unclaimed, 1, std::memory_order_relaxed))
+          const std::uint32_t i = wave[static_cast<std::size_t>(k)];
+          if (geometry.IsTruncated(i))
           {
-            mine.push_back(j);
+            continue;
+          }
+          const std::uint32_t* ids = geometry.NeighborsOf(i);
+          for (int m = 1; m < geometry.Stride; ++m)
+          {
+            const std::uint32_t j = ids[m];
+            unsigned char unclaimed = 0;
+            if (dataOffsets[j] > 0.0 && claimed[j].load(std::memory_order_relaxed) == 0 &&
+              claimed[j].compare_exchange_strong(unclaimed, 1, std::memory_order_relaxed))
+            {
+              mine.push_back(j);
+            }
           }
         }
-      }
-    });
+      });
     wave.clear();
     for (const std::vector<std::uint32_t>& part : next)
     {
@@ -250,27 +251,28 @@ std::vector<std::uint32_t> PrefetchBand(const Neighborhoods& geometry,
     reachedAll.insert(reachedAll.end(), wave.begin(), wave.end());
     geometry.EnsureNeighbors(wave);
     vtkSMPThreadLocal<std::vector<std::uint32_t>> reached;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), [&](vtkIdType begin, vtkIdType end) {
-      std::vector<std::uint32_t>& next = reached.Local();
-      for (vtkIdType k = begin; k < end; ++k)
-      {
-        const std::uint32_t i = wave[static_cast<std::size_t>(k)];
-        const std::uint32_t source = origin[i].load(std::memory_order_relaxed);
-        const Eigen::Vector3d from(geometry.Position(source));
-        const std::uint32_t* ids = geometry.NeighborsOf(i);
-        for (int m = 1; m < geometry.Stride; ++m)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), BalancedGrain(wave.size()),
+      [&](vtkIdType begin, vtkIdType end) {
+        std::vector<std::uint32_t>& next = reached.Local();
+        for (vtkIdType k = begin; k < end; ++k)
         {
-          const std::uint32_t j = ids[m];
-          std::uint32_t unclaimed = None;
-          if (origin[j].load(std::memory_order_relaxed) == None &&
-            (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= halfWidth &&
-            origin[j].compare_exchange_strong(unclaimed, source, std::memory_order_relaxed))
+          const std::uint32_t i = wave[static_cast<std::size_t>(k)];
+          const std::uint32_t source = origin[i].load(std::memory_order_relaxed);
+          const Eigen::Vector3d from(geometry.Position(source));
+          const std::uint32_t* ids = geometry.NeighborsOf(i);
+          for (int m = 1; m < geometry.Stride; ++m)
           {
-            next.push_back(j);
+            const std::uint32_t j = ids[m];
+            std::uint32_t unclaimed = None;
+            if (origin[j].load(std::memory_order_relaxed) == None &&
+              (Eigen::Vector3d(geometry.Position(j)) - from).norm() <= halfWidth &&
+              origin[j].compare_exchange_strong(unclaimed, source, std::memory_order_relaxed))
+            {
+              next.push_back(j);
+            }
           }
         }
-      }
-    });
+      });
     wave.clear();
     for (const std::vector<std::uint32_t>& part : reached)
     {
@@ -349,8 +351,8 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   const std::vector<std::uint32_t> nearFront = InsideAndNeighbors(geometry, inside);
   geometry.EnsureNeighbors(nearFront);
   // Each sample's nearest crossing, in parallel (each writes its own entries).
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(nearFront.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(nearFront.size()), BalancedGrain(nearFront.size()),
+    [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
       {
         const std::size_t i = nearFront[static_cast<std::size_t>(k)];

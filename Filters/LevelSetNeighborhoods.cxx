@@ -70,40 +70,72 @@ void WithTypedCoordinates(vtkDataArray* coordinates, F&& f)
 // sorted words with the same cell are compared, after sorting each by position.
 void FindDuplicates(const UninitializedVector<std::uint64_t>& words, Neighborhoods& out)
 {
+  // In pieces that each start a run of words of one cell, in parallel; the count and the
+  // lowest id are the same whatever the pieces.
   const std::size_t n = words.size();
-  std::vector<std::size_t> run;
-  for (std::size_t begin = 0, end = 0; begin < n; begin = end)
+  auto cell = [&](std::size_t k) { return words[k] >> 32; };
+  const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(256, n / 4096));
+  std::vector<std::size_t> starts(pieces + 1, n);
+  for (std::size_t p = 0; p < pieces; ++p)
   {
-    end = begin + 1;
-    while (end < n && (words[end] >> 32) == (words[begin] >> 32))
+    std::size_t k = n * p / pieces;
+    while (k > 0 && k < n && cell(k) == cell(k - 1))
     {
-      ++end;
+      ++k;
     }
-    if (end - begin < 2)
-    {
-      continue;
-    }
-    run.resize(end - begin);
-    for (std::size_t k = 0; k < run.size(); ++k)
-    {
-      run[k] = begin + k;
-    }
-    auto position = [&](std::size_t i) {
-      return std::make_tuple(
-        out.Positions[3 * i], out.Positions[3 * i + 1], out.Positions[3 * i + 2]);
-    };
-    std::sort(run.begin(), run.end(),
-      [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
-    for (std::size_t k = 0; k < run.size(); ++k)
-    {
-      const bool same = (k > 0 && position(run[k]) == position(run[k - 1])) ||
-        (k + 1 < run.size() && position(run[k]) == position(run[k + 1]));
-      if (same)
+    starts[p] = k;
+  }
+  std::vector<std::size_t> duplicates(pieces, 0);
+  std::vector<long long> first(pieces, -1);
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(pieces), 1, [&](vtkIdType firstPiece, vtkIdType lastPiece) {
+      std::vector<std::size_t> run;
+      auto position = [&](std::size_t i) {
+        return std::make_tuple(
+          out.Positions[3 * i], out.Positions[3 * i + 1], out.Positions[3 * i + 2]);
+      };
+      for (vtkIdType p = firstPiece; p < lastPiece; ++p)
       {
-        ++out.DuplicateSamples;
-        const long long id = out.Order[run[k]];
-        out.FirstDuplicate = out.FirstDuplicate < 0 ? id : std::min(out.FirstDuplicate, id);
+        for (std::size_t begin = starts[p], end = begin; begin < std::max(starts[p], starts[p + 1]);
+             begin = end)
+        {
+          end = begin + 1;
+          while (end < n && cell(end) == cell(begin))
+          {
+            ++end;
+          }
+          if (end - begin < 2)
+          {
+            continue;
+          }
+          run.resize(end - begin);
+          for (std::size_t k = 0; k < run.size(); ++k)
+          {
+            run[k] = begin + k;
+          }
+          std::sort(run.begin(), run.end(),
+            [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
+          for (std::size_t k = 0; k < run.size(); ++k)
+          {
+            const bool same = (k > 0 && position(run[k]) == position(run[k - 1])) ||
+              (k + 1 < run.size() && position(run[k]) == position(run[k + 1]));
+            if (same)
+            {
+              ++duplicates[p];
+              const long long id = out.Order[run[k]];
+              first[p] = first[p] < 0 ? id : std::min(first[p], id);
+            }
+          }
+        }
       }
+    });
+  for (std::size_t p = 0; p < pieces; ++p)
+  {
+    out.DuplicateSamples += duplicates[p];
+    if (first[p] >= 0)
+    {
+      out.FirstDuplicate =
+        out.FirstDuplicate < 0 ? first[p] : std::min(out.FirstDuplicate, first[p]);
     }
   }
 }
@@ -198,7 +230,15 @@ UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhood
     // Two pieces per thread, counted and scattered in parallel (the same order on any count).
     const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
     RadixSortPacked(words, scratch, 2 * static_cast<std::size_t>(threads),
-      [threads](std::vector<std::function<void()>>& tasks) { RunOnThreads(tasks, threads); });
+      [](std::vector<std::function<void()>>& tasks) {
+        vtkSMPTools::For(
+          0, static_cast<vtkIdType>(tasks.size()), 1, [&](vtkIdType first, vtkIdType last) {
+            for (vtkIdType t = first; t < last; ++t)
+            {
+              tasks[static_cast<std::size_t>(t)]();
+            }
+          });
+      });
   }
   out.Order.resize(n);
   out.Positions.resize(3 * n);
@@ -346,18 +386,19 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
   }
   vtkSMPThreadLocal<std::vector<double>> scratch;
   vtkSMPThreadLocal<std::size_t> singular(0), thin(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), [&](vtkIdType begin, vtkIdType end) {
-    std::vector<double>& stencil = scratch.Local();
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      const std::size_t i = missing[k];
-      bool isThin = false;
-      const bool ok = this->ComputeStencil(i, stencil, isThin);
-      this->StencilState[i] = ok ? 1 : 2;
-      singular.Local() += !ok;
-      thin.Local() += isThin;
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), BalancedGrain(missing.size()),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::vector<double>& stencil = scratch.Local();
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        const std::size_t i = missing[k];
+        bool isThin = false;
+        const bool ok = this->ComputeStencil(i, stencil, isThin);
+        this->StencilState[i] = ok ? 1 : 2;
+        singular.Local() += !ok;
+        thin.Local() += isThin;
+      }
+    });
   for (std::size_t s : singular)
   {
     this->SingularSamples += s;
@@ -583,8 +624,8 @@ Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
     this->SampleRadii.resize(this->Sample.size());
     // Each search bounded first by the radius of the one before it (SearchRow: the lists are
     // exact either way).
-    vtkSMPTools::For(
-      0, static_cast<vtkIdType>(this->Sample.size()), [&](vtkIdType begin, vtkIdType end) {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(this->Sample.size()),
+      BalancedGrain(this->Sample.size()), [&](vtkIdType begin, vtkIdType end) {
         double nearby = 0.0;
         for (vtkIdType m = begin; m < end; ++m)
         {

@@ -281,17 +281,18 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
   // neighbour): the lists are exact either way, the bound only prunes the tree walk.
   constexpr std::size_t Run = 64;
   const std::size_t runs = (missing.size() + Run - 1) / Run;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(runs), [&](vtkIdType first, vtkIdType last) {
-    for (std::size_t r = static_cast<std::size_t>(first); r < static_cast<std::size_t>(last); ++r)
-    {
-      double nearby = 0.0;
-      for (std::size_t k = r * Run; k < std::min(missing.size(), (r + 1) * Run); ++k)
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(runs), BalancedGrain(runs), [&](vtkIdType first, vtkIdType last) {
+      for (std::size_t r = static_cast<std::size_t>(first); r < static_cast<std::size_t>(last); ++r)
       {
-        this->EnsureRow(missing[k], nearby);
-        nearby = this->Radii[missing[k]];
+        double nearby = 0.0;
+        for (std::size_t k = r * Run; k < std::min(missing.size(), (r + 1) * Run); ++k)
+        {
+          this->EnsureRow(missing[k], nearby);
+          nearby = this->Radii[missing[k]];
+        }
       }
-    }
-  });
+    });
 }
 
 /// What a breadth-first search over the neighbour graph does with a neighbour it meets.
