@@ -52,6 +52,9 @@ struct EnclosedDeepInside
   // The samples neither deep nor far outside (phi above FarOutside), in storage order: a slide
   // changes phi only within the band's half width, so the band is among these, whatever slid.
   std::vector<std::uint32_t> Near;
+  // Per Near sample, its particle's record (enclosed::ReadParticle: mass, density and the
+  // averaged arrays' values).
+  std::vector<double> NearRecords;
   std::vector<double> Sums; // each group's sums, packed under its lowest particle id
   int Components = 0;       // the arrays' components averaged, when kept
 };

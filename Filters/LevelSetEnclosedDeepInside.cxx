@@ -32,10 +32,12 @@ bool DeepInside(const EnclosedInputs& in, std::size_t i)
 
 // The sums of `samples` by group (groupOf(k) for the k-th sample, below `groups`), in fixed
 // chunks summed in parallel and added in chunk order: the same on any number of threads.
-template <typename GroupOf, typename DistanceOf>
-std::vector<Sums> SumsByGroup(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays,
-  int components, const std::vector<std::uint32_t>& samples, std::size_t groups, GroupOf&& groupOf,
-  DistanceOf&& distanceOf)
+// recordOf(k, scratch) gives the k-th sample's particle record (ReadParticle's), read into
+// `scratch` (RecordSize doubles) or kept elsewhere.
+template <typename GroupOf, typename DistanceOf, typename RecordOf>
+std::vector<Sums> SumsByGroup(const EnclosedInputs& in, int components,
+  const std::vector<std::uint32_t>& samples, std::size_t groups, GroupOf&& groupOf,
+  DistanceOf&& distanceOf, RecordOf&& recordOf)
 {
   struct Chunk
   {
@@ -46,7 +48,7 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, const std::vector<vtkDat
   const std::size_t chunks = (samples.size() + ChunkSize - 1) / ChunkSize;
   std::vector<Chunk> parts(chunks);
   vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
-    std::vector<double> tuple;
+    std::vector<double> scratch(RecordSize(components));
     for (vtkIdType chunk = first; chunk < last; ++chunk)
     {
       Chunk& out = parts[static_cast<std::size_t>(chunk)];
@@ -63,7 +65,7 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, const std::vector<vtkDat
           out.Groups.push_back(group);
         }
         const std::size_t i = samples[k];
-        AddParticle(in, arrays, components, in.Geometry->Order[i], i, distanceOf(i), tuple,
+        AddRecord(in, recordOf(k, scratch.data()), components, i, distanceOf(i),
           out.Parts[found.first->second]);
       }
     }
@@ -170,10 +172,25 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     });
   int components = 0;
   const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
+  // The near samples' particle records, in Near's order: a re-run reads them there, not
+  // scattered over the input's arrays (in input order).
+  const std::size_t record = RecordSize(components);
+  deep.NearRecords.resize(record * deep.Near.size());
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        ReadParticle(in, arrays, geometry.Order[deep.Near[p]], &deep.NearRecords[record * p]);
+      }
+    });
   const std::vector<double>& phi = *in.Phi;
   const std::vector<Sums> sums = SumsByGroup(
-    in, arrays, components, inside, groups, [&](std::size_t k) { return deep.Group[inside[k]]; },
-    [&](std::size_t i) { return phi[i]; });
+    in, components, inside, groups, [&](std::size_t k) { return deep.Group[inside[k]]; },
+    [&](std::size_t i) { return phi[i]; },
+    [&](std::size_t k, double* scratch) {
+      ReadParticle(in, arrays, geometry.Order[inside[k]], scratch);
+      return scratch;
+    });
   deep.Sums.clear();
   for (std::size_t g = 0; g < sums.size(); ++g)
   {
@@ -190,7 +207,8 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   int components = 0;
   const std::vector<vtkDataArray*> arrays = ArraysToAverage(in, components);
   const std::size_t record = FixedFields + static_cast<std::size_t>(components);
-  if (deep.Group.size() != n || deep.Components != components || deep.Sums.size() % record != 0)
+  if (deep.Group.size() != n || deep.Components != components || deep.Sums.size() % record != 0 ||
+    deep.NearRecords.size() != RecordSize(components) * deep.Near.size())
   {
     return nullptr; // kept for other samples or arrays
   }
@@ -261,8 +279,9 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   }
   const SurfaceDistance distance(in, 0.0);
   std::vector<Sums> sums = SumsByGroup(
-    in, arrays, components, band, key.size(),
-    [&](std::size_t b) { return componentOf[groups + b]; }, distance);
+    in, components, band, key.size(), [&](std::size_t b) { return componentOf[groups + b]; },
+    distance,
+    [&](std::size_t b, double*) { return &deep.NearRecords[RecordSize(components) * inBand[b]]; });
   for (std::size_t g = 0; g < groups; ++g)
   {
     sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components));

@@ -96,22 +96,17 @@ struct Measures
   double Mass = 0.0, Volume = 0.0, Step = 0.0, StepDerivative = 0.0;
 };
 
-Measures MeasuresOf(const EnclosedInputs& in, vtkIdType p, std::size_t i, double signedDistance)
+// From a particle's record (ReadParticle's: mass, density, then the averaged arrays' values).
+Measures MeasuresOf(
+  const EnclosedInputs& in, const double* record, std::size_t i, double signedDistance)
 {
   const Neighborhoods& geometry = *in.Geometry;
   const double s = geometry.RadiusOf(i); // the shell's half width
   Measures m;
   m.Step = Step(signedDistance, s);
   m.StepDerivative = StepDerivative(signedDistance, s);
-  double rho = 0.0;
-  if (in.Mass)
-  {
-    in.Mass->GetTuple(p, &m.Mass);
-  }
-  if (in.Density)
-  {
-    in.Density->GetTuple(p, &rho);
-  }
+  m.Mass = record[0];
+  const double rho = record[1];
   const double radius = geometry.RadiusOf(i);
   const int neighbors = geometry.Stride - 1;
   m.Volume = in.Mass && in.Density && rho > 0.0
@@ -126,9 +121,31 @@ double WeightOf(const EnclosedInputs& in, const Measures& m)
 }
 } // namespace
 
+void ReadParticle(
+  const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, vtkIdType p, double* record)
+{
+  record[0] = record[1] = 0.0;
+  if (in.Mass)
+  {
+    in.Mass->GetTuple(p, &record[0]);
+  }
+  if (in.Density)
+  {
+    in.Density->GetTuple(p, &record[1]);
+  }
+  double* values = record + 2;
+  for (vtkDataArray* array : arrays)
+  {
+    array->GetTuple(p, values);
+    values += array->GetNumberOfComponents();
+  }
+}
+
 double CentreWeight(const EnclosedInputs& in, vtkIdType p, std::size_t i, double signedDistance)
 {
-  return WeightOf(in, MeasuresOf(in, p, i, signedDistance));
+  double record[2];
+  ReadParticle(in, std::vector<vtkDataArray*>(), p, record);
+  return WeightOf(in, MeasuresOf(in, record, i, signedDistance));
 }
 
 void CircularMean(const PeriodicBox& box, const double circular[6], double mean[3])
@@ -144,9 +161,17 @@ void CircularMean(const PeriodicBox& box, const double circular[6], double mean[
 void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
   vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c)
 {
+  tuple.resize(RecordSize(components));
+  ReadParticle(in, arrays, p, tuple.data());
+  AddRecord(in, tuple.data(), components, i, signedDistance, c);
+}
+
+void AddRecord(const EnclosedInputs& in, const double* record, int components, std::size_t i,
+  double signedDistance, Sums& c)
+{
   const Neighborhoods& geometry = *in.Geometry;
   const std::vector<double>& phi = *in.Phi;
-  const Measures m = MeasuresOf(in, p, i, signedDistance);
+  const Measures m = MeasuresOf(in, record, i, signedDistance);
   c.Inside = c.Inside || phi[i] > 0.0;
   c.Particles += phi[i] > 0.0 ? 1 : 0;
   c.Mass += m.Mass * m.Step;
@@ -174,15 +199,9 @@ void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arr
   {
     c.Moment[d] += weight * (x[d] - c.Reference[d]);
   }
-  int k = 0;
-  for (vtkDataArray* array : arrays)
+  for (int k = 0; k < components; ++k)
   {
-    tuple.resize(static_cast<std::size_t>(array->GetNumberOfComponents()));
-    array->GetTuple(p, tuple.data());
-    for (const double value : tuple)
-    {
-      c.Means[k++] += weight * value;
-    }
+    c.Means[k] += weight * record[2 + k];
   }
 }
 

@@ -123,10 +123,26 @@ double CentreWeight(const EnclosedInputs& in, vtkIdType p, std::size_t i, double
 /// order the particles were summed in.
 void CircularMean(const PeriodicBox& box, const double circular[6], double mean[3]);
 
+/// The doubles of a particle's record: its mass and density (0 without those arrays), then the
+/// values of the `components` of the arrays averaged.
+inline std::size_t RecordSize(int components)
+{
+  return 2 + static_cast<std::size_t>(components);
+}
+
+/// Particle p's record (RecordSize doubles) from the input's arrays. (GetTuple into a buffer is
+/// safe from threads.)
+void ReadParticle(
+  const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, vtkIdType p, double* record);
+
 /// Adds particle p (sample i, at signed distance `signedDistance` from the surface) to the sums
-/// of its component. `tuple` is scratch space (GetTuple into a buffer is safe from threads).
+/// of its component. `tuple` is scratch space for its record.
 void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays, int components,
   vtkIdType p, std::size_t i, double signedDistance, std::vector<double>& tuple, Sums& c);
+
+/// AddParticle from the particle's record, read before (ReadParticle).
+void AddRecord(const EnclosedInputs& in, const double* record, int components, std::size_t i,
+  double signedDistance, Sums& c);
 
 /// The signed distance of a sample to the surface, positive inside: near the surface its height
 /// over the tangent plane of the nearest surface point, elsewhere phi. In a periodic box, the

@@ -65,7 +65,7 @@ bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn po
   }
   normal << xx, xy, xz, x1, xy, yy, yz, y1, xz, yz, zz, z1, x1, y1, z1, w1;
   const double scale = normal.trace() / 4.0;
-  return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * std::pow(scale, 4);
+  return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * (scale * scale) * (scale * scale);
 }
 
 /// Builds the stencil of a weighted linear fit around `centre` from `count` neighbour positions
@@ -201,7 +201,7 @@ bool FitLinear(const double centre[3], std::size_t count, PositionFn position, V
   const Eigen::Matrix4d normal = Eigen::Map<const Eigen::Matrix4d>(&sums[0][0]);
   const Eigen::Vector4d right = Eigen::Map<const Eigen::Vector4d>(rightSums);
   const double scale = normal.trace() / 4.0; // the singularity test of BuildLinearStencil
-  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * std::pow(scale, 4))
+  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * (scale * scale) * (scale * scale))
   {
     return false;
   }
@@ -289,7 +289,8 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   // BuildLinearStencil).
   const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>().selfadjointView<Eigen::Lower>();
   const double scale = linearNormal.trace() / 4.0;
-  if (!(scale > 0.0) || std::abs(linearNormal.determinant()) < 1e-10 * std::pow(scale, 4))
+  if (!(scale > 0.0) ||
+    std::abs(linearNormal.determinant()) < 1e-10 * (scale * scale) * (scale * scale))
   {
     return false;
   }
