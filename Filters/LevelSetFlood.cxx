@@ -90,9 +90,10 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
-  std::vector<char> large(n, 0); // outside samples known to belong to a large pocket
+  // (Zeroed in parallel: at 20M samples these are 20 MB each.)
+  UninitializedVector<char> large = FilledInParallel<char>(n, 0); // samples of a large pocket
   std::vector<std::uint32_t> pocket;
-  std::vector<char> visited(n, 0);
+  UninitializedVector<char> visited = FilledInParallel<char>(n, 0);
   // A ghost whose neighbour list is cut short (MPI, Neighborhoods::Truncated) cannot tell how far
   // its pocket goes: it counts as part of a large pocket.
   // The outside neighbours of the inside samples, in the order of the loop that visits them
@@ -159,7 +160,7 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
       });
       // A large pocket is remembered, so later searches stop on meeting it; a small one is
       // filled.
-      std::vector<char>& mark = isLarge ? large : inside;
+      char* mark = isLarge ? large.data() : inside.data();
       for (std::uint32_t j : pocket)
       {
         visited[j] = 0;

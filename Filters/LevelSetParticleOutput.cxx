@@ -31,17 +31,37 @@ void PassParticles(
   particles->SetVerts(vertices);
   particles->GetPointData()->PassData(input->GetPointData());
 }
+
+// A LevelSet array of n values for a new output: `spare` when nothing else holds it any more
+// (an earlier output's array, whose pages are mapped already: at 20M particles a new one costs
+// 160 MB of page faults), else a new one. Every value is written after.
+vtkSmartPointer<vtkDoubleArray> NewLevelSet(vtkIdType n, vtkSmartPointer<vtkDoubleArray>& spare)
+{
+  vtkSmartPointer<vtkDoubleArray> levelSet;
+  if (spare && spare->GetReferenceCount() == 1 && spare->GetNumberOfComponents() == 1 &&
+    spare->GetNumberOfTuples() == n)
+  {
+    levelSet = spare;
+    levelSet->Modified();
+  }
+  else
+  {
+    levelSet = vtkSmartPointer<vtkDoubleArray>::New();
+    levelSet->SetNumberOfValues(n);
+  }
+  levelSet->SetName("LevelSet");
+  spare = nullptr;
+  return levelSet;
+}
 } // namespace
 
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
-  vtkSmartPointer<vtkCellArray>& vertices)
+  vtkSmartPointer<vtkCellArray>& vertices, vtkSmartPointer<vtkDoubleArray>& spare)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   PassParticles(input, particles, vertices);
-  vtkNew<vtkDoubleArray> levelSet;
-  levelSet->SetName("LevelSet");
-  levelSet->SetNumberOfValues(n);
+  const vtkSmartPointer<vtkDoubleArray> levelSet = NewLevelSet(n, spare);
   double* out = levelSet->GetPointer(0);
   const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
   if (mergedId.empty())
@@ -87,7 +107,8 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
 
 bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const std::vector<double>& phi, const std::vector<std::size_t>& changed,
-  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices)
+  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices,
+  vtkSmartPointer<vtkDoubleArray>& spare)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   vtkDoubleArray* last = vtkDoubleArray::SafeDownCast(lastLevelSet);
@@ -96,9 +117,7 @@ bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
     return false;
   }
   PassParticles(input, particles, vertices);
-  vtkNew<vtkDoubleArray> levelSet;
-  levelSet->SetName("LevelSet");
-  levelSet->SetNumberOfValues(n);
+  const vtkSmartPointer<vtkDoubleArray> levelSet = NewLevelSet(n, spare);
   double* out = levelSet->GetPointer(0);
   const double* before = last->GetPointer(0);
   vtkSMPTools::For(0, n,

@@ -14,6 +14,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkDoubleArray;
 class vtkPointSet;
 class vtkPolyData;
 
@@ -24,10 +25,11 @@ namespace lsi
 /// ran on). `mergedId` maps each input point to the sample it was merged into (duplicates), or
 /// is empty; ghost images (ids past the input's) are left out. `vertices`: one vertex cell per
 /// input point, kept from an earlier run (they depend on the count alone); made anew when null
-/// or of another count.
+/// or of another count. `spare`: an earlier output's LevelSet array, whose memory is reused
+/// when nothing else holds it any more (then set to null either way).
 void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const std::vector<double>& phi, const std::vector<vtkIdType>& mergedId, vtkPolyData* particles,
-  vtkSmartPointer<vtkCellArray>& vertices);
+  vtkSmartPointer<vtkCellArray>& vertices, vtkSmartPointer<vtkDoubleArray>& spare);
 
 /// MakeParticleOutput's output after only the samples `changed` changed their phi since
 /// `lastLevelSet` (the LevelSet array it gave for the same input, without merged points): a copy
@@ -36,7 +38,8 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
 /// `lastLevelSet` is not such an array.
 bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const std::vector<double>& phi, const std::vector<std::size_t>& changed,
-  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices);
+  vtkDataArray* lastLevelSet, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices,
+  vtkSmartPointer<vtkDoubleArray>& spare);
 
 } // namespace lsi
 

@@ -497,13 +497,19 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   vtkDataArray* lastLevelSet = changed && mergedId.empty() && last.Particles
     ? last.Particles->GetPointData()->GetArray("LevelSet")
     : nullptr;
+  // (The last output's array becomes the spare for the next run.)
+  vtkSmartPointer<vtkDoubleArray> previous = last.Particles
+    ? vtkDoubleArray::SafeDownCast(last.Particles->GetPointData()->GetArray("LevelSet"))
+    : nullptr;
+  vtkSmartPointer<vtkDoubleArray>& spare = this->Internal->SpareLevelSet;
   if (!lastLevelSet ||
     !lsi::UpdateParticleOutput(original, geometry, phi, *changed, lastLevelSet, particleOutput,
-      this->Internal->ParticleVertices))
+      this->Internal->ParticleVertices, spare))
   {
     lsi::MakeParticleOutput(
-      original, geometry, phi, mergedId, particleOutput, this->Internal->ParticleVertices);
+      original, geometry, phi, mergedId, particleOutput, this->Internal->ParticleVertices, spare);
   }
+  spare = previous;
   if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
   {
     for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),

@@ -13,6 +13,7 @@
 #include "LevelSetPeriodicImages.h"
 
 #include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkSmartPointer.h"
 
 #include <memory>
@@ -44,6 +45,9 @@ struct vtkLevelSetIsosurface::Internals
   // The last run's MPI ranks with its ghosts (Last.Work), when a seed move may reuse that run.
   std::unique_ptr<lsi::Distribution> LastRanks;
   vtkSmartPointer<vtkCellArray> ParticleVertices; // the particle output's, for any run's reuse
+  // The LevelSet array of the output before the last, for the next output to reuse its memory
+  // (lsi::MakeParticleOutput) if nothing else holds it by then.
+  vtkSmartPointer<vtkDoubleArray> SpareLevelSet;
 };
 
 #endif

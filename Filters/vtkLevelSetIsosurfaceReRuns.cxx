@@ -250,7 +250,10 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   // As the method floods (FloodAcrossRanks, FollowAcrossFaces): in a periodic box a particle
   // the flood reached seeds its images, and the flood runs again; under MPI, where a rank's
   // flood reached another's samples they are seeded there, and every rank floods again.
-  std::vector<char> inSeed = last.InSeed;
+  // (Copied only where the rounds below add seeds.)
+  const bool addsSeeds = internal.Box.Enabled || ranks.Distributed();
+  std::vector<char> added = addsSeeds ? last.InSeed : std::vector<char>();
+  std::vector<char>& inSeed = addsSeeds ? added : last.InSeed;
   const std::vector<vtkIdType> original = internal.Box.Enabled
     ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
     : std::vector<vtkIdType>();

@@ -283,11 +283,12 @@ int main()
     "every one of the " + std::to_string(changed.size()) + " samples the slides changed is near (" +
       std::to_string(changedFar) + " not)");
   vtkSmartPointer<vtkCellArray> vertices;
+  vtkSmartPointer<vtkDoubleArray> spare;
   vtkNew<vtkPolyData> before, updated, remade;
-  lsi::MakeParticleOutput(particles, geometry, phiBefore, {}, before, vertices);
+  lsi::MakeParticleOutput(particles, geometry, phiBefore, {}, before, vertices, spare);
   const bool didUpdate = lsi::UpdateParticleOutput(particles, geometry, phi, changed,
-    before->GetPointData()->GetArray("LevelSet"), updated, vertices);
-  lsi::MakeParticleOutput(particles, geometry, phi, {}, remade, vertices);
+    before->GetPointData()->GetArray("LevelSet"), updated, vertices, spare);
+  lsi::MakeParticleOutput(particles, geometry, phi, {}, remade, vertices, spare);
   vtkDoubleArray* a = vtkDoubleArray::SafeDownCast(updated->GetPointData()->GetArray("LevelSet"));
   vtkDoubleArray* b = vtkDoubleArray::SafeDownCast(remade->GetPointData()->GetArray("LevelSet"));
   Check(didUpdate && a && b && a->GetNumberOfValues() == n && b->GetNumberOfValues() == n &&
@@ -296,8 +297,42 @@ int main()
     "the LevelSet array updated at the changed samples is the one made anew");
   vtkNew<vtkDoubleArray> shorter;
   shorter->SetNumberOfValues(n - 1);
-  Check(!lsi::UpdateParticleOutput(particles, geometry, phi, changed, shorter, updated, vertices),
+  Check(!lsi::UpdateParticleOutput(
+          particles, geometry, phi, changed, shorter, updated, vertices, spare),
     "no update from an array of another length");
+
+  // A spare LevelSet array: its memory is reused when nothing else holds it, with every value
+  // written anew (it starts as garbage); an array held elsewhere is left alone.
+  auto levelSetOf = [](vtkPolyData* p) {
+    return vtkDoubleArray::SafeDownCast(p->GetPointData()->GetArray("LevelSet"));
+  };
+  spare = vtkSmartPointer<vtkDoubleArray>::New();
+  spare->SetNumberOfValues(n);
+  spare->Fill(12345.0);
+  const double* memory = spare->GetPointer(0);
+  vtkNew<vtkPolyData> reused, reusedUpdate;
+  lsi::MakeParticleOutput(particles, geometry, phi, {}, reused, vertices, spare);
+  vtkDoubleArray* r = levelSetOf(reused);
+  Check(!spare && r && r->GetPointer(0) == memory &&
+      std::equal(r->GetPointer(0), r->GetPointer(0) + n, b->GetPointer(0)),
+    "a spare array nothing else holds is reused, with the values made anew");
+  spare = vtkSmartPointer<vtkDoubleArray>::New();
+  spare->SetNumberOfValues(n);
+  spare->Fill(12345.0);
+  lsi::UpdateParticleOutput(particles, geometry, phi, changed,
+    before->GetPointData()->GetArray("LevelSet"), reusedUpdate, vertices, spare);
+  r = levelSetOf(reusedUpdate);
+  Check(!spare && r && std::equal(r->GetPointer(0), r->GetPointer(0) + n, b->GetPointer(0)),
+    "an update into a spare array gives the values made anew");
+  spare = vtkSmartPointer<vtkDoubleArray>::New();
+  spare->SetNumberOfValues(n);
+  const vtkSmartPointer<vtkDoubleArray> holder = spare; // held elsewhere too
+  vtkNew<vtkPolyData> fresh;
+  lsi::MakeParticleOutput(particles, geometry, phi, {}, fresh, vertices, spare);
+  r = levelSetOf(fresh);
+  Check(r && r != holder.GetPointer() && r->GetPointer(0) != holder->GetPointer(0) &&
+      std::equal(r->GetPointer(0), r->GetPointer(0) + n, b->GetPointer(0)),
+    "a spare array held elsewhere is not written");
 
   if (lsi::test::Failures())
   {
