@@ -42,7 +42,7 @@ private:
 template <typename Body>
 void ForEachIn(const std::vector<std::size_t>& where, Body&& body)
 {
-  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), BalancedGrain(where.size()),
+  vtkSMPTools::For(0, static_cast<vtkIdType>(where.size()), BalancedGrain(where.size(), 256),
     [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
       {

@@ -22,64 +22,31 @@ namespace lsi
 
 namespace
 {
-// Breadth-first flood from the seed samples through neighbours with f > f_iso, a wave at a
-// time, each wave in parallel (a sample reached by several threads at once is claimed by one).
-// The inside is the same whatever the order: the seeds' connected component.
+// Breadth-first flood from the seed samples through neighbours with f > f_iso.
 std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  const std::unique_ptr<std::atomic<unsigned char>[]> claimed = FilledAtomics<unsigned char>(n, 0);
-  std::vector<std::uint32_t> wave = IndicesWhere<std::uint32_t>(
+  std::vector<char> inside(n, 0);
+  std::vector<std::uint32_t> queue = IndicesWhere<std::uint32_t>(
     n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0; });
-  for (const std::uint32_t i : wave)
+  for (const std::uint32_t i : queue)
   {
-    claimed[i].store(1, std::memory_order_relaxed);
+    inside[i] = 1;
   }
-  result.SeedSamples = wave.size();
-  std::size_t reached = 0;
-  while (!wave.empty() && !stop.Stop())
-  {
-    reached += wave.size();
-    geometry.EnsureNeighbors(wave);
-    vtkSMPThreadLocal<std::vector<std::uint32_t>> next;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), BalancedGrain(wave.size()),
-      [&](vtkIdType begin, vtkIdType end) {
-        std::vector<std::uint32_t>& mine = next.Local();
-        for (vtkIdType k = begin; k < end; ++k)
-        {
-          const std::uint32_t i = wave[static_cast<std::size_t>(k)];
-          if (geometry.IsTruncated(i))
-          {
-            continue;
-          }
-          const std::uint32_t* ids = geometry.NeighborsOf(i);
-          for (int m = 1; m < geometry.Stride; ++m)
-          {
-            const std::uint32_t j = ids[m];
-            unsigned char unclaimed = 0;
-            if (dataOffsets[j] > 0.0 && claimed[j].load(std::memory_order_relaxed) == 0 &&
-              claimed[j].compare_exchange_strong(unclaimed, 1, std::memory_order_relaxed))
-            {
-              mine.push_back(j);
-            }
-          }
-        }
-      });
-    wave.clear();
-    for (const std::vector<std::uint32_t>& part : next)
-    {
-      wave.insert(wave.end(), part.begin(), part.end());
-    }
-  }
-  result.InsideSamples = reached;
-  std::vector<char> inside(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      inside[i] = static_cast<char>(claimed[i].load(std::memory_order_relaxed));
-    }
-  });
+  result.SeedSamples = queue.size();
+  BreadthFirst(
+    geometry, queue,
+    [&](std::uint32_t j) {
+      if (inside[j] || !(dataOffsets[j] > 0.0))
+      {
+        return Visit::Skip;
+      }
+      inside[j] = 1;
+      return Visit::Enqueue;
+    },
+    &stop);
+  result.InsideSamples = queue.size();
   return inside;
 }
 
@@ -252,7 +219,7 @@ std::vector<std::uint32_t> PrefetchBand(const Neighborhoods& geometry,
     reachedAll.insert(reachedAll.end(), wave.begin(), wave.end());
     geometry.EnsureNeighbors(wave);
     vtkSMPThreadLocal<std::vector<std::uint32_t>> reached;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), BalancedGrain(wave.size()),
+    vtkSMPTools::For(0, static_cast<vtkIdType>(wave.size()), BalancedGrain(wave.size(), 512),
       [&](vtkIdType begin, vtkIdType end) {
         std::vector<std::uint32_t>& next = reached.Local();
         for (vtkIdType k = begin; k < end; ++k)
@@ -352,8 +319,8 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
   const std::vector<std::uint32_t> nearFront = InsideAndNeighbors(geometry, inside);
   geometry.EnsureNeighbors(nearFront);
   // Each sample's nearest crossing, in parallel (each writes its own entries).
-  vtkSMPTools::For(0, static_cast<vtkIdType>(nearFront.size()), BalancedGrain(nearFront.size()),
-    [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(nearFront.size()),
+    BalancedGrain(nearFront.size(), 512), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
       {
         const std::size_t i = nearFront[static_cast<std::size_t>(k)];

@@ -386,7 +386,7 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
   }
   vtkSMPThreadLocal<std::vector<double>> scratch;
   vtkSMPThreadLocal<std::size_t> singular(0), thin(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), BalancedGrain(missing.size()),
+  vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), BalancedGrain(missing.size(), 64),
     [&](vtkIdType begin, vtkIdType end) {
       std::vector<double>& stencil = scratch.Local();
       for (vtkIdType k = begin; k < end; ++k)
@@ -625,7 +625,7 @@ Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
     // Each search bounded first by the radius of the one before it (SearchRow: the lists are
     // exact either way).
     vtkSMPTools::For(0, static_cast<vtkIdType>(this->Sample.size()),
-      BalancedGrain(this->Sample.size()), [&](vtkIdType begin, vtkIdType end) {
+      BalancedGrain(this->Sample.size(), 32), [&](vtkIdType begin, vtkIdType end) {
         double nearby = 0.0;
         for (vtkIdType m = begin; m < end; ++m)
         {

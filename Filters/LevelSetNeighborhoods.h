@@ -282,7 +282,7 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
   constexpr std::size_t Run = 64;
   const std::size_t runs = (missing.size() + Run - 1) / Run;
   vtkSMPTools::For(
-    0, static_cast<vtkIdType>(runs), BalancedGrain(runs), [&](vtkIdType first, vtkIdType last) {
+    0, static_cast<vtkIdType>(runs), BalancedGrain(runs, 1), [&](vtkIdType first, vtkIdType last) {
       for (std::size_t r = static_cast<std::size_t>(first); r < static_cast<std::size_t>(last); ++r)
       {
         double nearby = 0.0;

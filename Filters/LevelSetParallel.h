@@ -65,12 +65,15 @@ private:
 
 /// A grain for vtkSMPTools::For over `count` items of uneven cost: 32 pieces per thread, so that a
 /// thread left without work at the end waits for at most a thirty-second of its share
-/// (vtkSMPTools' own grain makes 4 pieces per thread).
-inline vtkIdType BalancedGrain(std::size_t count)
+/// (vtkSMPTools' own grain makes 4 pieces per thread); but at least `minimum` items per piece,
+/// as many as cost about what handing out a piece does (a few microseconds): fewer items than
+/// that run on the calling thread.
+inline vtkIdType BalancedGrain(std::size_t count, std::size_t minimum)
 {
   const std::size_t pieces =
     32 * static_cast<std::size_t>(vtkSMPTools::GetEstimatedNumberOfThreads());
-  return static_cast<vtkIdType>(std::max<std::size_t>(1, count / pieces));
+  return static_cast<vtkIdType>(
+    std::max<std::size_t>(std::max<std::size_t>(1, minimum), count / pieces));
 }
 
 /// Runs body(begin, end) over [0, count) with vtkSMPTools::For, in blocks of `block` items.
@@ -87,7 +90,7 @@ bool ParallelForInBlocks(
     }
     const std::size_t stop = std::min(count, start + block);
     vtkSMPTools::For(static_cast<vtkIdType>(start), static_cast<vtkIdType>(stop),
-      BalancedGrain(stop - start), [&](vtkIdType begin, vtkIdType end) {
+      BalancedGrain(stop - start, 8), [&](vtkIdType begin, vtkIdType end) {
         body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
       });
   }
