@@ -494,13 +494,12 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const lsi::LastOutputs& last = this->Internal->Last;
-  vtkDataArray* lastLevelSet = changed && mergedId.empty() && last.Particles
-    ? last.Particles->GetPointData()->GetArray("LevelSet")
-    : nullptr;
-  // (The last output's array becomes the spare for the next run.)
-  vtkSmartPointer<vtkDoubleArray> previous = last.Particles
+  // The last output's LevelSet array: updated where only some samples changed, and the spare
+  // for the next run after this one.
+  const vtkSmartPointer<vtkDoubleArray> previous = last.Particles
     ? vtkDoubleArray::SafeDownCast(last.Particles->GetPointData()->GetArray("LevelSet"))
     : nullptr;
+  vtkDataArray* lastLevelSet = changed && mergedId.empty() ? previous.GetPointer() : nullptr;
   vtkSmartPointer<vtkDoubleArray>& spare = this->Internal->SpareLevelSet;
   if (!lastLevelSet ||
     !lsi::UpdateParticleOutput(original, geometry, phi, *changed, lastLevelSet, particleOutput,
