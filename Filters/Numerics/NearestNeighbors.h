@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// k-nearest-neighbour queries on a static point cloud, through nanoflann's kd-tree
-// (header-only; Debian: libnanoflann-dev). Queries are const and thread-safe once built.
+// k-nearest-neighbour queries on a static point cloud, over nanoflann's kd-tree (header-only;
+// Debian: libnanoflann-dev), walked by nanoflann's search or, for the k nearest, a faster copy
+// of it with the same answers. Queries are const and thread-safe once built.
 #ifndef NearestNeighbors_h
 #define NearestNeighbors_h
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -48,12 +50,20 @@ public:
   std::size_t Nearest(
     const double query[3], std::size_t k, std::uint32_t* indices, double* squaredDistances) const
   {
-    return this->Tree.knnSearch(query, k, indices, squaredDistances);
+    return this->SearchNearest(query, k, DBL_MAX, indices, squaredDistances);
   }
 
   /// Like Nearest, but only among points closer than sqrt(squaredBound): a good bound (from a
   /// query nearby) prunes most of the tree walk. Returns how many were found, possibly < k.
   std::size_t NearestWithin(const double query[3], std::size_t k, double squaredBound,
+    std::uint32_t* indices, double* squaredDistances) const
+  {
+    return this->SearchNearest(query, k, squaredBound, indices, squaredDistances);
+  }
+
+  /// nanoflann's own search of this tree (its walk and KNNResultSet; squaredBound DBL_MAX: no
+  /// bound), which Nearest and NearestWithin reproduce: for the tests.
+  std::size_t NanoflannNearest(const double query[3], std::size_t k, double squaredBound,
     std::uint32_t* indices, double* squaredDistances) const
   {
     nanoflann::KNNResultSet<double, std::uint32_t> result(k);
@@ -138,6 +148,48 @@ private:
   using Node = Tree3D::Node;
   using Box = Tree3D::BoundingBox;
 
+  // The k nearest found so far, closest first (ties in the order found), as nanoflann's
+  // KNNResultSet keeps them: the same insertions, without its capacity check at every step.
+  struct NearestSet
+  {
+    std::uint32_t* Indices;
+    double* D2;
+    std::size_t Capacity;
+    std::size_t Count;
+    double Bound; // the worst distance until the set is full
+    double Worst() const
+    {
+      return this->Count == this->Capacity ? this->D2[this->Count - 1] : this->Bound;
+    }
+    void Add(double d2, std::uint32_t index)
+    {
+      std::size_t i = this->Count;
+      if (i == this->Capacity)
+      {
+        if (!(this->D2[i - 1] > d2))
+        {
+          return; // not nearer than the worst kept (which, on a tie, was found first)
+        }
+        --i; // the worst drops out
+      }
+      else
+      {
+        ++this->Count;
+      }
+      for (; i > 0 && this->D2[i - 1] > d2; --i)
+      {
+        this->D2[i] = this->D2[i - 1];
+        this->Indices[i] = this->Indices[i - 1];
+      }
+      this->D2[i] = d2;
+      this->Indices[i] = index;
+    }
+  };
+  std::size_t SearchNearest(const double query[3], std::size_t k, double squaredBound,
+    std::uint32_t* indices, double* squaredDistances) const;
+  void SearchNode(NearestSet& found, const double query[3], const Node* node, double minimum,
+    double cut[3]) const;
+
   // Moves the points into the order of the leaves (the median cuts' order within a Morton cell).
   void MoveIntoLeafOrder(UninitializedVector<double>& xyz,
     UninitializedVector<std::uint32_t>& oldIndex, const TaskRunner& run);
@@ -207,6 +259,98 @@ inline std::unique_ptr<PointCloudIndex> IndexOfPoints(const std::vector<double>&
 inline bool StillNearest(double farthest, double step, double outerRadius)
 {
   return farthest * (1.0 + 1e-9) < (outerRadius - step) * (1.0 - 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The k-nearest search: nanoflann's walk (KDTreeSingleIndexAdaptor::findNeighbors and
+// searchLevel, 1.4.2) with its KNNResultSet, so the same leaves in the same order and the same
+// neighbours in the same order, ties included; a leaf's distances are computed first and those
+// below the worst kept picked in a branch-free pass, then inserted (about a sixth faster on
+// the searches of LevelSetSearches; TestNumerics checks it against nanoflann's own search).
+
+inline std::size_t PointCloudIndex::SearchNearest(const double query[3], std::size_t k,
+  double squaredBound, std::uint32_t* indices, double* squaredDistances) const
+{
+  if (k == 0 || this->Cloud.Count == 0 || !this->Tree.root_node)
+  {
+    return 0;
+  }
+  NearestSet found{ indices, squaredDistances, k, 0, squaredBound };
+  // The squared distance to the root's box, per axis and in all (nanoflann's
+  // computeInitialDistances).
+  double cut[3] = { 0.0, 0.0, 0.0 }, minimum = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const auto& side = this->Tree.root_bbox[a];
+    if (query[a] < side.low)
+    {
+      cut[a] = (query[a] - side.low) * (query[a] - side.low);
+      minimum += cut[a];
+    }
+    if (query[a] > side.high)
+    {
+      cut[a] = (query[a] - side.high) * (query[a] - side.high);
+      minimum += cut[a];
+    }
+  }
+  this->SearchNode(found, query, this->Tree.root_node, minimum, cut);
+  return found.Count;
+}
+
+inline void PointCloudIndex::SearchNode(
+  NearestSet& found, const double query[3], const Node* node, double minimum, double cut[3]) const
+{
+  if (!node->child1 && !node->child2)
+  {
+    const std::uint32_t* order = this->Tree.vAcc.data();
+    const double* xyz = this->Cloud.Points;
+    // In pieces of at most 16 points (a leaf of coincident points may hold more). Rereading
+    // the worst distance between pieces changes nothing: a point not nearer than it is not
+    // inserted either way.
+    constexpr std::size_t Piece = 16;
+    double d2[Piece];
+    unsigned char nearer[Piece];
+    for (std::size_t begin = node->node_type.lr.left; begin < node->node_type.lr.right;
+         begin += Piece)
+    {
+      const std::size_t size = std::min(Piece, node->node_type.lr.right - begin);
+      for (std::size_t i = 0; i < size; ++i)
+      {
+        const double* x = xyz + 3 * order[begin + i];
+        const double dx = query[0] - x[0], dy = query[1] - x[1], dz = query[2] - x[2];
+        d2[i] = dx * dx + dy * dy + dz * dz; // (as nanoflann's L2_Simple_Adaptor sums them)
+      }
+      const double worst = found.Worst();
+      std::size_t count = 0;
+      for (std::size_t i = 0; i < size; ++i)
+      {
+        nearer[count] = static_cast<unsigned char>(i);
+        count += d2[i] < worst;
+      }
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        found.Add(d2[nearer[j]], order[begin + nearer[j]]);
+      }
+    }
+    return;
+  }
+  // The child on the query's side first, then the other if its cut lies nearer than the worst.
+  const int axis = node->node_type.sub.divfeat;
+  const double value = query[axis];
+  const double low = value - node->node_type.sub.divlow, high = value - node->node_type.sub.divhigh;
+  const bool lowerFirst = low + high < 0.0;
+  const Node* first = lowerFirst ? node->child1 : node->child2;
+  const Node* other = lowerFirst ? node->child2 : node->child1;
+  const double across = lowerFirst ? high * high : low * low;
+  this->SearchNode(found, query, first, minimum, cut);
+  const double before = cut[axis];
+  minimum = minimum + across - before; // (in nanoflann's order of operations)
+  cut[axis] = across;
+  if (minimum <= found.Worst())
+  {
+    this->SearchNode(found, query, other, minimum, cut);
+  }
+  cut[axis] = before;
 }
 
 // ---------------------------------------------------------------------------------------------

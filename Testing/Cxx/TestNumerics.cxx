@@ -18,6 +18,7 @@
 #include "MortonTree.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -656,6 +657,69 @@ void TestBoundedSearchKeepsTies()
   Check(compared == 4 * n && same == compared, what.c_str());
 }
 
+// Nearest and NearestWithin walk the tree themselves (PointCloudIndex::SearchNearest): they must
+// return what nanoflann's own search of the same tree returns, the same indices in the same
+// order and the same distances to the bit. On a lattice (shells of equal distances, cut by k),
+// with a lump of 40 coincident points (a leaf of more than 16), queries at points and between
+// them, without a bound and with bounds that do and do not hold k points; and on a tree built
+// by nanoflann (not from Morton order).
+void TestSearchMatchesNanoflann()
+{
+  lsi::UninitializedVector<double> xyz = Lattice(12);
+  for (int c = 0; c < 40; ++c)
+  {
+    xyz.insert(xyz.end(), { 3.0, 4.0, 5.0 });
+  }
+  const std::vector<double> plain(xyz.begin(), xyz.end());
+  lsi::UninitializedVector<std::uint32_t> oldIndex;
+  const std::unique_ptr<lsi::PointCloudIndex> morton = lsi::MortonTree(xyz, oldIndex);
+  const std::unique_ptr<lsi::PointCloudIndex> built = lsi::IndexOfPoints(plain);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> offset(-0.6, 0.6);
+  std::size_t compared = 0, same = 0, full = 0;
+  for (const lsi::PointCloudIndex* index : { morton.get(), built.get() })
+  {
+    const std::vector<double> points =
+      index == morton.get() ? std::vector<double>(xyz.begin(), xyz.end()) : plain;
+    const std::size_t n = points.size() / 3;
+    for (const std::size_t k : { 1, 11, 28, 54, 70 })
+    {
+      std::vector<std::uint32_t> ids(k), reference(k);
+      std::vector<double> d2(k), referenceD2(k);
+      for (std::size_t q = 0; q < n; q += 5)
+      {
+        double query[3] = { points[3 * q], points[3 * q + 1], points[3 * q + 2] };
+        if (q % 2)
+        {
+          for (double& x : query)
+          {
+            x += offset(random);
+          }
+        }
+        for (const double bound : { DBL_MAX, 0.5, 2.0, 4.0, 9.0 })
+        {
+          const std::size_t found = bound == DBL_MAX
+            ? index->Nearest(query, k, ids.data(), d2.data())
+            : index->NearestWithin(query, k, bound, ids.data(), d2.data());
+          const std::size_t expected =
+            index->NanoflannNearest(query, k, bound, reference.data(), referenceD2.data());
+          ++compared;
+          full += found == k ? 1 : 0;
+          same += found == expected &&
+              std::equal(ids.begin(), ids.begin() + found, reference.begin()) &&
+              std::equal(d2.begin(), d2.begin() + found, referenceD2.begin())
+            ? 1
+            : 0;
+        }
+      }
+    }
+  }
+  const std::string what = "the tree's own k-nearest walk returns nanoflann's answers (" +
+    std::to_string(same) + " of " + std::to_string(compared) + " searches, " +
+    std::to_string(full) + " with k found)";
+  Check(same == compared && full > compared / 3 && full < compared, what.c_str());
+}
+
 // AnyWithin (the slide's look for clamped samples near a point): on a lattice, whether a point
 // with an accepted index lies strictly within the radius, against a scan of every point; and the
 // walk stops at the first accepted point.
@@ -1017,6 +1081,7 @@ int main()
   TestMortonTree();
   TestStillNearest();
   TestBoundedSearchKeepsTies();
+  TestSearchMatchesNanoflann();
   TestAnyWithin();
   TestRosenthalLinsen();
   TestSlideOntoDataLevel();
