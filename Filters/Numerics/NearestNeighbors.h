@@ -149,24 +149,29 @@ private:
   using Box = Tree3D::BoundingBox;
 
   // The k nearest found so far, closest first (ties in the order found), as nanoflann's
-  // KNNResultSet keeps them: the same insertions, without its capacity check at every step.
+  // KNNResultSet keeps them: the same insertions, without its capacity check at every step,
+  // and each distance beside its index (one move per shift; copied out at the end).
+  struct NearestEntry
+  {
+    double D2;
+    std::uint32_t Index;
+  };
   struct NearestSet
   {
-    std::uint32_t* Indices;
-    double* D2;
+    NearestEntry* Entries;
     std::size_t Capacity;
     std::size_t Count;
     double Bound; // the worst distance until the set is full
     double Worst() const
     {
-      return this->Count == this->Capacity ? this->D2[this->Count - 1] : this->Bound;
+      return this->Count == this->Capacity ? this->Entries[this->Count - 1].D2 : this->Bound;
     }
     void Add(double d2, std::uint32_t index)
     {
       std::size_t i = this->Count;
       if (i == this->Capacity)
       {
-        if (!(this->D2[i - 1] > d2))
+        if (!(this->Entries[i - 1].D2 > d2))
         {
           return; // not nearer than the worst kept (which, on a tie, was found first)
         }
@@ -176,13 +181,11 @@ private:
       {
         ++this->Count;
       }
-      for (; i > 0 && this->D2[i - 1] > d2; --i)
+      for (; i > 0 && this->Entries[i - 1].D2 > d2; --i)
       {
-        this->D2[i] = this->D2[i - 1];
-        this->Indices[i] = this->Indices[i - 1];
+        this->Entries[i] = this->Entries[i - 1];
       }
-      this->D2[i] = d2;
-      this->Indices[i] = index;
+      this->Entries[i] = NearestEntry{ d2, index };
     }
   };
   std::size_t SearchNearest(const double query[3], std::size_t k, double squaredBound,
@@ -275,7 +278,10 @@ inline std::size_t PointCloudIndex::SearchNearest(const double query[3], std::si
   {
     return 0;
   }
-  NearestSet found{ indices, squaredDistances, k, 0, squaredBound };
+  constexpr std::size_t OnStack = 128; // more than any fit asks for
+  NearestEntry onStack[OnStack];
+  std::vector<NearestEntry> onHeap(k > OnStack ? k : 0);
+  NearestSet found{ k > OnStack ? onHeap.data() : onStack, k, 0, squaredBound };
   // The squared distance to the root's box, per axis and in all (nanoflann's
   // computeInitialDistances).
   double cut[3] = { 0.0, 0.0, 0.0 }, minimum = 0.0;
@@ -294,6 +300,11 @@ inline std::size_t PointCloudIndex::SearchNearest(const double query[3], std::si
     }
   }
   this->SearchNode(found, query, this->Tree.root_node, minimum, cut);
+  for (std::size_t j = 0; j < found.Count; ++j)
+  {
+    indices[j] = found.Entries[j].Index;
+    squaredDistances[j] = found.Entries[j].D2;
+  }
   return found.Count;
 }
 

@@ -661,8 +661,8 @@ void TestBoundedSearchKeepsTies()
 // return what nanoflann's own search of the same tree returns, the same indices in the same
 // order and the same distances to the bit. On a lattice (shells of equal distances, cut by k),
 // with a lump of 40 coincident points (a leaf of more than 16), queries at points and between
-// them, without a bound and with bounds that do and do not hold k points; and on a tree built
-// by nanoflann (not from Morton order).
+// them, k up to 150 (past the set kept on the stack), without a bound and with bounds that do and
+// do not hold k points; and on a tree built by nanoflann (not from Morton order).
 void TestSearchMatchesNanoflann()
 {
   lsi::UninitializedVector<double> xyz = Lattice(12);
@@ -682,7 +682,7 @@ void TestSearchMatchesNanoflann()
     const std::vector<double> points =
       index == morton.get() ? std::vector<double>(xyz.begin(), xyz.end()) : plain;
     const std::size_t n = points.size() / 3;
-    for (const std::size_t k : { 1, 11, 28, 54, 70 })
+    for (const std::size_t k : { 1, 11, 28, 54, 70, 150 })
     {
       std::vector<std::uint32_t> ids(k), reference(k);
       std::vector<double> d2(k), referenceD2(k);
