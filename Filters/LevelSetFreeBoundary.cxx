@@ -10,11 +10,6 @@
 
 namespace lsi
 {
-namespace
-{
-// A sample on the edge of the cloud: its neighbours lie to one side, so their centroid is far
-// from it (about 0.75 of the neighbourhood radius for a flat edge, a few hundredths inside).
-// The offset, unit, points out of the cloud; false for an interior sample.
 bool OutwardOfCloud(const Neighborhoods& geometry, std::size_t i, Eigen::Vector3d& outward)
 {
   const std::uint32_t* ids = geometry.NeighborsOf(i);
@@ -33,7 +28,6 @@ bool OutwardOfCloud(const Neighborhoods& geometry, std::size_t i, Eigen::Vector3
   outward /= offset;
   return true;
 }
-} // namespace
 
 bool AddFreeBoundaryPoints(const Neighborhoods& geometry, const SPHField& field, double isoValue,
   const std::vector<char>& inside, const std::vector<double>& dataOffsets,

@@ -395,8 +395,9 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
 }
 
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
-  double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  const BandDrift* drift, IsopointSet& isopoints, const AbortCheck& aborted)
+  double isoValue, const std::vector<char>& inside, const std::vector<char>& lastInside,
+  const IsopointSettings& settings, const BandDrift* drift, IsopointSet& isopoints,
+  const AbortCheck& aborted)
 {
   const std::size_t count = isopoints.Points.size() / 3;
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count),
@@ -424,14 +425,19 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
       }
       // The samples around where the point starts (the nearest and its neighbours: their lists
       // are kept, a quarter of a search of as many) must lie on both sides of the new flood:
-      // checked before the solve, so that a refused slide costs little.
+      // checked before the solve, so that a refused slide costs little. Or, where they all lay
+      // inside the last flood too, all inside it: where the cloud itself ends inside the
+      // component (the free boundary: a tube's wall or end), the level lies beyond its
+      // outermost particles, which are all inside. (A cavity that closes leaves a point whose
+      // samples straddled the last flood and lie all inside the new one: refused.)
       const std::uint32_t* around = geometry.NeighborsOf(nearest);
-      bool in = false, out = false;
+      bool in = false, out = false, outBefore = false;
       for (std::size_t j = 0; j < stride; ++j)
       {
         (inside[around[j]] ? in : out) = true;
+        outBefore = outBefore || !lastInside[around[j]];
       }
-      if (!in || !out)
+      if (!in || (!out && outBefore))
       {
         refusal = OneSide;
         break;
@@ -475,7 +481,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
-  double margin, std::size_t& changed, vtkIdType particles)
+  double margin, std::size_t& changed, vtkIdType particles, const SPHField* field)
 {
   const std::vector<std::uint32_t> moved =
     IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
@@ -495,7 +501,14 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   {
     return false; // (every point needs its move)
   }
-  const double reach = *std::max_element(moves.begin(), moves.end()) + margin;
+  // On the SPH field a sample on the cloud's edge may lie up to a kernel support from the
+  // surface beyond it (the free boundary): such a sample whose value crosses the isovalue (the
+  // edge's are lower, their kernels cut) counts as near within that support more.
+  auto edgeReach = [&](std::uint32_t i) {
+    Eigen::Vector3d outward;
+    return field && OutwardOfCloud(geometry, i, outward) ? field->Support(i) : 0.0;
+  };
+  const double largestMove = *std::max_element(moves.begin(), moves.end());
   // A sample between the old and the new level lies within the move there (plus the points'
   // spacing) of the points that passed it; looked for among the few points nearest to it.
   constexpr std::size_t Candidates = 8;
@@ -506,12 +519,14 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
     double d2[Candidates];
     for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
     {
+      const double extra = edgeReach(moved[m]);
+      const double reach = largestMove + margin + extra;
       const std::size_t found =
         index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);
       bool passed = false;
       for (std::size_t j = 0; j < found && !passed; ++j)
       {
-        const double within = moves[ids[j]] + margin;
+        const double within = moves[ids[j]] + margin + extra;
         passed = d2[j] <= within * within;
       }
       if (!passed)

@@ -114,10 +114,12 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
 /// supports of the sample nearest to it (RefineIsopointsOnSPHField's step), the normal becoming
 /// the field's. Refused as above when a point finds no level within that reach or the band
 /// (`drift`, SlideSettings::Drift), or when the samples nearest to it are not on both sides of
-/// the new flood.
+/// the new flood, unless they all lay inside the last flood (`lastInside`) too and still do:
+/// the free boundary, where the level lies beyond the cloud's outermost particles.
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
-  double isoValue, const std::vector<char>& inside, const IsopointSettings& settings,
-  const BandDrift* drift, IsopointSet& isopoints, const AbortCheck& aborted);
+  double isoValue, const std::vector<char>& inside, const std::vector<char>& lastInside,
+  const IsopointSettings& settings, const BandDrift* drift, IsopointSet& isopoints,
+  const AbortCheck& aborted);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
 /// within its move (`moves`, per point) plus `margin` of one of the points that `points` indexes
@@ -126,10 +128,13 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 /// the slid surface, or further from it than it moved there. `changed` receives how many samples
 /// changed. Only the samples of the first `particles` input points count: in a periodic box the
 /// originals (each image is flooded as its original is, and the images' outer edge, whose
-/// neighbourhoods are cut, has no surface).
+/// neighbourhoods are cut, has no surface). On the SPH `field` (null: the MLS fit) a sample on
+/// the cloud's edge (OutwardOfCloud) may lie up to its kernel support further: the surface
+/// beyond the edge (the free boundary) lies up to a support past the outermost particles, and
+/// their values, their kernels cut by the edge, may lie at the isovalue.
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
-  double margin, std::size_t& changed, vtkIdType particles);
+  double margin, std::size_t& changed, vtkIdType particles, const SPHField* field = nullptr);
 
 /// Whether no sample beyond the band the last full run resolved (|phi| at least `halfWidth`,
 /// clamped: its distance to the surface unknown) lies within its own neighbourhood radius plus

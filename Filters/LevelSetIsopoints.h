@@ -118,6 +118,11 @@ class SPHField;
 bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
 
+/// Whether sample i lies on the edge of the cloud: its neighbours lie to one side, so their
+/// centroid is far from it (about 0.75 of the neighbourhood radius for a flat edge, a few
+/// hundredths inside). `outward` receives the unit offset from the centroid, out of the cloud.
+bool OutwardOfCloud(const Neighborhoods& geometry, std::size_t i, Eigen::Vector3d& outward);
+
 /// Step 7b on SPH data, the free boundary: where the particle cloud itself ends inside the
 /// component (a galaxy's edge, a tube's wall), no pair of particles straddles the surface, which
 /// lies up to a kernel support beyond the outermost particles, so the steps above leave a hole.

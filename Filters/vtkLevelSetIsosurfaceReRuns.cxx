@@ -421,8 +421,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     isopoints.Points.resize(kept);
     isopoints.Normals.resize(kept);
     isopoints.FreeBoundaryCount = 0;
-    slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, settings,
-      slide.Drift, isopoints, this->Stage(lsi::IsopointStage));
+    slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, last.Inside,
+      settings, slide.Drift, isopoints, this->Stage(lsi::IsopointStage));
     aborted = slid.Accepted &&
       !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
         isopoints, this->Stage(lsi::IsopointStage));
@@ -475,7 +475,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (A rank without points, whose index is null, accepts only if none of its samples changed.)
   const bool changesNear = slid.Accepted &&
     lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, surfaceIndex.get(), slid.Moves,
-      2.0 * settings.CellSize, changed, counted);
+      2.0 * settings.CellSize, changed, counted, last.Field.get());
   // (The surface lies within about half its points' spacing of them: one cell is the margin.)
   const bool clampedClear = changesNear &&
     lsi::ClampedSamplesClear(*geometry, last.Phi, last.Drift.HalfWidth, isopoints.Points,
