@@ -155,6 +155,31 @@ vtkSmartPointer<vtkPolyData> Run(vtkPolyData* input, double iso, const double se
   return out;
 }
 
+// A quick isovalue change from `iso` to `changed` (Isopoints) and the method's own run at
+// `changed`: their outputs, and the filters (whether it slid, their Enclosed tables).
+struct QuickAndMethod
+{
+  vtkNew<vtkLevelSetIsosurface> Quick, Full;
+  vtkSmartPointer<vtkPolyData> Slid, Method;
+  QuickAndMethod(
+    vtkPolyData* input, double iso, double changed, const double seed[3], double radius)
+  {
+    this->Quick->QuickIsoValueChangesOn();
+    Run(input, iso, seed, radius, vtkLevelSetIsosurface::ISOPOINTS, this->Quick);
+    this->Slid = Run(input, changed, seed, radius, vtkLevelSetIsosurface::ISOPOINTS, this->Quick);
+    this->Method = Run(input, changed, seed, radius, vtkLevelSetIsosurface::ISOPOINTS, this->Full);
+  }
+};
+
+// The mass the Enclosed table's total row gives (0 without one).
+double EnclosedMass(vtkLevelSetIsosurface* filter)
+{
+  vtkTable* t = vtkTable::SafeDownCast(filter->GetOutputDataObject(3));
+  return t && t->GetNumberOfRows() > 0
+    ? t->GetValueByName(t->GetNumberOfRows() - 1, "Mass").ToDouble()
+    : 0.0;
+}
+
 void Report(const std::string& what, const Scores& s, vtkIdType points)
 {
   std::cout << what << ": " << points << " points, " << s.Scored
@@ -428,32 +453,21 @@ vtkSmartPointer<vtkPolyData> WithSummedDensity(const std::string& path)
 void TestQuickIsoValueChange(vtkPolyData* glass, const Particles& p, double iso)
 {
   const double seed[3] = { 0, 0, 0 };
-  vtkNew<vtkLevelSetIsosurface> quick;
-  quick->QuickIsoValueChangesOn();
-  Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
   const double changed = 1.03 * iso;
-  auto slid = Run(glass, changed, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, quick);
-  vtkNew<vtkLevelSetIsosurface> full;
-  auto method = Run(glass, changed, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, full);
-  const Scores s = Score(p, slid, changed, 400), m = Score(p, method, changed, 400);
-  Report("Evrard, slid to a 3% higher isovalue", s, slid->GetNumberOfPoints());
-  Report("Evrard, the method there", m, method->GetNumberOfPoints());
-  Check(quick->GetSlidLastSurface(), "Evrard: a 3% isovalue change slides the surface");
+  QuickAndMethod runs(glass, iso, changed, seed, 0.1);
+  const Scores s = Score(p, runs.Slid, changed, 400), m = Score(p, runs.Method, changed, 400);
+  Report("Evrard, slid to a 3% higher isovalue", s, runs.Slid->GetNumberOfPoints());
+  Report("Evrard, the method there", m, runs.Method->GetNumberOfPoints());
+  Check(runs.Quick->GetSlidLastSurface(), "Evrard: a 3% isovalue change slides the surface");
   Check(s.MeanDistance < 1e-3 && s.MaxDistance < 1e-2 && s.MaxAngle < 0.5,
     "Evrard: slid points on the field's new level (mean < 0.001 H, max < 0.01 H), normals "
     "along its gradient (< 0.5 deg)");
-  const double count = static_cast<double>(slid->GetNumberOfPoints());
-  Check(std::abs(count - method->GetNumberOfPoints()) < 0.05 * count,
+  const double count = static_cast<double>(runs.Slid->GetNumberOfPoints());
+  Check(std::abs(count - runs.Method->GetNumberOfPoints()) < 0.05 * count,
     "Evrard: as many slid points as the method's, within 5%");
-  auto massOf = [](vtkLevelSetIsosurface* f) {
-    vtkTable* t = vtkTable::SafeDownCast(f->GetOutputDataObject(3));
-    return t && t->GetNumberOfRows() > 0
-      ? t->GetValueByName(t->GetNumberOfRows() - 1, "Mass").ToDouble()
-      : 0.0;
-  };
-  std::cout << "Evrard: enclosed mass slid " << massOf(quick) << ", method " << massOf(full)
-            << "\n";
-  Check(std::abs(massOf(quick) - massOf(full)) < 0.005 * massOf(full),
+  const double slidMass = EnclosedMass(runs.Quick), methodMass = EnclosedMass(runs.Full);
+  std::cout << "Evrard: enclosed mass slid " << slidMass << ", method " << methodMass << "\n";
+  Check(std::abs(slidMass - methodMass) < 0.005 * methodMass,
     "Evrard: the slid surface encloses the method's mass within 0.5%");
 }
 
@@ -672,29 +686,19 @@ void TestShockTube(const std::string& path)
   // beyond the outermost particles (the free boundary), whose values, their kernels cut, lie
   // near the isovalue and may cross it. A 0.2% higher isovalue still slides, its points on the
   // new level, as many as the method's within 5%, enclosing its mass within 0.5%.
-  vtkNew<vtkLevelSetIsosurface> quick;
-  quick->QuickIsoValueChangesOn();
-  Run(tube, iso, seed, 0.05, vtkLevelSetIsosurface::ISOPOINTS, quick);
   const double changed = 1.002 * iso;
-  auto slid = Run(tube, changed, seed, 0.05, vtkLevelSetIsosurface::ISOPOINTS, quick);
-  vtkNew<vtkLevelSetIsosurface> full;
-  auto method = Run(tube, changed, seed, 0.05, vtkLevelSetIsosurface::ISOPOINTS, full);
-  const Scores q = Score(p, slid, changed, 400);
-  Report("Shock tube, slid to a 0.2% higher isovalue", q, slid->GetNumberOfPoints());
-  Check(quick->GetSlidLastSurface(), "Shock tube: a 0.2% isovalue change slides the surface");
+  QuickAndMethod runs(tube, iso, changed, seed, 0.05);
+  const Scores q = Score(p, runs.Slid, changed, 400);
+  Report("Shock tube, slid to a 0.2% higher isovalue", q, runs.Slid->GetNumberOfPoints());
+  Check(runs.Quick->GetSlidLastSurface(), "Shock tube: a 0.2% isovalue change slides the surface");
   Check(q.MeanDistance < 1e-3 && q.MaxAngle < 1.0, "Shock tube: slid points on the new SPH level");
-  const double count = static_cast<double>(method->GetNumberOfPoints());
-  auto massOf = [](vtkLevelSetIsosurface* f) {
-    vtkTable* t = vtkTable::SafeDownCast(f->GetOutputDataObject(3));
-    return t && t->GetNumberOfRows() > 0
-      ? t->GetValueByName(t->GetNumberOfRows() - 1, "Mass").ToDouble()
-      : 0.0;
-  };
-  std::cout << "Shock tube, 0.2% higher: slid " << slid->GetNumberOfPoints() << " points, method "
-            << count << "; enclosed mass slid " << massOf(quick) << ", method " << massOf(full)
-            << "\n";
-  Check(std::abs(slid->GetNumberOfPoints() - count) < 0.05 * count &&
-      std::abs(massOf(quick) - massOf(full)) < 0.005 * massOf(full),
+  const double count = static_cast<double>(runs.Method->GetNumberOfPoints());
+  const double slidMass = EnclosedMass(runs.Quick), methodMass = EnclosedMass(runs.Full);
+  std::cout << "Shock tube, 0.2% higher: slid " << runs.Slid->GetNumberOfPoints()
+            << " points, method " << count << "; enclosed mass slid " << slidMass << ", method "
+            << methodMass << "\n";
+  Check(std::abs(runs.Slid->GetNumberOfPoints() - count) < 0.05 * count &&
+      std::abs(slidMass - methodMass) < 0.005 * methodMass,
     "Shock tube: as many slid points as the method's (5%), enclosing its mass (0.5%)");
   // At half the median density the surface runs along the walls of the dense side, whose
   // outermost particles lie at the isovalue: a change that moves 0.1% of the particles above
