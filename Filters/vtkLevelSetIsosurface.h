@@ -128,7 +128,10 @@ public:
    * stays clamped) may come within its neighbourhood radius plus a cell of the new surface: the
    * Enclosed table weighs those by their distance, which the clamped LevelSet lacks (about 6
    * spacings of move in all at the default parameters). Otherwise (a larger change, a component
-   * joined or lost, a cavity opened) the method runs in full; in a periodic box every point
+   * joined or lost, a cavity opened) the method runs in full. (On the SPH field, where the surface
+   * lies beyond the edge of the particle cloud, the free boundary, a point whose nearest particles
+   * lay all inside the last flood and still do may slide, and a particle on the cloud's edge may
+   * change sides up to its kernel support from the surface.) In a periodic box every point
    * slides, those beyond the faces too, and the kept cell is cut anew. Under MPI (in a periodic
    * box too) every rank slides the points it found, and all slide or none. A point's move counts
    * from where the last full run put it: a slider dragged back and forth keeps sliding. The points
