@@ -103,24 +103,28 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   {
     deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
   }
-  Links links(inside.size());
-  for (std::size_t k = 0; k < inside.size(); ++k)
-  {
-    const std::size_t i = inside[k];
-    if (geometry.IsTruncated(i))
-    {
-      continue;
-    }
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      const std::uint32_t other = deep.Group[ids[m]];
-      if (other != EnclosedDeepInside::None)
+  // (Joined in parallel: the sets do not depend on the order.)
+  const SharedLinks links(inside.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        links.Join(static_cast<std::uint32_t>(k), other);
+        const std::size_t i = inside[static_cast<std::size_t>(k)];
+        if (geometry.IsTruncated(i))
+        {
+          continue;
+        }
+        const std::uint32_t* ids = geometry.NeighborsOf(i);
+        for (int m = 1; m < geometry.Stride; ++m)
+        {
+          const std::uint32_t other = deep.Group[ids[m]];
+          if (other != EnclosedDeepInside::None)
+          {
+            links.Join(static_cast<std::uint32_t>(k), other);
+          }
+        }
       }
-    }
-  }
+    });
   std::vector<std::uint32_t> groupOfRoot(inside.size(), EnclosedDeepInside::None);
   std::vector<double> lowest; // per group: its lowest particle id, the key of its component
   std::uint32_t groups = 0;
@@ -235,36 +239,39 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
     const std::uint32_t b = bandOf[g - groups];
     return b == EnclosedDeepInside::None ? b : static_cast<std::uint32_t>(groups + b);
   };
-  // Joined through the band's lists and the rim's (the groups are joined within already).
-  Links links(groups + band.size());
-  auto joinListed = [&](std::size_t i) {
-    const std::uint32_t self = node(i);
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      const std::uint32_t other = node(ids[m]);
-      if (other != EnclosedDeepInside::None)
-      {
-        links.Join(self, other);
-      }
-    }
+  // Joined through the band's lists and the rim's (the groups are joined within already), in
+  // parallel: the sets do not depend on the order.
+  const SharedLinks links(groups + band.size());
+  auto joinListed = [&](const std::vector<std::uint32_t>& samples) {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), BalancedGrain(samples.size(), 1024),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          const std::uint32_t i = samples[static_cast<std::size_t>(k)];
+          if (geometry.IsTruncated(i)) // (a cut list, of a ghost at the halo's edge: not joined)
+          {
+            continue;
+          }
+          const std::uint32_t self = node(i);
+          const std::uint32_t* ids = geometry.NeighborsOf(i);
+          for (int m = 1; m < geometry.Stride; ++m)
+          {
+            const std::uint32_t other = node(ids[m]);
+            if (other != EnclosedDeepInside::None)
+            {
+              links.Join(self, other);
+            }
+          }
+        }
+      });
   };
-  for (std::uint32_t i : band)
-  {
-    if (!geometry.IsTruncated(i))
-    {
-      joinListed(i);
-    }
-  }
-  for (std::uint32_t i : deep.Rim)
-  {
-    joinListed(i);
-  }
+  joinListed(band);
+  joinListed(deep.Rim);
   // Each component: its root node, keyed by its lowest particle id; numbered in node order.
-  std::vector<std::uint32_t> componentOfRoot(links.Parent.size(), EnclosedDeepInside::None);
-  std::vector<std::uint32_t> componentOf(links.Parent.size());
+  std::vector<std::uint32_t> componentOfRoot(links.Size, EnclosedDeepInside::None);
+  std::vector<std::uint32_t> componentOf(links.Size);
   std::vector<double> key;
-  for (std::size_t x = 0; x < links.Parent.size(); ++x)
+  for (std::size_t x = 0; x < links.Size; ++x)
   {
     const std::uint32_t root = links.Find(static_cast<std::uint32_t>(x));
     if (componentOfRoot[root] == EnclosedDeepInside::None)

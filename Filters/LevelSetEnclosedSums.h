@@ -15,6 +15,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -79,6 +80,55 @@ struct Links
     if (a != b)
     {
       this->Parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+};
+
+/// Links (the same sets, each rooted at its lowest member) that several threads may join at
+/// once: a root is linked under a lower one by a compare-and-swap, and a search shortens the
+/// path it walks to ancestors only, so the sets do not depend on the order of the joins.
+struct SharedLinks
+{
+  std::unique_ptr<std::atomic<std::uint32_t>[]> Parent;
+  std::size_t Size;
+  explicit SharedLinks(std::size_t n);
+  std::uint32_t Find(std::uint32_t i) const
+  {
+    for (;;)
+    {
+      const std::uint32_t parent = this->Parent[i].load(std::memory_order_relaxed);
+      if (parent == i)
+      {
+        return i;
+      }
+      const std::uint32_t grandparent = this->Parent[parent].load(std::memory_order_relaxed);
+      if (grandparent == parent)
+      {
+        return parent;
+      }
+      // (i is not a root, and never will be again: any ancestor may replace its link.)
+      this->Parent[i].store(grandparent, std::memory_order_relaxed);
+      i = grandparent;
+    }
+  }
+  void Join(std::uint32_t i, std::uint32_t j) const
+  {
+    for (;;)
+    {
+      std::uint32_t a = this->Find(i), b = this->Find(j);
+      if (a == b)
+      {
+        return;
+      }
+      if (a < b)
+      {
+        std::swap(a, b);
+      }
+      std::uint32_t root = a; // linked under b, unless another thread linked it first
+      if (this->Parent[a].compare_exchange_strong(root, b, std::memory_order_relaxed))
+      {
+        return;
+      }
     }
   }
 };

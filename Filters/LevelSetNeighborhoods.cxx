@@ -618,8 +618,14 @@ double Neighborhoods::SearchRow(std::size_t i, double nearbyRadius, std::uint32_
 
 Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
 {
+  this->EnsureFixedSampleRows();
   const auto at = std::lower_bound(this->Sample.begin(), this->Sample.end(), i);
   const std::size_t k = static_cast<std::size_t>(at - this->Sample.begin());
+  return { &this->SampleIds[k * static_cast<std::size_t>(this->Stride)], this->SampleRadii[k] };
+}
+
+void Neighborhoods::EnsureFixedSampleRows() const
+{
   if (this->SampleRowsEvery != this->SampleEvery)
   {
     // First use of this sample: its lists, in parallel. Main thread only (as RadiusSampleWhere).
@@ -640,7 +646,6 @@ Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
       });
     this->SampleRowsEvery = this->SampleEvery;
   }
-  return { &this->SampleIds[k * static_cast<std::size_t>(this->Stride)], this->SampleRadii[k] };
 }
 
 bool Neighborhoods::EnsureAllNeighbors(const AbortCheck& aborted) const

@@ -196,13 +196,16 @@ struct Neighborhoods
   /// The list and radius of sample i of the fixed sample that RadiusSampleWhere chose last
   /// (the same as NeighborsOf and RadiusOf give). They are kept apart from the main lists: the
   /// sample is spread over all samples, and its lists written there would make nearly every
-  /// page of that array resident. Computed on first use; main thread only.
+  /// page of that array resident. Computed on first use (EnsureFixedSampleRows); main thread
+  /// only, except once they are computed.
   struct SampleRow
   {
     const std::uint32_t* Ids;
     double Radius;
   };
   SampleRow FixedSampleRow(std::size_t i) const;
+  /// Computes the fixed sample's lists, in parallel, unless they are already (main thread only).
+  void EnsureFixedSampleRows() const;
 
   // The lists' storage, allocated for every sample but not initialised: untouched pages cost
   // no memory. RowState: 0 not computed, 1 being computed, 2 ready.

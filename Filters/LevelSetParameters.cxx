@@ -4,7 +4,10 @@
 
 #include "AutomaticParameters.h"
 
+#include "vtkSMPTools.h"
+
 #include <algorithm>
+#include <array>
 
 namespace lsi
 {
@@ -26,26 +29,46 @@ SurfaceScale ScaleAtSurface(
 {
   // Sums: of the radii at the surface, their count, and of all radii and theirs; over the
   // fixed sample of the particles (InRadiusSample), the same whatever the ranks.
+  // In parallel, in fixed chunks added in order: the same sums on any number of threads.
   const std::vector<std::uint32_t> sample = OwnedRadiusSample(geometry, ranks);
-  double sums[4] = { 0.0, 0.0, 0.0, 0.0 };
-  double& sum = sums[0];
-  double& count = sums[1];
-  for (const std::size_t i : sample)
-  {
-    const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
-    sums[2] += row.Radius;
-    sums[3] += 1.0;
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      if (dataSign[row.Ids[m]] != dataSign[i])
+  geometry.EnsureFixedSampleRows();
+  constexpr std::size_t Chunk = 4096;
+  std::vector<std::array<double, 4>> parts((sample.size() + Chunk - 1) / Chunk);
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(parts.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
       {
-        sum += row.Radius;
-        ++count;
-        break;
+        std::array<double, 4>& part = parts[static_cast<std::size_t>(c)];
+        part.fill(0.0);
+        const std::size_t end = std::min(sample.size(), (static_cast<std::size_t>(c) + 1) * Chunk);
+        for (std::size_t k = static_cast<std::size_t>(c) * Chunk; k < end; ++k)
+        {
+          const std::size_t i = sample[k];
+          const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
+          part[2] += row.Radius;
+          part[3] += 1.0;
+          for (int m = 1; m < geometry.Stride; ++m)
+          {
+            if (dataSign[row.Ids[m]] != dataSign[i])
+            {
+              part[0] += row.Radius;
+              part[1] += 1.0;
+              break;
+            }
+          }
+        }
       }
+    });
+  double sums[4] = { 0.0, 0.0, 0.0, 0.0 };
+  for (const std::array<double, 4>& part : parts)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      sums[k] += part[k];
     }
   }
   ranks.Sum(sums, 4);
+  const double sum = sums[0], count = sums[1];
   SurfaceScale scale;
   scale.NeighborhoodRadius = count > 0.0 ? sum / count : sums[2] / sums[3];
   scale.Spacing = SpacingFromNeighborhoodRadius(scale.NeighborhoodRadius, geometry.Stride - 1);

@@ -36,10 +36,12 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 
@@ -1235,14 +1237,27 @@ void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,
                        "particles). Gradients and normals across them are ill-conditioned, and "
                        "the surface may lie off the data. More NumberOfNeighbors may help.");
   }
+  // (Counted in parallel: whole numbers, the same in any order.)
+  vtkSMPThreadLocal<std::array<std::size_t, 3>> local({ 0, 0, 0 });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+      std::array<std::size_t, 3>& c = local.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (ranks.Owns(static_cast<std::size_t>(i)))
+        {
+          c[0] += dataOffsets[i] > 0.0 ? 1 : 0;
+          c[1] += phi[i] > 0.0 ? 1 : 0;
+          ++c[2];
+        }
+      }
+    });
   double counts[4] = { static_cast<double>(isopoints.Points.size() / 3), 0.0, 0.0, 0.0 };
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  for (const std::array<std::size_t, 3>& c : local)
   {
-    if (ranks.Owns(i))
+    for (int k = 0; k < 3; ++k)
     {
-      counts[1] += dataOffsets[i] > 0.0 ? 1.0 : 0.0;
-      counts[2] += phi[i] > 0.0 ? 1.0 : 0.0;
-      counts[3] += 1.0;
+      counts[k + 1] += static_cast<double>(c[k]);
     }
   }
   ranks.Sum(counts, 4);

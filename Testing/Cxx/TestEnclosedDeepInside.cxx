@@ -10,10 +10,13 @@
 //     there, as a slide shifts it, the surface moved), the table around the kept deep inside is
 //     again the full route's, and the grown balls, apart before, are one component;
 //   - the same numbers, to the bit, on 1 and 2 threads;
+//   - the union-find that threads join at once (SharedLinks) gives the sets, and roots, of the
+//     serial one (Links) on random joins, on 1 and 2 threads;
 //   - every sample a slide changed is among the deep inside's near samples (where a re-run
 //     looks for the band), and the particles' LevelSet array updated at the changed samples
 //     only (UpdateParticleOutput) is the one made anew, to the bit.
 #include "LevelSetEnclosed.h"
+#include "LevelSetEnclosedSums.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParticleOutput.h"
 #include "TestCheck.h"
@@ -127,6 +130,52 @@ void CheckSameTable(vtkTable* expected, vtkTable* got, double tolerance, const s
   }
 }
 
+// Random joins among a few large sets and many small ones, in parallel, against the serial
+// union-find: every element's root (its set's lowest member) the same.
+void CheckSharedLinks(int threads)
+{
+  const std::size_t n = 200000;
+  std::mt19937_64 generator(11);
+  // First a star: the last element joined to ever lower ones, so that the threads link the
+  // same root at once; then random joins, half within a neighbourhood (chains), half anywhere.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> joins;
+  for (std::uint32_t k = 2; k < 100000; ++k)
+  {
+    joins.emplace_back(static_cast<std::uint32_t>(n - 1), static_cast<std::uint32_t>(n - k));
+  }
+  for (int j = 0; j < 20000; ++j)
+  {
+    const std::uint32_t a = static_cast<std::uint32_t>(generator() % n);
+    const std::uint32_t b = generator() % 2 ? static_cast<std::uint32_t>((a + generator() % 16) % n)
+                                            : static_cast<std::uint32_t>(generator() % n);
+    joins.emplace_back(a, b);
+  }
+  lsi::enclosed::Links serial(n);
+  for (const auto& join : joins)
+  {
+    serial.Join(join.first, join.second);
+  }
+  const lsi::enclosed::SharedLinks shared(n);
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(joins.size()), 64, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          shared.Join(joins[k].first, joins[k].second);
+        }
+      });
+  });
+  std::size_t differ = 0, roots = 0;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    differ += serial.Find(i) != shared.Find(i) ? 1 : 0;
+    roots += shared.Find(i) == i ? 1 : 0;
+  }
+  Check(differ == 0 && roots > 1 && roots < n,
+    "SharedLinks on " + std::to_string(threads) + " threads: the serial sets' roots (" +
+      std::to_string(differ) + " differ, " + std::to_string(roots) + " sets)");
+}
+
 bool SameBits(vtkTable* a, vtkTable* b)
 {
   for (vtkIdType c = 0; c < a->GetNumberOfColumns(); ++c)
@@ -147,6 +196,9 @@ bool SameBits(vtkTable* a, vtkTable* b)
 
 int main()
 {
+  CheckSharedLinks(1);
+  CheckSharedLinks(2);
+
   // Random particles with a scalar and a vector array (their means are columns too).
   // Random particles, and a tight cluster of `clustered` more at the first ball's centre: each
   // lists only the cluster's own particles, and the deep particles around list them.
