@@ -53,20 +53,28 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, int components,
     {
       Chunk& out = parts[static_cast<std::size_t>(chunk)];
       std::unordered_map<std::uint32_t, std::size_t> partOf;
+      // (Neighbouring samples mostly share a group: the last one's part is tried first.)
+      std::uint32_t lastGroup = EnclosedDeepInside::None;
+      std::size_t lastPart = 0;
       const std::size_t begin = static_cast<std::size_t>(chunk) * ChunkSize;
       const std::size_t end = std::min(samples.size(), begin + ChunkSize);
       for (std::size_t k = begin; k < end; ++k)
       {
         const std::uint32_t group = groupOf(k);
-        const auto found = partOf.emplace(group, out.Parts.size());
-        if (found.second)
+        if (group != lastGroup || out.Parts.empty())
         {
-          out.Parts.emplace_back();
-          out.Groups.push_back(group);
+          const auto found = partOf.emplace(group, out.Parts.size());
+          if (found.second)
+          {
+            out.Parts.emplace_back();
+            out.Groups.push_back(group);
+          }
+          lastGroup = group;
+          lastPart = found.first->second;
         }
         const std::size_t i = samples[k];
-        AddRecord(in, recordOf(k, scratch.data()), components, i, distanceOf(i),
-          out.Parts[found.first->second]);
+        AddRecord(
+          in, recordOf(k, scratch.data()), components, i, distanceOf(i), out.Parts[lastPart]);
       }
     }
   });

@@ -289,7 +289,12 @@ double SurfaceDistance::operator()(std::size_t i) const
   std::uint32_t nearest;
   double d2;
   const double* x = geometry.Position(i);
-  this->Index->Nearest(x, 1, &nearest, &d2);
+  // (Searched within the reach used below, and a little more for the rounding of the root: a
+  // point beyond it is not used, and the walk prunes sooner.)
+  if (this->Index->NearestWithin(x, 1, 4.0 * s * s * (1.0 + 1e-9), &nearest, &d2) == 0)
+  {
+    return phi;
+  }
   double height = 0.0;
   for (int d = 0; d < 3; ++d)
   {

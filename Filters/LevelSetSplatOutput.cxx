@@ -8,20 +8,72 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 namespace lsi
 {
+
+namespace
+{
+// `source` (a tuple per isopoint) with each tuple repeated for the isopoint's `sides` corners:
+// in parallel, straight from memory for float and double arrays (nearly all of them), else
+// through GetTuples.
+vtkSmartPointer<vtkDataArray> PerCorner(vtkDataArray* source, vtkIdType count, int sides)
+{
+  vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(source->NewInstance());
+  copy->SetName(source->GetName());
+  const int components = source->GetNumberOfComponents();
+  copy->SetNumberOfComponents(components);
+  copy->SetNumberOfTuples(count * sides);
+  auto repeat = [&](const auto* from, auto* to) {
+    vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        for (int k = 0; k < sides; ++k)
+        {
+          std::copy(
+            from + i * components, from + (i + 1) * components, to + (i * sides + k) * components);
+        }
+      }
+    });
+  };
+  vtkDoubleArray* doubles = vtkDoubleArray::FastDownCast(source);
+  vtkFloatArray* floats = vtkFloatArray::FastDownCast(source);
+  if (doubles && vtkDoubleArray::FastDownCast(copy))
+  {
+    repeat(doubles->GetPointer(0), vtkDoubleArray::FastDownCast(copy)->GetPointer(0));
+  }
+  else if (floats && vtkFloatArray::FastDownCast(copy))
+  {
+    repeat(floats->GetPointer(0), vtkFloatArray::FastDownCast(copy)->GetPointer(0));
+  }
+  else
+  {
+    vtkNew<vtkIdList> owner; // the isopoint each corner comes from
+    owner->SetNumberOfIds(count * sides);
+    for (vtkIdType k = 0; k < count * sides; ++k)
+    {
+      owner->SetId(k, k / sides);
+    }
+    source->GetTuples(owner, copy);
+  }
+  return copy;
+}
+} // namespace
 
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
   vtkPolyData* splats, const AbortCheck& aborted)
@@ -89,17 +141,18 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(corners);
-  vtkNew<vtkIdList> owner; // the isopoint each corner comes from
-  owner->SetNumberOfIds(corners);
-  for (vtkIdType p = 0; p <= count; ++p)
-  {
-    offsets->SetValue(p, p * sides);
-  }
-  for (vtkIdType k = 0; k < corners; ++k)
-  {
-    connectivity->SetValue(k, k);
-    owner->SetId(k, k / sides);
-  }
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* corner = connectivity->GetPointer(0);
+  vtkSMPTools::For(0, count + 1, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      offset[p] = p * sides;
+      for (vtkIdType k = p * sides; p < count && k < (p + 1) * sides; ++k)
+      {
+        corner[k] = k;
+      }
+    }
+  });
   vtkNew<vtkCellArray> polygons;
   polygons->SetData(offsets, connectivity);
 
@@ -114,18 +167,22 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
     {
       continue;
     }
-    vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(source->NewInstance());
-    copy->SetName(source->GetName());
-    copy->SetNumberOfComponents(source->GetNumberOfComponents());
-    copy->SetNumberOfTuples(corners);
-    source->GetTuples(owner, copy);
+    vtkSmartPointer<vtkDataArray> copy = PerCorner(source, count, sides);
     if (field && copy->GetName() && std::string(copy->GetName()) == "Normals")
     {
-      for (vtkIdType k = 0; k < corners; ++k)
+      vtkFloatArray* packed = vtkFloatArray::FastDownCast(copy);
+      if (packed && packed->GetNumberOfComponents() == 3) // (as MakeSurfacePoints makes them)
       {
-        for (int d = 0; d < 3; ++d)
+        std::copy(cornerNormals.begin(), cornerNormals.end(), packed->GetPointer(0));
+      }
+      else
+      {
+        for (vtkIdType k = 0; k < corners; ++k)
         {
-          copy->SetComponent(k, d, cornerNormals[3 * k + d]);
+          for (int d = 0; d < 3; ++d)
+          {
+            copy->SetComponent(k, d, cornerNormals[3 * k + d]);
+          }
         }
       }
     }
