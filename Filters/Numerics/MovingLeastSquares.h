@@ -34,9 +34,17 @@ struct LinearStencilView
   double* Value;    // count values, may be null
 };
 
+/// Whether the normal matrix of a weighted linear fit is regular: the weighted samples span 3D
+/// when its determinant is not negligible against its trace scale to the fourth power (a cheap,
+/// scale-free test, the basis being O(1)). False for NaN entries too.
+inline bool RegularLinearNormal(const Eigen::Matrix4d& normal)
+{
+  const double scale = normal.trace() / 4.0;
+  return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * (scale * scale) * (scale * scale);
+}
+
 /// The normal matrix of the weighted linear fit at `centre` over `count` samples, in units of
-/// h; false when singular (the weighted samples do not span 3D: the determinant relative to the
-/// trace scale is a cheap, scale-free test, the basis being O(1)).
+/// h; false when singular (RegularLinearNormal).
 template <typename PositionFn>
 bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn position, double invH,
   Eigen::Matrix4d& normal)
@@ -64,8 +72,7 @@ bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn po
     w1 += w2;
   }
   normal << xx, xy, xz, x1, xy, yy, yz, y1, xz, yz, zz, z1, x1, y1, z1, w1;
-  const double scale = normal.trace() / 4.0;
-  return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * (scale * scale) * (scale * scale);
+  return RegularLinearNormal(normal);
 }
 
 /// Builds the stencil of a weighted linear fit around `centre` from `count` neighbour positions
@@ -200,8 +207,7 @@ bool FitLinear(const double centre[3], std::size_t count, PositionFn position, V
   }
   const Eigen::Matrix4d normal = Eigen::Map<const Eigen::Matrix4d>(&sums[0][0]);
   const Eigen::Vector4d right = Eigen::Map<const Eigen::Vector4d>(rightSums);
-  const double scale = normal.trace() / 4.0; // the singularity test of BuildLinearStencil
-  if (!(scale > 0.0) || std::abs(normal.determinant()) < 1e-10 * (scale * scale) * (scale * scale))
+  if (!RegularLinearNormal(normal))
   {
     return false;
   }
@@ -285,12 +291,9 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     sumSquaredWeights += t.Weight * t.Weight;
   }
   const Matrix10 normal = Eigen::Map<const Matrix10>(&columns[0][0]); // column-major
-  // The linear fit: the leading 4 x 4 block (scale-free singularity test as in
-  // BuildLinearStencil).
+  // The linear fit: the leading 4 x 4 block.
   const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>().selfadjointView<Eigen::Lower>();
-  const double scale = linearNormal.trace() / 4.0;
-  if (!(scale > 0.0) ||
-    std::abs(linearNormal.determinant()) < 1e-10 * (scale * scale) * (scale * scale))
+  if (!RegularLinearNormal(linearNormal))
   {
     return false;
   }

@@ -156,6 +156,27 @@ void TestMLS()
         value == 0.0 && gradient.isZero(),
       "degenerate neighbourhood reported singular by the one-field fit");
   }
+  // A NaN position (its weight and entries NaN): the stencil, the one-field fit and the
+  // linear-or-quadratic fit all report the fit singular, and none returns NaN.
+  std::vector<double> withNaN(plane);
+  for (std::size_t k = 0; k < withNaN.size(); ++k)
+  {
+    withNaN[k] = k % 3 == 2 ? u(random) : withNaN[k]; // a regular cloud, then one NaN
+  }
+  withNaN[7] = std::nan("");
+  const double c[3] = { withNaN[0], withNaN[1], withNaN[2] };
+  auto at = [&](std::size_t j) { return &withNaN[3 * j]; };
+  double value = 1.0;
+  Eigen::Vector3d gradient;
+  bool quadratic = true;
+  const bool stencil =
+    lsi::BuildLinearStencil(c, 27, at, 3.0, lsi::LinearStencilView{ g.data(), nullptr });
+  const bool linear = lsi::FitLinear(
+    c, 27, at, [](std::size_t) { return 1.0; }, 3.0, value, gradient);
+  const bool both = lsi::FitLinearOrQuadratic(
+    c, 27, at, [](std::size_t) { return 1.0; }, 3.0, 3.0, value, gradient, quadratic);
+  Check(!stencil && !linear && !both && value == 0.0 && gradient.isZero(),
+    "a NaN position: every linear fit reports it singular");
 }
 
 void TestQuadraticFit()
