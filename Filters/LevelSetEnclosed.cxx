@@ -335,58 +335,37 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // One Sums per component that touches the surface (few), found through its root. The
   // particles are summed in fixed chunks in parallel, each chunk's parts then added in chunk
   // order: the same sums on any number of threads.
-  struct ChunkSums
-  {
-    std::vector<Sums> Parts;
-    std::vector<vtkIdType> Roots;
-  };
   constexpr vtkIdType ChunkSize = 32768;
   const vtkIdType chunks = (n + ChunkSize - 1) / ChunkSize;
-  std::vector<ChunkSums> chunkSums(static_cast<std::size_t>(chunks));
+  std::vector<PartsByGroup<vtkIdType>> chunkSums(static_cast<std::size_t>(chunks));
   vtkSMPTools::For(0, chunks, 1, [&](vtkIdType firstChunk, vtkIdType lastChunk) {
     std::vector<double> tuple;
     for (vtkIdType chunk = firstChunk; chunk < lastChunk; ++chunk)
     {
-      ChunkSums& out = chunkSums[static_cast<std::size_t>(chunk)];
-      std::unordered_map<vtkIdType, std::size_t> partOfRoot;
-      vtkIdType lastRoot = -1; // consecutive particles are mostly of one component
-      std::size_t lastPart = 0;
+      PartsByGroup<vtkIdType>& out = chunkSums[static_cast<std::size_t>(chunk)]; // by root
       const vtkIdType end = std::min(n, (chunk + 1) * ChunkSize);
       for (vtkIdType p = chunk * ChunkSize; p < end; ++p)
       {
         const std::size_t i = sampleOf[p];
-        if (!touches(i))
+        if (touches(i))
         {
-          continue;
+          AddParticle(in, arrays, components, p, i, distances[i], tuple, out.Of(parent[p]));
         }
-        const vtkIdType root = parent[p];
-        if (root != lastRoot)
-        {
-          const auto found = partOfRoot.emplace(root, out.Parts.size());
-          if (found.second)
-          {
-            out.Parts.emplace_back();
-            out.Roots.push_back(root);
-          }
-          lastRoot = root;
-          lastPart = found.first->second;
-        }
-        AddParticle(in, arrays, components, p, i, distances[i], tuple, out.Parts[lastPart]);
       }
     }
   });
   std::vector<Sums> sums;
   std::vector<vtkIdType> rootOfSums;
   std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
-  for (const ChunkSums& chunk : chunkSums)
+  for (const PartsByGroup<vtkIdType>& chunk : chunkSums)
   {
     for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
     {
-      const auto found = sumsOfRoot.emplace(chunk.Roots[k], sums.size());
+      const auto found = sumsOfRoot.emplace(chunk.Groups[k], sums.size());
       if (found.second)
       {
         sums.emplace_back();
-        rootOfSums.push_back(chunk.Roots[k]);
+        rootOfSums.push_back(chunk.Groups[k]);
       }
       sums[found.first->second].Add(chunk.Parts[k]);
     }

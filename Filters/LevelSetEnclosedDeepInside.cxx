@@ -39,47 +39,26 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, int components,
   const std::vector<std::uint32_t>& samples, std::size_t groups, GroupOf&& groupOf,
   DistanceOf&& distanceOf, RecordOf&& recordOf)
 {
-  struct Chunk
-  {
-    std::vector<Sums> Parts;
-    std::vector<std::uint32_t> Groups;
-  };
   constexpr std::size_t ChunkSize = 16384;
   const std::size_t chunks = (samples.size() + ChunkSize - 1) / ChunkSize;
-  std::vector<Chunk> parts(chunks);
+  std::vector<PartsByGroup<std::uint32_t>> parts(chunks);
   vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
     std::vector<double> scratch(RecordSize(components));
     for (vtkIdType chunk = first; chunk < last; ++chunk)
     {
-      Chunk& out = parts[static_cast<std::size_t>(chunk)];
-      std::unordered_map<std::uint32_t, std::size_t> partOf;
-      // (Neighbouring samples mostly share a group: the last one's part is tried first.)
-      std::uint32_t lastGroup = EnclosedDeepInside::None;
-      std::size_t lastPart = 0;
+      PartsByGroup<std::uint32_t>& out = parts[static_cast<std::size_t>(chunk)];
       const std::size_t begin = static_cast<std::size_t>(chunk) * ChunkSize;
       const std::size_t end = std::min(samples.size(), begin + ChunkSize);
       for (std::size_t k = begin; k < end; ++k)
       {
-        const std::uint32_t group = groupOf(k);
-        if (group != lastGroup || out.Parts.empty())
-        {
-          const auto found = partOf.emplace(group, out.Parts.size());
-          if (found.second)
-          {
-            out.Parts.emplace_back();
-            out.Groups.push_back(group);
-          }
-          lastGroup = group;
-          lastPart = found.first->second;
-        }
         const std::size_t i = samples[k];
         AddRecord(
-          in, recordOf(k, scratch.data()), components, i, distanceOf(i), out.Parts[lastPart]);
+          in, recordOf(k, scratch.data()), components, i, distanceOf(i), out.Of(groupOf(k)));
       }
     }
   });
   std::vector<Sums> sums(groups);
-  for (const Chunk& chunk : parts)
+  for (const PartsByGroup<std::uint32_t>& chunk : parts)
   {
     for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
     {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 class vtkTable;
@@ -151,6 +152,39 @@ struct Sums
 
   /// Adds another part of the same component (its moment taken about this reference).
   void Add(const Sums& other);
+};
+
+/// A chunk's running sums, one part per group (a component, or its root), in the order the
+/// groups first appear: consecutive samples are mostly of one group, so the last group's part is
+/// tried before a hash lookup.
+template <typename Key>
+class PartsByGroup
+{
+public:
+  std::vector<Sums> Parts;
+  std::vector<Key> Groups; // Parts[k]'s group
+
+  /// The part of `group`, made if new (valid until the next call).
+  Sums& Of(Key group)
+  {
+    if (this->Parts.empty() || group != this->LastGroup)
+    {
+      const auto found = this->PartOf.emplace(group, this->Parts.size());
+      if (found.second)
+      {
+        this->Parts.emplace_back();
+        this->Groups.push_back(group);
+      }
+      this->LastGroup = group;
+      this->LastPart = found.first->second;
+    }
+    return this->Parts[this->LastPart];
+  }
+
+private:
+  std::unordered_map<Key, std::size_t> PartOf;
+  Key LastGroup{};
+  std::size_t LastPart = 0;
 };
 
 constexpr int FixedFields = 19; // a packed Sums: key, then the numbers of Sums before Means
