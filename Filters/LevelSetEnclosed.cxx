@@ -239,10 +239,9 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   const std::vector<vtkIdType>& slot = renumbered.empty() ? in.OriginalIds : renumbered;
   // The components over the samples first, linked towards lower storage indices (neighbours
   // are near in memory there, where slots are in input order); with periodic images, each
-  // sample is also linked to the first touching one of its slot. Serial: a parallel union-find
-  // (compare-and-swap links) measured no faster.
+  // sample is also linked to the first touching one of its slot. Serial: joined from several
+  // threads, these links measured no faster.
   Links links(geometry.NumberOfSamples);
-  auto& link = links.Parent; // flattened below, then read in parallel
   for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
   {
     if (!touches(i) || geometry.IsTruncated(i))
@@ -279,7 +278,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     if (touches(i))
     {
       const std::uint32_t root = links.Find(static_cast<std::uint32_t>(i));
-      link[i] = root; // flattened: read in parallel below
+      links.Parent[i].store(root, std::memory_order_relaxed); // flattened: read in parallel below
       lowest[root] = root == i ? slot[i] : std::min(lowest[root], slot[i]);
     }
   }
@@ -291,7 +290,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   auto nameSlot = [&](std::size_t i) {
     if (touches(i))
     {
-      parent[static_cast<std::size_t>(slot[i])] = lowest[link[i]];
+      parent[static_cast<std::size_t>(slot[i])] =
+        lowest[links.Parent[i].load(std::memory_order_relaxed)];
     }
   };
   if (in.Box.Enabled) // images share slots: in turn (they write the same value)

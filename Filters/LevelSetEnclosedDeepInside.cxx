@@ -91,7 +91,7 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
   }
   // (Joined in parallel: the sets do not depend on the order.)
-  const SharedLinks links(inside.size());
+  const Links links(inside.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
     [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
@@ -228,7 +228,7 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   };
   // Joined through the band's lists and the rim's (the groups are joined within already), in
   // parallel: the sets do not depend on the order.
-  const SharedLinks links(groups + band.size());
+  const Links links(groups + band.size());
   auto joinListed = [&](const std::vector<std::uint32_t>& samples) {
     vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), BalancedGrain(samples.size(), 1024),
       [&](vtkIdType begin, vtkIdType end) {

@@ -20,17 +20,6 @@ namespace enclosed
 {
 
 Links::Links(std::size_t n)
-  : Parent(n)
-{
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      this->Parent[i] = static_cast<std::uint32_t>(i);
-    }
-  });
-}
-
-SharedLinks::SharedLinks(std::size_t n)
   : Parent(new std::atomic<std::uint32_t>[n]) // (not zeroed: set in parallel below)
   , Size(n)
 {
