@@ -66,6 +66,10 @@ using namespace lsi::cases;
 // route, is timed this many times from the same state and the fastest counts (one timing moved
 // by half between runs here).
 constexpr int ReRunRepeats = 3;
+// First runs on 1 and on 2 threads, the fastest of this many each (3 until 2026-11-26: on a day
+// when the same process ran up to 20% apart from run to run, the ratio of the fastest of 3 moved
+// by 0.2 between processes).
+constexpr int ThreadRepeats = 5;
 // Quick isovalue changes in a slider drag, back and forth between two isovalues.
 constexpr int SliderChanges = 24;
 
@@ -218,29 +222,38 @@ struct ChildRun
   std::array<double, 8> QuickStages{};
 };
 
-// Child mode: a first run at `samples` (with QuickIsoValueChanges on, so that it keeps what a
-// slide needs), the particle arrays freed of everything else, its peak memory, then the small
-// isovalue change, slid, and the method's re-run at that isovalue; prints them on one line.
-// The first run on 1 and on 2 threads alone (the fastest of `repeats` each, taken in turn, as
-// in the full benchmark), with how busy each kept its cores: for comparing builds side by side.
-int ThreadsOnly(std::size_t samples, int repeats)
+// The first run on fresh filters on the same particles, 1 against 2 threads (the fastest of
+// `repeats` runs each, taken in turn), with how busy each kept its cores (a 1-thread run below 1
+// lost time to the machine), into `report`; returns the two times.
+std::array<double, 2> AddThreadComparison(
+  Report& report, vtkPolyData* particles, const OneComponentCase& c, int repeats)
 {
-  OneComponentCase c;
-  vtkSmartPointer<vtkPolyData> particles = MakeParticles(c, c.Samples(samples, 1));
   std::array<double, 2> busy{};
   const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
     particles, [&](vtkLevelSetIsosurface* timed) { SetCaseInputs(timed, c); }, repeats, &busy);
-  Report report;
-  report.Add("samples", static_cast<double>(samples));
   report.Add("level_set.one_thread_s", seconds[0]);
   report.Add("level_set.two_threads_s", seconds[1]);
   report.Add("level_set.one_thread_busy_fraction", busy[0]);
   report.Add("level_set.two_threads_busy_fraction", busy[1]);
+  return seconds;
+}
+
+// The thread comparison alone (--threads-only REPEATS): for comparing builds side by side.
+int ThreadsOnly(std::size_t samples, int repeats)
+{
+  OneComponentCase c;
+  vtkSmartPointer<vtkPolyData> particles = MakeParticles(c, c.Samples(samples, 1));
+  Report report;
+  report.Add("samples", static_cast<double>(samples));
+  const std::array<double, 2> seconds = AddThreadComparison(report, particles, c, repeats);
   report.Add("target.two_thread_speedup (>= 1.85)", seconds[0] / seconds[1]);
   report.Print(std::cout);
   return EXIT_SUCCESS;
 }
 
+// Child mode: a first run at `samples` (with QuickIsoValueChanges on, so that it keeps what a
+// slide needs), the particle arrays freed of everything else, its peak memory, then the small
+// isovalue change, slid, and the method's re-run at that isovalue; prints them on one line.
 int FirstRunOnly(std::size_t samples, int threads)
 {
   OneComponentCase c;
@@ -569,17 +582,8 @@ int main(int argc, char* argv[])
     report.Add(prefix + ".method_area_error", methodEnclosed[k].Area / exact.Area - 1.0);
   }
 
-  // Threads: fresh filters on the same particles, the fastest of 5 runs each (3 until
-  // 2026-11-26: on a day when the same process ran 10-15% apart from run to run, the ratio of
-  // the fastest of 3 moved by 0.2 between processes). With how busy each kept its cores: a
-  // 1-thread run below 1 lost time to the machine.
-  std::array<double, 2> busy{};
-  const std::array<double, 2> threads = SecondsWithOneAndTwoThreads(
-    particles, [&](vtkLevelSetIsosurface* timed) { SetCaseInputs(timed, c); }, 5, &busy);
-  report.Add("level_set.one_thread_s", threads[0]);
-  report.Add("level_set.two_threads_s", threads[1]);
-  report.Add("level_set.one_thread_busy_fraction", busy[0]);
-  report.Add("level_set.two_threads_busy_fraction", busy[1]);
+  // Threads.
+  const std::array<double, 2> threads = AddThreadComparison(report, particles, c, ThreadRepeats);
 
   // Scaling, each size in a process of its own (peak memory is per process), with the profile
   // of its first run and of a re-run after the small isovalue change.

@@ -142,14 +142,14 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(corners);
   vtkIdType* offset = offsets->GetPointer(0);
-  vtkIdType* corner = connectivity->GetPointer(0);
+  vtkIdType* cornerIds = connectivity->GetPointer(0);
   vtkSMPTools::For(0, count + 1, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType p = begin; p < end; ++p)
     {
       offset[p] = p * sides;
       for (vtkIdType k = p * sides; p < count && k < (p + 1) * sides; ++k)
       {
-        corner[k] = k;
+        cornerIds[k] = k;
       }
     }
   });
