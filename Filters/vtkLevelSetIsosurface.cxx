@@ -10,6 +10,7 @@
 #include "LevelSetEnclosedDeepInside.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
+#include "LevelSetFloodAcross.h"
 #include "LevelSetHaloReach.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsopoints.h"
@@ -756,39 +757,6 @@ void vtkLevelSetIsosurface::Bounds(vtkPointSet* input, double bounds[6])
   }
 }
 
-bool vtkLevelSetIsosurface::FollowAcrossFaces(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-  std::vector<char>& inSeed, std::vector<double>& phi)
-{
-  const Internals& internal = *this->Internal;
-  if (!internal.Box.Enabled)
-  {
-    return true;
-  }
-  // A particle and its images are one particle: where the flood reached one of them, it seeds
-  // the others, and the flood runs again, until no new particle joins (a component that wraps
-  // through several faces takes a few rounds).
-  const std::vector<vtkIdType> original =
-    lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf);
-  for (int round = 0; round < lsi::FloodRoundsAcrossFaces; ++round)
-  {
-    if (!lsi::SeedImagesOfReached(
-          original, internal.OriginalCount, dataOffsets,
-          [&](std::size_t i) { return phi[i] > 0.0; }, inSeed))
-    {
-      return true;
-    }
-    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
-      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
-      this->Stage(InitializationStage));
-    if (flood.Aborted)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 void vtkLevelSetIsosurface::KeepPeriodicCell(lsi::IsopointSet& isopoints)
 {
   const Internals& internal = *this->Internal;
@@ -997,44 +965,31 @@ bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
   std::vector<char>& inSeed, std::vector<double>& phi, double& seedSamples)
 {
-  // Each rank floods its samples and ghosts. Where a flood reached a ghost, the ghost's owner
-  // is seeded there; where an owner's sample is inside, its ghosts elsewhere are seeded; and
-  // every rank floods again, until no rank adds a seed. The component is then the serial one:
-  // the ranks' neighbour graphs, joined at the ghosts, are the serial graph.
-  const lsi::Distribution& ranks = *this->Internal->Ranks;
-  const int rounds = lsi::FloodRoundsAcrossRanks(ranks);
-  for (int round = 0; round < rounds; ++round)
+  // Each rank floods its samples and ghosts, across the periodic box's faces and the ranks
+  // (LevelSetFloodAcross.h): the component is then the serial one.
+  const Internals& internal = *this->Internal;
+  const lsi::Distribution& ranks = *internal.Ranks;
+  const std::vector<vtkIdType> original = internal.Box.Enabled
+    ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
+    : std::vector<vtkIdType>();
+  const lsi::FloodAcrossEnd end = lsi::FloodAcross(
+    ranks, original, internal.OriginalCount, dataOffsets, inSeed,
+    [&]() {
+      return lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
+        static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
+        this->Stage(InitializationStage));
+    },
+    [&](std::size_t i) { return phi[i] > 0.0; }, seedSamples);
+  if (end == lsi::FloodAcrossEnd::Aborted)
   {
-    const lsi::FloodResult flood = lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
-      static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
-      this->Stage(InitializationStage));
-    const bool ok =
-      !flood.Aborted && this->FollowAcrossFaces(geometry, dataOffsets, settings, inSeed, phi);
-    if (!ranks.All(ok))
-    {
-      return false;
-    }
-    if (round == 0)
-    {
-      seedSamples = ranks.Sum(static_cast<double>(flood.SeedSamples));
-    }
-    if (!ranks.Distributed())
-    {
-      return true;
-    }
-    if (lsi::SeedWhereRanksReached(
-          ranks, dataOffsets, [&](std::size_t i) { return phi[i] > 0.0; }, inSeed) == 0.0)
-    {
-      ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
-      return true;
-    }
+    return false;
   }
-  if (this->ReportsForAll())
+  if (end == lsi::FloodAcrossEnd::StillCrossing && this->ReportsForAll())
   {
     vtkWarningMacro("The flood was still crossing between ranks after "
-      << rounds << " rounds: the seeded component may be incomplete.");
+      << lsi::FloodRoundsAcrossRanks(ranks) << " rounds: the seeded component may be incomplete.");
   }
-  ranks.RefreshGhosts(phi);
+  ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
   return true;
 }
 

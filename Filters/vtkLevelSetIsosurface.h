@@ -641,8 +641,6 @@ private:
   // Under MPI, messages about the whole run come from rank 0 only.
   bool ReportsForAll() const;
   vtkSmartPointer<vtkPointSet> WithPeriodicImages(vtkPointSet* input, std::vector<double>& values);
-  bool FollowAcrossFaces(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi);
   void KeepPeriodicCell(lsi::IsopointSet& isopoints);
   void CheckPeriodicMargin(const lsi::Neighborhoods& geometry, const lsi::SPHField* field);
   // The neighbourhoods of `points` (cached), checked.

@@ -8,6 +8,7 @@
 #include "vtkLevelSetIsosurfaceInternals.h"
 
 #include "LevelSetFlood.h"
+#include "LevelSetFloodAcross.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsoValueSlide.h"
 #include "LevelSetPeriodicImages.h"
@@ -247,56 +248,30 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     last.SeedSpheres = spheres;
     last.InSeed = std::move(seeds.InSeed);
   }
-  // As the method floods (FloodAcrossRanks, FollowAcrossFaces): in a periodic box a particle
-  // the flood reached seeds its images, and the flood runs again; under MPI, where a rank's
-  // flood reached another's samples they are seeded there, and every rank floods again.
-  // (Copied only where the rounds below add seeds.)
+  // As the method floods (FloodAcrossRanks): across the periodic box's faces and the ranks,
+  // which add seeds. (Copied only where they may: the last run's seeds stay as they were.)
   const bool addsSeeds = internal.Box.Enabled || ranks.Distributed();
   std::vector<char> added = addsSeeds ? last.InSeed : std::vector<char>();
   std::vector<char>& inSeed = addsSeeds ? added : last.InSeed;
   const std::vector<vtkIdType> original = internal.Box.Enabled
     ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
     : std::vector<vtkIdType>();
-  lsi::FloodResult flood;
-  auto floodHere = [&]() {
-    inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-      static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-    for (int round = 0;
-         !flood.Aborted && internal.Box.Enabled && round < lsi::FloodRoundsAcrossFaces &&
-         lsi::SeedImagesOfReached(
-           original, internal.OriginalCount, dataOffsets,
-           [&](std::size_t i) { return inside[i] != 0; }, inSeed);
-         ++round)
-    {
-      lsi::FloodResult again;
+  double seedSamples = 0.0;
+  const lsi::FloodAcrossEnd end = lsi::FloodAcross(
+    ranks, original, internal.OriginalCount, dataOffsets, inSeed,
+    [&]() {
+      lsi::FloodResult flood;
       inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), again, this->Stage(lsi::InitializationStage));
-      flood.Aborted = again.Aborted;
-    }
-    return !flood.Aborted;
-  };
-  if (!ranks.All(floodHere()))
+        static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
+      return flood;
+    },
+    [&](std::size_t i) { return inside[i] != 0; }, seedSamples);
+  if (end != lsi::FloodAcrossEnd::Whole)
   {
-    return false;
+    return false; // aborted, or still crossing: the method runs (and warns)
   }
-  const double seedSamples = ranks.Sum(static_cast<double>(flood.SeedSamples));
   if (ranks.Distributed())
   {
-    int round = 0;
-    for (; round < lsi::FloodRoundsAcrossRanks(ranks) &&
-         lsi::SeedWhereRanksReached(
-           ranks, dataOffsets, [&](std::size_t i) { return inside[i] != 0; }, inSeed) != 0.0;
-         ++round)
-    {
-      if (!ranks.All(floodHere()))
-      {
-        return false;
-      }
-    }
-    if (round == lsi::FloodRoundsAcrossRanks(ranks))
-    {
-      return false; // still crossing: the method runs, and warns
-    }
     // The ghosts' sides are their owners' (as the method's ghosts' phi is).
     std::vector<double> insideAtOwner(inside.begin(), inside.end());
     ranks.RefreshGhosts(insideAtOwner);
