@@ -146,9 +146,10 @@ double BoundAt(const BandDrift* drift, std::size_t i, const Eigen::Vector3d& p, 
 
 // The `fit` samples nearest to p into `ids`: the same samples as a search without a bound
 // (within one, the tree walk visits the same leaves in the same order), found sooner. Searched
-// first within a little more than the radius of the `found` samples `last` about where they
-// were gathered (`lastCentre`: the density changes little over a stride), then within the
-// farthest of them from p, which bounds them.
+// first within 1.1 times the radius of the `found` samples `last` about where they were gathered
+// (`lastCentre`: the density changes little over a stride; 0.2% of a 10% change's gathers need
+// more, against 1.2 times: 5% less time in the slide), then within the farthest of them from p,
+// which bounds them.
 std::size_t GatherNear(const Neighborhoods& geometry, const Eigen::Vector3d& p,
   const Eigen::Vector3d& lastCentre, const std::uint32_t* last, std::size_t found, std::size_t fit,
   std::uint32_t* ids, double* d2)
@@ -161,7 +162,7 @@ std::size_t GatherNear(const Neighborhoods& geometry, const Eigen::Vector3d& p,
     bound = std::max(bound, (x - p).squaredNorm());
   }
   if (found == fit && radius > 0.0 && radius < bound &&
-    geometry.Index->NearestWithin(p.data(), fit, 1.44 * radius, ids, d2) == fit)
+    geometry.Index->NearestWithin(p.data(), fit, 1.21 * radius, ids, d2) == fit)
   {
     return fit;
   }
