@@ -324,18 +324,11 @@ std::vector<char> FloodedInside(const Neighborhoods& geometry,
   return inside;
 }
 
-FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted)
+bool SignedDistanceToCrossings(const Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inside, double halfWidth,
+  std::vector<double>& phi, const AbortCheck& aborted)
 {
-  FloodResult result;
-  std::vector<char> inside =
-    FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, result, aborted);
   SerialAbortCheck stop(aborted);
-  if (result.Aborted)
-  {
-    return result;
-  }
 
   // Distances to the crossings by a closest-point Dijkstra: every sample near the front
   // carries the crossing nearest to it found so far and offers it to its neighbours. Squared
@@ -411,7 +404,10 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
     }
   }
   helper.Finish();
-  result.Aborted = result.Aborted || stop.WasStopped();
+  if (stop.WasStopped())
+  {
+    return false;
+  }
   phi.resize(n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
@@ -420,7 +416,7 @@ FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
       phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
     }
   });
-  return result;
+  return true;
 }
 
 } // namespace lsi

@@ -23,23 +23,25 @@ struct FloodResult
   std::size_t InsideSamples = 0; // samples reached by the flood
   std::size_t FilledBubbles = 0; // samples of small outside pockets taken as inside
   std::size_t SeedSamples = 0;   // seed samples with f > f_iso (the flood's sources)
-  bool Aborted = false;          // stopped on request; phi is then incomplete
+  bool Aborted = false;          // stopped on request; the inside is then incomplete
 };
 
-/// The flood alone: the samples of the seeds' components, with their small bubbles filled
-/// (where FloodedSignedDistance's phi is positive). Arguments as below.
+/// The flood: the samples connected to the seeds through neighbours with f > f_iso, where
+/// `dataOffsets` holds f - f_iso per sample and `inSeed` whether each sample lies in a seed.
+/// Outside pockets of fewer than `bubbleSize` samples enclosed by the inside are noise below
+/// the neighbourhood scale: they are filled (taken as inside).
 std::vector<char> FloodedInside(const Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
   FloodResult& result, const AbortCheck& aborted);
 
-/// `dataOffsets`: f - f_iso per sample (the crossings are placed where it interpolates to zero).
-/// `inSeed`: whether each sample lies in a seed. Outside pockets of fewer than `bubbleSize`
-/// samples enclosed by the inside are noise below the neighbourhood scale: they are filled.
-/// phi becomes the signed distance (positive inside) to the crossings, up to `halfWidth`
-/// and clamped to +-halfWidth beyond.
-FloodResult FloodedSignedDistance(const Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  double halfWidth, std::vector<double>& phi, const AbortCheck& aborted);
+/// The initial level set from a flood's `inside` (FloodedInside): phi becomes the signed
+/// distance (positive inside) to the crossings between inside and outside neighbours (placed
+/// where `dataOffsets` interpolates to zero), up to `halfWidth` and clamped to +-halfWidth
+/// beyond. Meanwhile a helper thread computes the MLS stencils of the band the evolution
+/// starts on. False if aborted (phi is then left as it was).
+bool SignedDistanceToCrossings(const Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inside, double halfWidth,
+  std::vector<double>& phi, const AbortCheck& aborted);
 
 } // namespace lsi
 

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The flood of the seeds' component where the samples are not one cloud: in a periodic box a
 // particle and its images are one particle, and under MPI each rank holds its own samples and
-// ghosts of its neighbours'. The method's flood (FloodedSignedDistance) and a quick re-run's
-// (FloodedInside) both go across this way, so both find the component one process would find
-// on the whole cloud.
+// ghosts of its neighbours'. The method's flood and a quick re-run's both go across this way
+// (FloodedInside in rounds), so both find the component one process would find on the whole
+// cloud.
 #ifndef LevelSetFloodAcross_h
 #define LevelSetFloodAcross_h
 

@@ -515,7 +515,8 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   if (ranks.Distributed()) // this rank's share, for the benchmarks: field data of port 1
   {
     for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),
-           std::make_pair("CommunicationSeconds", ranks.CommunicationSeconds) })
+           std::make_pair("CommunicationSeconds", ranks.CommunicationSeconds),
+           std::make_pair("InitializationSeconds", this->InitializationSeconds) })
     {
       vtkNew<vtkDoubleArray> value;
       value->SetName(entry.first);
@@ -966,20 +967,23 @@ bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
   std::vector<char>& inSeed, std::vector<double>& phi, double& seedSamples)
 {
   // Each rank floods its samples and ghosts, across the periodic box's faces and the ranks
-  // (LevelSetFloodAcross.h): the component is then the serial one.
+  // (LevelSetFloodAcross.h): the component is then the serial one. Only then the distances to
+  // its crossings (once, however many rounds the flood took).
   const Internals& internal = *this->Internal;
   const lsi::Distribution& ranks = *internal.Ranks;
   const std::vector<vtkIdType> original = internal.Box.Enabled
     ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
     : std::vector<vtkIdType>();
+  std::vector<char> inside;
   const lsi::FloodAcrossEnd end = lsi::FloodAcross(
     ranks, original, internal.OriginalCount, dataOffsets, inSeed,
     [&]() {
-      return lsi::FloodedSignedDistance(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), lsi::ReinitializationHalfWidth(settings), phi,
-        this->Stage(InitializationStage));
+      lsi::FloodResult flood;
+      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
+        static_cast<std::size_t>(geometry.Stride), flood, this->Stage(InitializationStage));
+      return flood;
     },
-    [&](std::size_t i) { return phi[i] > 0.0; }, seedSamples);
+    [&](std::size_t i) { return inside[i] != 0; }, seedSamples);
   if (end == lsi::FloodAcrossEnd::Aborted)
   {
     return false;
@@ -988,6 +992,11 @@ bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
   {
     vtkWarningMacro("The flood was still crossing between ranks after "
       << lsi::FloodRoundsAcrossRanks(ranks) << " rounds: the seeded component may be incomplete.");
+  }
+  if (!ranks.All(lsi::SignedDistanceToCrossings(geometry, dataOffsets, inside,
+        lsi::ReinitializationHalfWidth(settings), phi, this->Stage(InitializationStage))))
+  {
+    return false;
   }
   ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
   return true;
