@@ -938,11 +938,19 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     last.SeedSpheres = spheres;
     std::copy(bounds, bounds + 6, last.Bounds);
     last.InSeed = seeds.InSeed;
-    std::vector<char> inSeed = seeds.InSeed;
+    std::vector<char> inSeed = seeds.InSeed, inside;
     double seedSamples = 0.0;
-    if (!this->FloodAcrossRanks(geometry, dataOffsets, settings, inSeed, phi, seedSamples))
+    const lsi::FloodAcrossEnd end =
+      this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples);
+    if (end == lsi::FloodAcrossEnd::Aborted)
     {
       return false;
+    }
+    if (end == lsi::FloodAcrossEnd::StillCrossing && this->ReportsForAll())
+    {
+      vtkWarningMacro("The flood was still crossing between ranks after "
+        << lsi::FloodRoundsAcrossRanks(ranks)
+        << " rounds: the seeded component may be incomplete.");
     }
     if (seedSamples == 0.0 && this->ReportsForAll())
     {
@@ -953,6 +961,13 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     {
       return false;
     }
+    // The distances to the component's crossings: once, however many rounds the flood took.
+    if (!ranks.All(lsi::SignedDistanceToCrossings(geometry, dataOffsets, inside,
+          lsi::ReinitializationHalfWidth(settings), phi, this->Stage(InitializationStage))))
+    {
+      return false;
+    }
+    ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
     flood.Phi = phi;
     flood.InSeed = last.InSeed;
     last.Start = std::move(flood);
@@ -962,44 +977,18 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   return true;
 }
 
-bool vtkLevelSetIsosurface::FloodAcrossRanks(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-  std::vector<char>& inSeed, std::vector<double>& phi, double& seedSamples)
+lsi::FloodAcrossEnd vtkLevelSetIsosurface::FloodComponent(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
+  double& seedSamples)
 {
-  // Each rank floods its samples and ghosts, across the periodic box's faces and the ranks
-  // (LevelSetFloodAcross.h): the component is then the serial one. Only then the distances to
-  // its crossings (once, however many rounds the flood took).
+  // Each rank floods its samples and ghosts, across the periodic box's faces and the ranks:
+  // the component is then the serial one.
   const Internals& internal = *this->Internal;
-  const lsi::Distribution& ranks = *internal.Ranks;
   const std::vector<vtkIdType> original = internal.Box.Enabled
     ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
     : std::vector<vtkIdType>();
-  std::vector<char> inside;
-  const lsi::FloodAcrossEnd end = lsi::FloodAcross(
-    ranks, original, internal.OriginalCount, dataOffsets, inSeed,
-    [&]() {
-      lsi::FloodResult flood;
-      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), flood, this->Stage(InitializationStage));
-      return flood;
-    },
-    [&](std::size_t i) { return inside[i] != 0; }, seedSamples);
-  if (end == lsi::FloodAcrossEnd::Aborted)
-  {
-    return false;
-  }
-  if (end == lsi::FloodAcrossEnd::StillCrossing && this->ReportsForAll())
-  {
-    vtkWarningMacro("The flood was still crossing between ranks after "
-      << lsi::FloodRoundsAcrossRanks(ranks) << " rounds: the seeded component may be incomplete.");
-  }
-  if (!ranks.All(lsi::SignedDistanceToCrossings(geometry, dataOffsets, inside,
-        lsi::ReinitializationHalfWidth(settings), phi, this->Stage(InitializationStage))))
-  {
-    return false;
-  }
-  ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
-  return true;
+  return lsi::FloodAcross(geometry, *internal.Ranks, original, internal.OriginalCount, dataOffsets,
+    inSeed, inside, seedSamples, this->Stage(InitializationStage));
 }
 
 bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,

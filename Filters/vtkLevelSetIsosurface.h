@@ -80,6 +80,7 @@ class vtkPointSet;
 class vtkTable;
 namespace lsi
 {
+enum class FloodAcrossEnd;
 struct EnclosedDeepInside;
 class PointCloudIndex;
 struct EvolutionSettings;
@@ -630,8 +631,10 @@ private:
     vtkPointSet* input, std::vector<double>& values, bool& idle);
   vtkSmartPointer<vtkPointSet> WithGhosts(
     vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values);
-  bool FloodAcrossRanks(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    const lsi::EvolutionSettings& settings, std::vector<char>& inSeed, std::vector<double>& phi,
+  // The flood of the seeds' component (`inside`), the method's and a quick re-run's, across the
+  // periodic box's faces and the ranks (LevelSetFloodAcross.h); seeds are added to `inSeed`.
+  lsi::FloodAcrossEnd FloodComponent(const lsi::Neighborhoods& geometry,
+    const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
     double& seedSamples);
   void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
   void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,

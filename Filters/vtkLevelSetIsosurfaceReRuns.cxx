@@ -7,7 +7,6 @@
 #include "vtkLevelSetIsosurface.h"
 #include "vtkLevelSetIsosurfaceInternals.h"
 
-#include "LevelSetFlood.h"
 #include "LevelSetFloodAcross.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsoValueSlide.h"
@@ -248,24 +247,14 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     last.SeedSpheres = spheres;
     last.InSeed = std::move(seeds.InSeed);
   }
-  // As the method floods (FloodAcrossRanks): across the periodic box's faces and the ranks,
-  // which add seeds. (Copied only where they may: the last run's seeds stay as they were.)
+  // As the method floods (FloodComponent), which adds seeds across a periodic box's faces and
+  // the ranks. (Copied only where it may: the last run's seeds stay as they were.)
   const bool addsSeeds = internal.Box.Enabled || ranks.Distributed();
   std::vector<char> added = addsSeeds ? last.InSeed : std::vector<char>();
   std::vector<char>& inSeed = addsSeeds ? added : last.InSeed;
-  const std::vector<vtkIdType> original = internal.Box.Enabled
-    ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
-    : std::vector<vtkIdType>();
   double seedSamples = 0.0;
-  const lsi::FloodAcrossEnd end = lsi::FloodAcross(
-    ranks, original, internal.OriginalCount, dataOffsets, inSeed,
-    [&]() {
-      lsi::FloodResult flood;
-      inside = lsi::FloodedInside(geometry, dataOffsets, inSeed,
-        static_cast<std::size_t>(geometry.Stride), flood, this->Stage(lsi::InitializationStage));
-      return flood;
-    },
-    [&](std::size_t i) { return inside[i] != 0; }, seedSamples);
+  const lsi::FloodAcrossEnd end =
+    this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples);
   if (end != lsi::FloodAcrossEnd::Whole)
   {
     return false; // aborted, or still crossing: the method runs (and warns)
