@@ -1,0 +1,112 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The flood across a periodic box's faces (LevelSetFloodAcross), in one process. Particles fill
+// a slab periodic in x (jittered lattice, spacing 1, length 40) with images of those within 4 of
+// either face beyond the other; f = cos(2 pi x / 40) is above 0 for x < 10 and x > 30. Seeded at
+// x < 2, the flood reaches, through the images just below x = 0, the particles near x = 40, which
+// one process on a plain cloud cannot: every sample with f > 0 (particles and images) must end
+// inside and no other, from a flood that took more than one round. Without the images' ids
+// (as outside a periodic box) the same flood must stop at the images: the check can fail.
+#include "LevelSetFloodAcross.h"
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetPeriodicImages.h"
+#include "TestCheck.h"
+
+#include "vtkNew.h"
+#include "vtkPoints.h"
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+int main()
+{
+  constexpr int Nx = 40, Ny = 8, Nz = 8;
+  constexpr double Length = Nx, Margin = 4.0;
+  const double pi = std::acos(-1.0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  std::vector<double> xyz;
+  for (int i = 0; i < Nx; ++i)
+  {
+    for (int j = 0; j < Ny; ++j)
+    {
+      for (int k = 0; k < Nz; ++k)
+      {
+        xyz.insert(xyz.end(), { i + 0.5 + jitter(random), j + jitter(random), k + jitter(random) });
+      }
+    }
+  }
+  const vtkIdType particles = static_cast<vtkIdType>(xyz.size() / 3);
+  // The images, after the particles: imageOf[k] is the particle that input id particles + k is.
+  std::vector<vtkIdType> imageOf;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (vtkIdType p = 0; p < particles; ++p)
+  {
+    points->InsertNextPoint(&xyz[3 * p]);
+  }
+  for (vtkIdType p = 0; p < particles; ++p)
+  {
+    const double x = xyz[3 * p];
+    if (x < Margin || x >= Length - Margin)
+    {
+      points->InsertNextPoint(x < Margin ? x + Length : x - Length, xyz[3 * p + 1], xyz[3 * p + 2]);
+      imageOf.push_back(p);
+    }
+  }
+  lsi::Neighborhoods geometry;
+  lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck());
+  const std::size_t n = geometry.NumberOfSamples;
+  const std::vector<vtkIdType> original = lsi::OriginalIds(geometry, particles, imageOf);
+  // Per sample (storage order): f at its particle, and whether it is a seed.
+  std::vector<double> dataOffsets(n);
+  std::vector<char> seeds(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double x = xyz[3 * original[i]];
+    dataOffsets[i] = std::cos(2.0 * pi * x / Length);
+    seeds[i] = geometry.Position(i)[0] < 2.0 ? 1 : 0;
+  }
+  const lsi::Communicator oneProcess;
+
+  // Across the faces: every sample above the isovalue, and no other.
+  std::vector<char> inSeed = seeds, inside;
+  double seedSamples = 0.0;
+  const lsi::FloodAcrossEnd end = lsi::FloodAcross(geometry, oneProcess, original, particles,
+    dataOffsets, inSeed, inside, seedSamples, lsi::AbortCheck());
+  lsi::test::Check(end == lsi::FloodAcrossEnd::Whole, "end == lsi::FloodAcrossEnd::Whole");
+  std::size_t seeded = 0, added = 0, wrong = 0, above = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    seeded += seeds[i] && dataOffsets[i] > 0.0;
+    added += inSeed[i] && !seeds[i];
+    above += dataOffsets[i] > 0.0;
+    wrong += (inside[i] != 0) != (dataOffsets[i] > 0.0);
+  }
+  std::cout << n << " samples, " << above << " above the isovalue, " << seeded
+            << " seeds, the images added " << added << " seeds; wrong sides: " << wrong << "\n";
+  lsi::test::Check(seedSamples == static_cast<double>(seeded) && seeded > 0,
+    "seedSamples == static_cast<double>(seeded) && seeded > 0");
+  // The far side was reached through the images: in more than one round.
+  lsi::test::Check(added > 0, "added > 0");
+  lsi::test::Check(wrong == 0, "wrong == 0");
+
+  // Without the images' ids the flood stops at them: the particles near x = 40 stay outside.
+  std::vector<char> plainSeed = seeds, plainInside;
+  const lsi::FloodAcrossEnd plainEnd =
+    lsi::FloodAcross(geometry, oneProcess, std::vector<vtkIdType>(), particles, dataOffsets,
+      plainSeed, plainInside, seedSamples, lsi::AbortCheck());
+  lsi::test::Check(plainEnd == lsi::FloodAcrossEnd::Whole, "the plain flood ends whole");
+  std::size_t farSide = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double x = geometry.Position(i)[0];
+    farSide += plainInside[i] && x > Length / 2 && x < Length;
+  }
+  lsi::test::Check(farSide == 0 && plainSeed == seeds, "farSide == 0 && plainSeed == seeds");
+  std::cout << (lsi::test::Failures() ? "flood across tests FAILED\n"
+                                      : "flood across tests passed\n");
+  return lsi::test::Failures() ? 1 : 0;
+}
