@@ -48,10 +48,15 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
     [&](std::size_t begin, std::size_t end) {
       std::vector<std::uint32_t> ids(k);
       std::vector<double> d2(k);
+      // The points are spread about evenly over the surface: the last point's k-th distance
+      // bounds the search (the same neighbours, found sooner; NearestNear).
+      double lastRadius = 0.0;
       for (std::size_t i = begin; i < end; ++i)
       {
-        const std::size_t found = index.Nearest(&points[3 * i], k, ids.data(), d2.data());
+        const std::size_t found =
+          index.NearestNear(&points[3 * i], k, lastRadius, ids.data(), d2.data());
         radii[i] = SplatRadiusFromNeighbors(d2.data(), found, factor);
+        lastRadius = found == k ? std::sqrt(d2[k - 1]) : 0.0;
       }
     },
     aborted);
