@@ -15,19 +15,19 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
 {
   const std::size_t bubbleSize = static_cast<std::size_t>(geometry.Stride);
   auto reached = [&](std::size_t i) { return inside[i] != 0; };
-  // This rank's flood, followed through the box's faces.
+  // This rank's flood, followed through the box's faces (its seed count is the first round's).
   auto floodHere = [&]() {
-    FloodResult first;
-    inside = FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, first, aborted);
-    for (int round = 0; !first.Aborted && !original.empty() && round < FloodRoundsAcrossFaces &&
+    FloodResult flood;
+    inside = FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, flood, aborted);
+    for (int round = 0; !flood.Aborted && !original.empty() && round < FloodRoundsAcrossFaces &&
          SeedImagesOfReached(original, originalCount, dataOffsets, reached, inSeed);
          ++round)
     {
       FloodResult again;
       inside = FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, again, aborted);
-      first.Aborted = again.Aborted;
+      flood.Aborted = again.Aborted;
     }
-    return first;
+    return flood;
   };
   const FloodResult first = floodHere();
   if (!ranks.All(!first.Aborted))
@@ -39,6 +39,8 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
   {
     return FloodAcrossEnd::Whole;
   }
+  // Under MPI: seeds where another rank's flood reached this rank's samples (and the other way),
+  // then every rank floods again; FloodRoundsAcrossRanks floods in all at most.
   for (int floods = 1; SeedWhereRanksReached(ranks, dataOffsets, reached, inSeed) != 0.0; ++floods)
   {
     if (floods == FloodRoundsAcrossRanks(ranks))
