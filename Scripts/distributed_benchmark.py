@@ -57,10 +57,11 @@ wall = time.time() - start
 surface.UpdatePropertyInformation()
 isopoints = surface.GetProperty("NumberOfIsopoints").GetElement(0)
 ghost_fraction = surface.GetProperty("GhostFraction").GetElement(0)
-# This rank's seeds and flood (across the ranks) in the first run (0 from builds without it).
+# This rank's seeds and flood (across the ranks) in the first run: the filter reports it under
+# MPI only (-1 where it does not: one rank, or a build before it).
 first_run_fields = surface.GetClientSideObject().GetOutputDataObject(1).GetFieldData()
 initialisation = first_run_fields.GetArray("InitializationSeconds").GetValue(0) \
-    if first_run_fields.GetArray("InitializationSeconds") else 0.0
+    if first_run_fields.GetArray("InitializationSeconds") else -1.0
 
 
 def timed_rerun():
@@ -104,7 +105,8 @@ if rank == 0:
         "isovalue_change_slid": surface.GetProperty("SlidLastSurface").GetElement(0),
         "per_rank": [{"filter_seconds": p[0], "communication_seconds": p[1], "particles": int(p[2]),
                       "peak_MB_before_filter": p[3], "peak_MB": p[4],
-                      "initialisation_seconds": p[5]} for p in per_rank],
+                      "initialisation_seconds": p[5] if p[5] >= 0.0 else None}
+                     for p in per_rank],
     }
     print("%d rank(s) x %d thread(s): %.2f s, %d isopoints, ghosts %.1f%% of the particles"
           % (ranks, threads, wall, result["isopoints"], 100 * result["ghost_fraction"]))
@@ -115,9 +117,11 @@ if rank == 0:
           % (iso_change, 100 * iso_change / wall,
              "slid" if result["isovalue_change_slid"] else "recomputed"))
     for r, p in enumerate(result["per_rank"]):
+        flood = p["initialisation_seconds"]
         print("  rank %d: %d particles, filter %.2f s of which communication %.2f s and seeds "
-              "and flood %.2f s, peak memory %.0f MB (%.0f MB before the filter)"
+              "and flood %s, peak memory %.0f MB (%.0f MB before the filter)"
               % (r, p["particles"], p["filter_seconds"], p["communication_seconds"],
-                 p["initialisation_seconds"], p["peak_MB"], p["peak_MB_before_filter"]))
+                 "%.2f s" % flood if flood is not None else "not reported", p["peak_MB"],
+                 p["peak_MB_before_filter"]))
     with open(out, "w") as f:
         json.dump(result, f, indent=1)
