@@ -73,6 +73,32 @@ vtkSmartPointer<vtkDataArray> PerCorner(vtkDataArray* source, vtkIdType count, i
   }
   return copy;
 }
+
+// `source` (the isopoints' normals) per corner, holding `normals` (3 floats per corner).
+vtkSmartPointer<vtkDataArray> CornerNormalsArray(
+  vtkDataArray* source, const std::vector<float>& normals, vtkIdType count, int sides)
+{
+  vtkFloatArray* floats = vtkFloatArray::FastDownCast(source);
+  if (floats && floats->GetNumberOfComponents() == 3) // (as MakeSurfacePoints makes them)
+  {
+    vtkNew<vtkFloatArray> packed;
+    packed->SetName(source->GetName());
+    packed->SetNumberOfComponents(3);
+    packed->SetNumberOfTuples(count * sides);
+    std::copy(normals.begin(), normals.end(), packed->GetPointer(0));
+    return packed;
+  }
+  // Other layouts: the centre's tuples, their first three components then replaced.
+  vtkSmartPointer<vtkDataArray> copy = PerCorner(source, count, sides);
+  for (vtkIdType k = 0; k < count * sides; ++k)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      copy->SetComponent(k, d, normals[3 * k + d]);
+    }
+  }
+  return copy;
+}
 } // namespace
 
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
@@ -167,25 +193,12 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
     {
       continue;
     }
-    vtkSmartPointer<vtkDataArray> copy = PerCorner(source, count, sides);
-    if (field && copy->GetName() && std::string(copy->GetName()) == "Normals")
-    {
-      vtkFloatArray* packed = vtkFloatArray::FastDownCast(copy);
-      if (packed && packed->GetNumberOfComponents() == 3) // (as MakeSurfacePoints makes them)
-      {
-        std::copy(cornerNormals.begin(), cornerNormals.end(), packed->GetPointer(0));
-      }
-      else
-      {
-        for (vtkIdType k = 0; k < corners; ++k)
-        {
-          for (int d = 0; d < 3; ++d)
-          {
-            copy->SetComponent(k, d, cornerNormals[3 * k + d]);
-          }
-        }
-      }
-    }
+    // On the SPH field each corner carries the normal solved at it above, not its centre's.
+    const bool solvedNormals =
+      field && source->GetName() && std::string(source->GetName()) == "Normals";
+    vtkSmartPointer<vtkDataArray> copy = solvedNormals
+      ? CornerNormalsArray(source, cornerNormals, count, sides)
+      : PerCorner(source, count, sides);
     cornerData->AddArray(copy);
   }
   cornerData->SetActiveNormals("Normals");
