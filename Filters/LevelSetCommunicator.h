@@ -60,13 +60,6 @@ protected:
   std::vector<char> OwnedSamples; // storage order; empty: all
 };
 
-/// Rounds of the flood's exchange (below) after which a flood still crossing between ranks is
-/// given up: each round crosses at least one rank boundary.
-inline int FloodRoundsAcrossRanks(const Communicator& ranks)
-{
-  return 8 + 4 * ranks.Size;
-}
-
 /// One round of the flood's exchange between ranks. Where this rank's flood reached a ghost
 /// (`inside(i)`), the ghost's owner is seeded; where an owner's sample is inside, its ghost
 /// copies on other ranks are seeded; each only where f > f_iso (`dataOffsets`) and not yet

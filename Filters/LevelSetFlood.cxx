@@ -22,32 +22,36 @@ namespace lsi
 
 namespace
 {
-// Breadth-first flood from the seed samples through neighbours with f > f_iso.
-std::vector<char> Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-  const std::vector<char>& inSeed, FloodResult& result, SerialAbortCheck& stop)
+// Breadth-first flood through neighbours with f > f_iso from the seed samples not yet in
+// `flooded`.
+void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
+  SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  std::vector<char> inside(n, 0);
+  if (flooded.size() != n)
+  {
+    flooded.assign(n, 0);
+  }
   std::vector<std::uint32_t> queue = IndicesWhere<std::uint32_t>(
-    n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0; });
+    n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0 && !flooded[i]; });
   for (const std::uint32_t i : queue)
   {
-    inside[i] = 1;
+    flooded[i] = 1;
   }
   result.SeedSamples = queue.size();
   BreadthFirst(
     geometry, queue,
     [&](std::uint32_t j) {
-      if (inside[j] || !(dataOffsets[j] > 0.0))
+      if (flooded[j] || !(dataOffsets[j] > 0.0))
       {
         return Visit::Skip;
       }
-      inside[j] = 1;
+      flooded[j] = 1;
       return Visit::Enqueue;
     },
     &stop);
   result.InsideSamples = queue.size();
-  return inside;
 }
 
 // Outside pockets next to the inside with fewer than `bubbleSize` samples become inside.
@@ -313,12 +317,20 @@ private:
 };
 } // namespace
 
-std::vector<char> FloodedInside(const Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  FloodResult& result, const AbortCheck& aborted)
+void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
+  const AbortCheck& aborted)
 {
   SerialAbortCheck stop(aborted);
-  std::vector<char> inside = Flood(geometry, dataOffsets, inSeed, result, stop);
+  Flood(geometry, dataOffsets, inSeed, flooded, result, stop);
+  result.Aborted = stop.WasStopped();
+}
+
+std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<char>& flooded,
+  std::size_t bubbleSize, FloodResult& result, const AbortCheck& aborted)
+{
+  SerialAbortCheck stop(aborted);
+  std::vector<char> inside(flooded);
   FillBubbles(geometry, bubbleSize, inside, result, stop);
   result.Aborted = stop.WasStopped();
   return inside;

@@ -20,21 +20,30 @@ namespace lsi
 
 struct FloodResult
 {
-  std::size_t InsideSamples = 0; // samples reached by the flood
+  std::size_t InsideSamples = 0; // samples the flood reached (this call's)
   std::size_t FilledBubbles = 0; // samples of small outside pockets taken as inside
-  std::size_t SeedSamples = 0;   // seed samples with f > f_iso (the flood's sources)
+  std::size_t SeedSamples = 0;   // seed samples with f > f_iso it started from (this call's)
   bool Aborted = false;          // stopped on request; the inside is then incomplete
 };
 
-/// The flood: the samples connected to the seeds through neighbours with f > f_iso, where
-/// `dataOffsets` holds f - f_iso per sample and `inSeed` whether each sample lies in a seed.
-/// Outside pockets of fewer than `bubbleSize` samples enclosed by the inside are noise below
-/// the neighbourhood scale: they are filled (taken as inside).
-std::vector<char> FloodedInside(const Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const std::vector<char>& inSeed, std::size_t bubbleSize,
-  FloodResult& result, const AbortCheck& aborted);
+/// The flood: marks in `flooded` (one flag per sample) the samples connected to the seeds
+/// (`inSeed`) through neighbours with f > f_iso, where `dataOffsets` holds f - f_iso per
+/// sample. It goes on from what `flooded` already holds (empty: nothing yet): only the seeds
+/// not yet flooded start new searches, so a later round from more seeds (across a periodic
+/// box's faces, or from other MPI ranks) costs what it adds, and the reach is the same as one
+/// flood from all the seeds at once. result.SeedSamples counts the seeds with f > f_iso it
+/// started from, result.InsideSamples the samples it added (both only this call's).
+void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+  const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
+  const AbortCheck& aborted);
 
-/// The initial level set from a flood's `inside` (FloodedInside): phi becomes the signed
+/// The flood's inside from its reach (`flooded`, FloodFurther): outside pockets of fewer than
+/// `bubbleSize` samples enclosed by it are noise below the neighbourhood scale, and are filled
+/// (taken as inside). result.FilledBubbles counts their samples.
+std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<char>& flooded,
+  std::size_t bubbleSize, FloodResult& result, const AbortCheck& aborted);
+
+/// The initial level set from a flood's `inside` (FilledInside): phi becomes the signed
 /// distance (positive inside) to the crossings between inside and outside neighbours (placed
 /// where `dataOffsets` interpolates to zero), up to `halfWidth` and clamped to +-halfWidth
 /// beyond. Meanwhile a helper thread computes the MLS stencils of the band the evolution

@@ -13,18 +13,20 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
   double& seedSamples, const AbortCheck& aborted)
 {
-  const std::size_t bubbleSize = static_cast<std::size_t>(geometry.Stride);
-  auto reached = [&](std::size_t i) { return inside[i] != 0; };
-  // This rank's flood, followed through the box's faces (its seed count is the first round's).
+  // The flood's reach grows round by round (each round floods only from its new seeds); the
+  // pockets are filled once, in the whole reach.
+  std::vector<char> flooded;
+  auto reached = [&](std::size_t i) { return flooded[i] != 0; };
+  // This rank's flood, followed through the box's faces until no image adds a seed. Each round
+  // adds at least one seed, which is never added again: the rounds end.
   auto floodHere = [&]() {
     FloodResult flood;
-    inside = FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, flood, aborted);
-    for (int round = 0; !flood.Aborted && !original.empty() && round < FloodRoundsAcrossFaces &&
-         SeedImagesOfReached(original, originalCount, dataOffsets, reached, inSeed);
-         ++round)
+    FloodFurther(geometry, dataOffsets, inSeed, flooded, flood, aborted);
+    while (!flood.Aborted && !original.empty() &&
+      SeedImagesOfReached(original, originalCount, dataOffsets, reached, inSeed))
     {
       FloodResult again;
-      inside = FloodedInside(geometry, dataOffsets, inSeed, bubbleSize, again, aborted);
+      FloodFurther(geometry, dataOffsets, inSeed, flooded, again, aborted);
       flood.Aborted = again.Aborted;
     }
     return flood;
@@ -35,24 +37,19 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
     return FloodAcrossEnd::Aborted;
   }
   seedSamples = ranks.Sum(static_cast<double>(first.SeedSamples));
-  if (!ranks.Distributed())
-  {
-    return FloodAcrossEnd::Whole;
-  }
   // Under MPI: seeds where another rank's flood reached this rank's samples (and the other way),
-  // then every rank floods again; FloodRoundsAcrossRanks floods in all at most.
-  for (int floods = 1; SeedWhereRanksReached(ranks, dataOffsets, reached, inSeed) != 0.0; ++floods)
+  // then every rank floods on from them, until no rank adds a seed (as above, the rounds end).
+  while (ranks.Distributed() && SeedWhereRanksReached(ranks, dataOffsets, reached, inSeed) != 0.0)
   {
-    if (floods == FloodRoundsAcrossRanks(ranks))
-    {
-      return FloodAcrossEnd::StillCrossing;
-    }
     if (!ranks.All(!floodHere().Aborted))
     {
       return FloodAcrossEnd::Aborted;
     }
   }
-  return FloodAcrossEnd::Whole;
+  FloodResult filled;
+  inside =
+    FilledInside(geometry, flooded, static_cast<std::size_t>(geometry.Stride), filled, aborted);
+  return ranks.All(!filled.Aborted) ? FloodAcrossEnd::Whole : FloodAcrossEnd::Aborted;
 }
 
 } // namespace lsi

@@ -81,10 +81,6 @@ vtkSmartPointer<vtkPolyData> WithPeriodicImages(
 std::vector<vtkIdType> OriginalIds(
   const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf);
 
-/// The flood runs again at most this many times to follow a component through the faces (one
-/// that wraps through several faces takes a few rounds).
-constexpr int FloodRoundsAcrossFaces = 8;
-
 /// A particle and its images are one particle: where the flood reached one of them
 /// (`reached(i)` for sample i), its other samples with f > f_iso (`dataOffsets`) not reached yet
 /// become seeds (`inSeed`), for the flood to run again. `original`: OriginalIds. Returns whether

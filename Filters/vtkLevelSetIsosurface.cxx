@@ -946,12 +946,6 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     {
       return false;
     }
-    if (end == lsi::FloodAcrossEnd::StillCrossing && this->ReportsForAll())
-    {
-      vtkWarningMacro("The flood was still crossing between ranks after "
-        << lsi::FloodRoundsAcrossRanks(ranks)
-        << " rounds: the seeded component may be incomplete.");
-    }
     if (seedSamples == 0.0 && this->ReportsForAll())
     {
       vtkErrorMacro("No sample inside the seed sphere(s) has a value above IsoValue "

@@ -257,7 +257,7 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
     this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples);
   if (end != lsi::FloodAcrossEnd::Whole)
   {
-    return false; // aborted, or still crossing: the method runs (and warns)
+    return false; // aborted
   }
   if (ranks.Distributed())
   {
