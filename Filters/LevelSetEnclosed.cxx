@@ -44,21 +44,6 @@ vtkIdType Root(std::vector<vtkIdType>& parent, vtkIdType i)
   return i;
 }
 
-double Find(std::map<double, double>& parent, double key)
-{
-  auto it = parent.find(key);
-  if (it == parent.end())
-  {
-    parent[key] = key;
-    return key;
-  }
-  while (parent[key] != key)
-  {
-    key = parent[key] = parent[parent[key]];
-  }
-  return key;
-}
-
 // In a periodic box a component's centre of mass is the weighted mean of its particles' images
 // nearest to its circular mean (CircularMean): the same whichever particle, thread or rank
 // summed first, and for a component narrower than half the box its centre of mass. It is then
@@ -394,7 +379,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     ranks.GatherAll(links);
     for (std::size_t k = 0; k < links.size(); k += 2)
     {
-      const double a = Find(joined, links[k]), b = Find(joined, links[k + 1]);
+      const double a = FindJoined(joined, links[k]), b = FindJoined(joined, links[k + 1]);
       if (a != b)
       {
         joined[std::max(a, b)] = std::min(a, b);
@@ -408,7 +393,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     if (sums[k].HasReference)
     {
       const double key = rankKey + rootOfSums[k];
-      Pack(ranks.Distributed() ? Find(joined, key) : key, sums[k], packed);
+      Pack(ranks.Distributed() ? FindJoined(joined, key) : key, sums[k], packed);
     }
   }
   ranks.GatherAll(packed);
@@ -423,7 +408,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     std::unordered_map<vtkIdType, double> keyOfRoot;
     for (const vtkIdType root : rootOfSums)
     {
-      keyOfRoot[root] = ranks.Distributed() ? Find(joined, rankKey + root) : root;
+      keyOfRoot[root] = ranks.Distributed() ? FindJoined(joined, rankKey + root) : root;
     }
     CentresInPeriodicBox(in, n, sampleOf, touches, distances, parent, keyOfRoot, byKey);
   }

@@ -82,8 +82,8 @@ struct EnclosedInputs
   // Under MPI: components joined across ranks through the ghosts, sums over every rank's
   // particles (each table is then the whole run's).
   const Communicator* Ranks = &SingleProcess();
-  // One process, no periodic images, no merged particles (else both are ignored): find the
-  // deep inside and keep it here, or sum around the one kept by the last run.
+  // No periodic images, no merged particles (else both are ignored): find the deep inside and
+  // keep it here, or sum around the one kept by the last run (LevelSetEnclosedDeepInside.h).
   EnclosedDeepInside* KeepDeepInside = nullptr;
   const EnclosedDeepInside* DeepInside = nullptr;
 };

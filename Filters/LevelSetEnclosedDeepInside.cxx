@@ -14,6 +14,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 
 namespace lsi
@@ -21,6 +22,25 @@ namespace lsi
 namespace
 {
 using namespace enclosed;
+
+// Whether sample i is one of this rank's particles (under MPI the others are ghosts: they join
+// components but are summed by their owners).
+bool OwnParticle(const EnclosedInputs& in, std::size_t i)
+{
+  return in.Ranks->Owns(i) && static_cast<vtkIdType>(in.Geometry->Order[i]) < in.ParticleCount;
+}
+
+// samples[k] for each k of `at`.
+std::vector<std::uint32_t> SamplesAt(
+  const std::vector<std::uint32_t>& samples, const std::vector<std::uint32_t>& at)
+{
+  std::vector<std::uint32_t> out(at.size());
+  for (std::size_t k = 0; k < at.size(); ++k)
+  {
+    out[k] = samples[at[k]];
+  }
+  return out;
+}
 
 // Deep inside: phi at the band's half width (where the slides leave it) and beyond two shell
 // widths (so that its signed distance is phi, and its step 1).
@@ -67,13 +87,81 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, int components,
   }
   return sums;
 }
+
+// Under MPI: the components of every rank (this rank's `sums`, one per local component;
+// componentOf(i): sample i's local component, or -1) joined where they meet at a ghost (each
+// ghost links its component here to its owner's there), their parts added up, on every rank.
+// Each component is keyed by the lowest of its parts' keys (rank, local component).
+template <typename ComponentOf>
+std::map<double, Sums> JoinedAcrossRanks(const EnclosedInputs& in, int components,
+  const std::vector<Sums>& sums, ComponentOf&& componentOf)
+{
+  const Communicator& ranks = *in.Ranks;
+  const std::size_t n = in.Geometry->NumberOfSamples;
+  const double rankKey = ranks.Rank * 4294967296.0;
+  std::vector<double> ownerKey(n);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const std::int64_t c = componentOf(static_cast<std::size_t>(i));
+      ownerKey[i] =
+        ranks.Owns(static_cast<std::size_t>(i)) && c >= 0 ? rankKey + static_cast<double>(c) : -1.0;
+    }
+  });
+  ranks.RefreshGhosts(ownerKey);
+  std::vector<double> links;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::int64_t c = ranks.Owns(i) ? -1 : componentOf(i);
+    if (c >= 0 && ownerKey[i] >= 0.0)
+    {
+      links.insert(links.end(), { rankKey + static_cast<double>(c), ownerKey[i] });
+    }
+  }
+  ranks.GatherAll(links);
+  std::map<double, double> joined;
+  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
+  {
+    const double a = FindJoined(joined, links[k]), b = FindJoined(joined, links[k + 1]);
+    if (a != b)
+    {
+      joined[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  std::vector<double> packed;
+  for (std::size_t c = 0; c < sums.size(); ++c)
+  {
+    if (sums[c].HasReference)
+    {
+      Pack(FindJoined(joined, rankKey + static_cast<double>(c)), sums[c], packed);
+    }
+  }
+  ranks.GatherAll(packed);
+  std::map<double, Sums> byKey;
+  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
+  for (std::size_t k = 0; k + record <= packed.size(); k += record)
+  {
+    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)));
+  }
+  return byKey;
+}
 } // namespace
 
 bool CanUseDeepInside(const EnclosedInputs& in)
 {
-  return !in.Box.Enabled && !in.Ranks->Distributed() &&
-    static_cast<vtkIdType>(in.Geometry->NumberOfSamples) == in.ParticleCount &&
-    in.FarOutside > -HUGE_VAL;
+  if (in.Box.Enabled || !(in.FarOutside > -HUGE_VAL))
+  {
+    return false;
+  }
+  if (!in.Ranks->Distributed())
+  {
+    return static_cast<vtkIdType>(in.Geometry->NumberOfSamples) == in.ParticleCount;
+  }
+  // Under MPI: every particle of this rank is a sample of its own (none merged), and so on every
+  // rank.
+  const std::vector<std::uint32_t> owned = IndicesWhere<std::uint32_t>(
+    in.Geometry->NumberOfSamples, [&](std::size_t i) { return OwnParticle(in, i); });
+  return in.Ranks->All(static_cast<vtkIdType>(owned.size()) == in.ParticleCount);
 }
 
 void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
@@ -125,7 +213,10 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     }
     const std::uint32_t group = groupOfRoot[root];
     deep.Group[inside[k]] = group;
-    lowest[group] = std::min(lowest[group], static_cast<double>(geometry.Order[inside[k]]));
+    if (OwnParticle(in, inside[k])) // (a group of ghosts alone keeps HUGE_VAL: nothing to sum)
+    {
+      lowest[group] = std::min(lowest[group], static_cast<double>(geometry.Order[inside[k]]));
+    }
   }
   // The rim: the deep samples whose lists reach out of the deep inside (the band's samples
   // join the groups through these, besides through their own lists).
@@ -171,21 +262,34 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType p = begin; p < end; ++p)
       {
-        ReadParticle(in, arrays, geometry.Order[deep.Near[p]], &deep.NearRecords[record * p]);
+        if (OwnParticle(in, deep.Near[p])) // (a ghost's record is never read)
+        {
+          ReadParticle(in, arrays, geometry.Order[deep.Near[p]], &deep.NearRecords[record * p]);
+        }
       }
     });
   const std::vector<double>& phi = *in.Phi;
+  // (Under MPI only this rank's particles are summed.)
+  const std::vector<std::uint32_t> summed = in.Ranks->Distributed()
+    ? IndicesWhere<std::uint32_t>(
+        inside.size(), [&](std::size_t k) { return OwnParticle(in, inside[k]); })
+    : std::vector<std::uint32_t>();
+  const bool all = !in.Ranks->Distributed();
+  auto deepSample = [&](std::size_t k) { return all ? k : summed[k]; };
   const std::vector<Sums> sums = SumsByGroup(
-    in, components, inside, groups, [&](std::size_t k) { return deep.Group[inside[k]]; },
+    in, components, all ? inside : SamplesAt(inside, summed), groups,
+    [&](std::size_t k) { return deep.Group[inside[deepSample(k)]]; },
     [&](std::size_t i) { return phi[i]; },
     [&](std::size_t k, double* scratch) {
-      ReadParticle(in, arrays, geometry.Order[inside[k]], scratch);
+      ReadParticle(in, arrays, geometry.Order[inside[deepSample(k)]], scratch);
       return scratch;
     });
   deep.Sums.clear();
+  Sums nothing; // (under MPI, a group of ghosts alone: packed as wide as the others)
+  nothing.Means.assign(static_cast<std::size_t>(components), 0.0);
   for (std::size_t g = 0; g < sums.size(); ++g)
   {
-    Pack(lowest[g], sums[g], deep.Sums);
+    Pack(lowest[g], sums[g].Means.size() == nothing.Means.size() ? sums[g] : nothing, deep.Sums);
   }
   deep.Components = components;
 }
@@ -267,23 +371,47 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
       key.push_back(HUGE_VAL);
     }
     const std::uint32_t c = componentOf[x] = componentOfRoot[root];
-    const double lowest =
-      x < groups ? deep.Sums[record * x] : static_cast<double>(geometry.Order[band[x - groups]]);
+    const double lowest = x < groups
+      ? deep.Sums[record * x]
+      : (OwnParticle(in, band[x - groups]) ? static_cast<double>(geometry.Order[band[x - groups]])
+                                           : HUGE_VAL);
     key[c] = std::min(key[c], lowest);
   }
+  // (Under MPI only this rank's particles are summed: the ghosts' owners sum them.)
+  const std::vector<std::uint32_t> summed = in.Ranks->Distributed()
+    ? IndicesWhere<std::uint32_t>(
+        band.size(), [&](std::size_t b) { return OwnParticle(in, band[b]); })
+    : std::vector<std::uint32_t>();
+  const bool all = !in.Ranks->Distributed();
+  auto bandPlace = [&](std::size_t k) { return all ? k : summed[k]; };
   const SurfaceDistance distance(in, 0.0);
   std::vector<Sums> sums = SumsByGroup(
-    in, components, band, key.size(), [&](std::size_t b) { return componentOf[groups + b]; },
-    distance,
-    [&](std::size_t b, double*) { return &deep.NearRecords[RecordSize(components) * inBand[b]]; });
+    in, components, all ? band : SamplesAt(band, summed), key.size(),
+    [&](std::size_t k) { return componentOf[groups + bandPlace(k)]; }, distance,
+    [&](std::size_t k, double*) {
+      return &deep.NearRecords[RecordSize(components) * inBand[bandPlace(k)]];
+    });
   for (std::size_t g = 0; g < groups; ++g)
   {
-    sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components));
+    if (deep.Sums[record * g] < HUGE_VAL) // (a group of ghosts alone has nothing to add)
+    {
+      sums[componentOf[g]].Add(Unpack(&deep.Sums[record * g], components));
+    }
   }
   std::map<double, Sums> byKey;
-  for (std::size_t c = 0; c < sums.size(); ++c)
+  if (!in.Ranks->Distributed())
   {
-    byKey[key[c]] = std::move(sums[c]);
+    for (std::size_t c = 0; c < sums.size(); ++c)
+    {
+      byKey[key[c]] = std::move(sums[c]);
+    }
+  }
+  else
+  {
+    byKey = JoinedAcrossRanks(in, components, sums, [&](std::size_t i) {
+      const std::uint32_t x = node(i);
+      return x == EnclosedDeepInside::None ? -1 : static_cast<std::int64_t>(componentOf[x]);
+    });
   }
   return TableOfComponents(byKey, arrays, components, in.Mass != nullptr);
 }

@@ -11,7 +11,9 @@
 namespace lsi
 {
 
-/// Whether the route applies: one process, no periodic images, no merged particles, a band.
+/// Whether the route applies: no periodic images, no merged particles, a band. Under MPI too:
+/// each rank finds the groups of its samples and ghosts and sums its own particles; the
+/// components are joined across the ranks where they meet at a ghost, as the full route's are.
 bool CanUseDeepInside(const EnclosedInputs& in);
 
 /// Finds the deep inside of `in` (its groups, rim and sums) into `deep`.

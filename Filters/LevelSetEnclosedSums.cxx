@@ -72,6 +72,21 @@ void Pack(double key, const Sums& c, std::vector<double>& out)
   out.insert(out.end(), c.Means.begin(), c.Means.end());
 }
 
+double FindJoined(std::map<double, double>& parent, double key)
+{
+  auto it = parent.find(key);
+  if (it == parent.end())
+  {
+    parent[key] = key;
+    return key;
+  }
+  while (parent[key] != key)
+  {
+    key = parent[key] = parent[parent[key]];
+  }
+  return key;
+}
+
 Sums Unpack(const double* in, std::size_t means)
 {
   Sums c;

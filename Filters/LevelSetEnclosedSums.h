@@ -168,6 +168,9 @@ constexpr int FixedFields = 19; // a packed Sums: key, then the numbers of Sums 
 
 /// Appends `c` under `key` to `out` (FixedFields numbers, then the means).
 void Pack(double key, const Sums& c, std::vector<double>& out);
+/// The key a component of several ranks' parts goes by: the lowest key joined to `key` in
+/// `parent` (a union-find over keys, each linked under a lower one; a key not met is its own).
+double FindJoined(std::map<double, double>& parent, double key);
 /// The Sums packed at `in`, with `means` means.
 Sums Unpack(const double* in, std::size_t means);
 

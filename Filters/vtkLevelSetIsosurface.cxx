@@ -408,7 +408,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
   last.DeepInside = lsi::EnclosedDeepInside();
-  const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck && !ranks.Distributed();
+  const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, nearby,
     surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
     nullptr);
@@ -543,7 +543,9 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   lsi::EnclosedDeepInside single;
   inside.KeepDeepInside = kept ? nullptr : (keep ? keep : &single);
   inside.DeepInside = kept;
-  if (!lsi::CanUseDeepInside(inside)) // (else each sample is its own particle: Order's ids)
+  // (Else, in one process, each sample is its own particle: Order's ids. Under MPI the ids tell
+  // the ghosts, for the full route if the deep inside kept does not serve.)
+  if (ranks.Distributed() || !lsi::CanUseDeepInside(inside))
   {
     inside.OriginalIds =
       lsi::OriginalIds(geometry, this->Internal->OriginalCount, this->Internal->ImageOf);
