@@ -376,15 +376,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
         links.insert(links.end(), { rankKey + Root(parent, slot[i]), ownerKey[i] });
       }
     }
-    ranks.GatherAll(links);
-    for (std::size_t k = 0; k < links.size(); k += 2)
-    {
-      const double a = FindJoined(joined, links[k]), b = FindJoined(joined, links[k + 1]);
-      if (a != b)
-      {
-        joined[std::max(a, b)] = std::min(a, b);
-      }
-    }
+    joined = JoinedLinks(ranks, links);
   }
   // Every rank's part of every component, gathered and added up by component.
   std::vector<double> packed;

@@ -30,17 +30,38 @@ bool OwnParticle(const EnclosedInputs& in, std::size_t i)
   return in.Ranks->Owns(i) && static_cast<vtkIdType>(in.Geometry->Order[i]) < in.ParticleCount;
 }
 
-// samples[k] for each k of `at`.
-std::vector<std::uint32_t> SamplesAt(
-  const std::vector<std::uint32_t>& samples, const std::vector<std::uint32_t>& at)
+// The places k of a list of samples that are summed here: all in one process; under MPI this
+// rank's particles only (the ghosts' owners sum them).
+struct SummedPlaces
 {
-  std::vector<std::uint32_t> out(at.size());
-  for (std::size_t k = 0; k < at.size(); ++k)
+  bool All = true;
+  std::vector<std::uint32_t> Places; // under MPI
+  SummedPlaces(const EnclosedInputs& in, const std::vector<std::uint32_t>& samples)
+    : All(!in.Ranks->Distributed())
   {
-    out[k] = samples[at[k]];
+    if (!this->All)
+    {
+      this->Places = IndicesWhere<std::uint32_t>(
+        samples.size(), [&](std::size_t k) { return OwnParticle(in, samples[k]); });
+    }
   }
-  return out;
-}
+  /// The place in the list of the k-th summed sample.
+  std::size_t operator()(std::size_t k) const { return this->All ? k : this->Places[k]; }
+  /// The summed samples themselves.
+  std::vector<std::uint32_t> Of(const std::vector<std::uint32_t>& samples) const
+  {
+    if (this->All)
+    {
+      return samples;
+    }
+    std::vector<std::uint32_t> out(this->Places.size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+    {
+      out[k] = samples[this->Places[k]];
+    }
+    return out;
+  }
+};
 
 // Deep inside: phi at the band's half width (where the slides leave it) and beyond two shell
 // widths (so that its signed distance is phi, and its step 1).
@@ -118,16 +139,7 @@ std::map<double, Sums> JoinedAcrossRanks(const EnclosedInputs& in, int component
       links.insert(links.end(), { rankKey + static_cast<double>(c), ownerKey[i] });
     }
   }
-  ranks.GatherAll(links);
-  std::map<double, double> joined;
-  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
-  {
-    const double a = FindJoined(joined, links[k]), b = FindJoined(joined, links[k + 1]);
-    if (a != b)
-    {
-      joined[std::max(a, b)] = std::min(a, b);
-    }
-  }
+  std::map<double, double> joined = JoinedLinks(ranks, links);
   std::vector<double> packed;
   for (std::size_t c = 0; c < sums.size(); ++c)
   {
@@ -269,19 +281,13 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
       }
     });
   const std::vector<double>& phi = *in.Phi;
-  // (Under MPI only this rank's particles are summed.)
-  const std::vector<std::uint32_t> summed = in.Ranks->Distributed()
-    ? IndicesWhere<std::uint32_t>(
-        inside.size(), [&](std::size_t k) { return OwnParticle(in, inside[k]); })
-    : std::vector<std::uint32_t>();
-  const bool all = !in.Ranks->Distributed();
-  auto deepSample = [&](std::size_t k) { return all ? k : summed[k]; };
+  const SummedPlaces summed(in, inside);
   const std::vector<Sums> sums = SumsByGroup(
-    in, components, all ? inside : SamplesAt(inside, summed), groups,
-    [&](std::size_t k) { return deep.Group[inside[deepSample(k)]]; },
+    in, components, summed.Of(inside), groups,
+    [&](std::size_t k) { return deep.Group[inside[summed(k)]]; },
     [&](std::size_t i) { return phi[i]; },
     [&](std::size_t k, double* scratch) {
-      ReadParticle(in, arrays, geometry.Order[inside[deepSample(k)]], scratch);
+      ReadParticle(in, arrays, geometry.Order[inside[summed(k)]], scratch);
       return scratch;
     });
   deep.Sums.clear();
@@ -377,19 +383,13 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
                                            : HUGE_VAL);
     key[c] = std::min(key[c], lowest);
   }
-  // (Under MPI only this rank's particles are summed: the ghosts' owners sum them.)
-  const std::vector<std::uint32_t> summed = in.Ranks->Distributed()
-    ? IndicesWhere<std::uint32_t>(
-        band.size(), [&](std::size_t b) { return OwnParticle(in, band[b]); })
-    : std::vector<std::uint32_t>();
-  const bool all = !in.Ranks->Distributed();
-  auto bandPlace = [&](std::size_t k) { return all ? k : summed[k]; };
+  const SummedPlaces summed(in, band);
   const SurfaceDistance distance(in, 0.0);
   std::vector<Sums> sums = SumsByGroup(
-    in, components, all ? band : SamplesAt(band, summed), key.size(),
-    [&](std::size_t k) { return componentOf[groups + bandPlace(k)]; }, distance,
+    in, components, summed.Of(band), key.size(),
+    [&](std::size_t k) { return componentOf[groups + summed(k)]; }, distance,
     [&](std::size_t k, double*) {
-      return &deep.NearRecords[RecordSize(components) * inBand[bandPlace(k)]];
+      return &deep.NearRecords[RecordSize(components) * inBand[summed(k)]];
     });
   for (std::size_t g = 0; g < groups; ++g)
   {

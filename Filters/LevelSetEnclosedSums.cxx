@@ -87,6 +87,21 @@ double FindJoined(std::map<double, double>& parent, double key)
   return key;
 }
 
+std::map<double, double> JoinedLinks(const Communicator& ranks, std::vector<double>& links)
+{
+  ranks.GatherAll(links);
+  std::map<double, double> joined;
+  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
+  {
+    const double a = FindJoined(joined, links[k]), b = FindJoined(joined, links[k + 1]);
+    if (a != b)
+    {
+      joined[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  return joined;
+}
+
 Sums Unpack(const double* in, std::size_t means)
 {
   Sums c;

@@ -171,6 +171,10 @@ void Pack(double key, const Sums& c, std::vector<double>& out);
 /// The key a component of several ranks' parts goes by: the lowest key joined to `key` in
 /// `parent` (a union-find over keys, each linked under a lower one; a key not met is its own).
 double FindJoined(std::map<double, double>& parent, double key);
+/// Under MPI: this rank's links between components (pairs of keys: a component here, one it
+/// meets at a ghost on another rank), gathered from every rank into `links` and joined, for
+/// FindJoined.
+std::map<double, double> JoinedLinks(const Communicator& ranks, std::vector<double>& links);
 /// The Sums packed at `in`, with `means` means.
 Sums Unpack(const double* in, std::size_t means);
 

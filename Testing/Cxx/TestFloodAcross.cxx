@@ -18,8 +18,8 @@
 #include "LevelSetPeriodicImages.h"
 #include "TestCheck.h"
 
-#include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 
 #include <cmath>
 #include <iostream>
@@ -28,33 +28,50 @@
 
 namespace
 {
+// An nx x ny x nz lattice of spacing 1 (x from 0.5, y from yStart, z from 0), each point moved
+// by up to 0.2 on each axis.
+std::vector<double> JitteredLattice(int nx, int ny, int nz, double yStart, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  std::vector<double> xyz;
+  for (int i = 0; i < nx; ++i)
+  {
+    for (int j = 0; j < ny; ++j)
+    {
+      for (int k = 0; k < nz; ++k)
+      {
+        // (In turn: the order of a braced list's evaluations is fixed.)
+        xyz.insert(
+          xyz.end(), { i + 0.5 + jitter(random), j + yStart + jitter(random), k + jitter(random) });
+      }
+    }
+  }
+  return xyz;
+}
+
+// The points at `xyz` (3 doubles each), in double precision.
+vtkSmartPointer<vtkPoints> PointsOf(const std::vector<double>& xyz)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (std::size_t p = 0; p < xyz.size() / 3; ++p)
+  {
+    points->InsertNextPoint(&xyz[3 * p]);
+  }
+  return points;
+}
+
 void FloodAcrossOneFace()
 {
   constexpr int Nx = 40, Ny = 8, Nz = 8;
   constexpr double Length = Nx, Margin = 4.0;
   const double pi = std::acos(-1.0);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  std::vector<double> xyz;
-  for (int i = 0; i < Nx; ++i)
-  {
-    for (int j = 0; j < Ny; ++j)
-    {
-      for (int k = 0; k < Nz; ++k)
-      {
-        xyz.insert(xyz.end(), { i + 0.5 + jitter(random), j + jitter(random), k + jitter(random) });
-      }
-    }
-  }
+  const std::vector<double> xyz = JitteredLattice(Nx, Ny, Nz, 0.0, 7);
   const vtkIdType particles = static_cast<vtkIdType>(xyz.size() / 3);
   // The images, after the particles: imageOf[k] is the particle that input id particles + k is.
   std::vector<vtkIdType> imageOf;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (vtkIdType p = 0; p < particles; ++p)
-  {
-    points->InsertNextPoint(&xyz[3 * p]);
-  }
+  const vtkSmartPointer<vtkPoints> points = PointsOf(xyz); // the particles, then their images
   for (vtkIdType p = 0; p < particles; ++p)
   {
     const double x = xyz[3 * p];
@@ -123,28 +140,10 @@ void FloodAlongAWoundStrip()
   const double pi = std::acos(-1.0);
   const double size[2] = { Nx, Ny };
   auto f = [&](const double* x) { return std::cos(2.0 * pi * (Turns * x[1] / Ny - x[0] / Nx)); };
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  std::vector<double> xyz;
-  for (int i = 0; i < Nx; ++i)
-  {
-    for (int j = 0; j < Ny; ++j)
-    {
-      for (int k = 0; k < Nz; ++k)
-      {
-        xyz.insert(
-          xyz.end(), { i + 0.5 + jitter(random), j + 0.5 + jitter(random), k + jitter(random) });
-      }
-    }
-  }
+  const std::vector<double> xyz = JitteredLattice(Nx, Ny, Nz, 0.5, 11);
   const vtkIdType particles = static_cast<vtkIdType>(xyz.size() / 3);
   std::vector<vtkIdType> imageOf;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (vtkIdType p = 0; p < particles; ++p)
-  {
-    points->InsertNextPoint(&xyz[3 * p]);
-  }
+  const vtkSmartPointer<vtkPoints> points = PointsOf(xyz); // the particles, then their images
   // Images across the x and y faces and their edges, within Margin of the box.
   for (int sx = -1; sx <= 1; ++sx)
   {
