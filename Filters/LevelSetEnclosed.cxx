@@ -357,44 +357,22 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   }
 
   // Each component's key: its root here (the rank in the high bits under MPI). Under MPI the
-  // components that meet at a ghost are one: each ghost links its root here to its owner's.
+  // components that meet at a ghost are one: each touching ghost links its root here to its
+  // owner's. (Serial loops: Root shortens the paths it walks.)
   const double rankKey = ranks.Distributed() ? ranks.Rank * 4294967296.0 : 0.0;
+  auto owned = [&](std::size_t i) { return in.OriginalIds[i] >= 0; };
   std::map<double, double> joined;
   if (ranks.Distributed())
   {
-    std::vector<double> ownerKey(geometry.NumberOfSamples, -1.0);
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      ownerKey[i] = in.OriginalIds[i] >= 0 ? rankKey + Root(parent, slot[i]) : -1.0;
-    }
-    ranks.RefreshGhosts(ownerKey);
-    std::vector<double> links;
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      if (in.OriginalIds[i] < 0 && touches(i) && ownerKey[i] >= 0.0)
-      {
-        links.insert(links.end(), { rankKey + Root(parent, slot[i]), ownerKey[i] });
-      }
-    }
-    joined = JoinedLinks(ranks, links);
+    joined = JoinedAtGhosts(ranks, geometry.NumberOfSamples, owned, [&](std::size_t i) {
+      return owned(i) || touches(i) ? rankKey + Root(parent, slot[i]) : -1.0;
+    });
   }
   // Every rank's part of every component, gathered and added up by component.
-  std::vector<double> packed;
-  for (std::size_t k = 0; k < sums.size(); ++k)
-  {
-    if (sums[k].HasReference)
-    {
-      const double key = rankKey + rootOfSums[k];
-      Pack(ranks.Distributed() ? FindJoined(joined, key) : key, sums[k], packed);
-    }
-  }
-  ranks.GatherAll(packed);
-  std::map<double, Sums> byKey;
-  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
-  for (std::size_t k = 0; k + record <= packed.size(); k += record)
-  {
-    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)));
-  }
+  std::map<double, Sums> byKey = AddedOverRanks(ranks, sums, components, [&](std::size_t k) {
+    const double key = rankKey + rootOfSums[k];
+    return ranks.Distributed() ? FindJoined(joined, key) : key;
+  });
   if (in.Box.Enabled)
   {
     std::unordered_map<vtkIdType, double> keyOfRoot;

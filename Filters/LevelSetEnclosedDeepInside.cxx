@@ -109,54 +109,6 @@ std::vector<Sums> SumsByGroup(const EnclosedInputs& in, int components,
   return sums;
 }
 
-// Under MPI: the components of every rank (this rank's `sums`, one per local component;
-// componentOf(i): sample i's local component, or -1) joined where they meet at a ghost (each
-// ghost links its component here to its owner's there), their parts added up, on every rank.
-// Each component is keyed by the lowest of its parts' keys (rank, local component).
-template <typename ComponentOf>
-std::map<double, Sums> JoinedAcrossRanks(const EnclosedInputs& in, int components,
-  const std::vector<Sums>& sums, ComponentOf&& componentOf)
-{
-  const Communicator& ranks = *in.Ranks;
-  const std::size_t n = in.Geometry->NumberOfSamples;
-  const double rankKey = ranks.Rank * 4294967296.0;
-  std::vector<double> ownerKey(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const std::int64_t c = componentOf(static_cast<std::size_t>(i));
-      ownerKey[i] =
-        ranks.Owns(static_cast<std::size_t>(i)) && c >= 0 ? rankKey + static_cast<double>(c) : -1.0;
-    }
-  });
-  ranks.RefreshGhosts(ownerKey);
-  std::vector<double> links;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const std::int64_t c = ranks.Owns(i) ? -1 : componentOf(i);
-    if (c >= 0 && ownerKey[i] >= 0.0)
-    {
-      links.insert(links.end(), { rankKey + static_cast<double>(c), ownerKey[i] });
-    }
-  }
-  std::map<double, double> joined = JoinedLinks(ranks, links);
-  std::vector<double> packed;
-  for (std::size_t c = 0; c < sums.size(); ++c)
-  {
-    if (sums[c].HasReference)
-    {
-      Pack(FindJoined(joined, rankKey + static_cast<double>(c)), sums[c], packed);
-    }
-  }
-  ranks.GatherAll(packed);
-  std::map<double, Sums> byKey;
-  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
-  for (std::size_t k = 0; k + record <= packed.size(); k += record)
-  {
-    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)));
-  }
-  return byKey;
-}
 } // namespace
 
 bool CanUseDeepInside(const EnclosedInputs& in)
@@ -408,10 +360,17 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   }
   else
   {
-    byKey = JoinedAcrossRanks(in, components, sums, [&](std::size_t i) {
-      const std::uint32_t x = node(i);
-      return x == EnclosedDeepInside::None ? -1 : static_cast<std::int64_t>(componentOf[x]);
-    });
+    // Joined across the ranks where they meet at a ghost, keyed by (rank, component here).
+    const Communicator& ranks = *in.Ranks;
+    const double rankKey = ranks.Rank * 4294967296.0;
+    std::map<double, double> joined = JoinedAtGhosts(
+      ranks, n, [&](std::size_t i) { return ranks.Owns(i); },
+      [&](std::size_t i) {
+        const std::uint32_t x = node(i);
+        return x == EnclosedDeepInside::None ? -1.0 : rankKey + componentOf[x];
+      });
+    byKey = AddedOverRanks(ranks, sums, components,
+      [&](std::size_t c) { return FindJoined(joined, rankKey + static_cast<double>(c)); });
   }
   return TableOfComponents(byKey, arrays, components, in.Mass != nullptr);
 }

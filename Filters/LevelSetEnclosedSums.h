@@ -175,8 +175,62 @@ double FindJoined(std::map<double, double>& parent, double key);
 /// meets at a ghost on another rank), gathered from every rank into `links` and joined, for
 /// FindJoined.
 std::map<double, double> JoinedLinks(const Communicator& ranks, std::vector<double>& links);
+
+/// Under MPI: the components of every rank joined where they meet at a ghost, for FindJoined.
+/// keyOf(i) is sample i's component key here (the rank in its high bits), or -1 where it joins
+/// none; owned(i) whether sample i is this rank's (else a ghost of another's). Each ghost with
+/// a key links it to its owner's key, where the owner has one.
+template <typename Owned, typename KeyOf>
+std::map<double, double> JoinedAtGhosts(
+  const Communicator& ranks, std::size_t samples, Owned&& owned, KeyOf&& keyOf)
+{
+  std::vector<double> ownerKey(samples, -1.0);
+  for (std::size_t i = 0; i < samples; ++i)
+  {
+    ownerKey[i] = owned(i) ? keyOf(i) : -1.0;
+  }
+  ranks.RefreshGhosts(ownerKey);
+  std::vector<double> links;
+  for (std::size_t i = 0; i < samples; ++i)
+  {
+    if (!owned(i) && ownerKey[i] >= 0.0)
+    {
+      const double key = keyOf(i);
+      if (key >= 0.0)
+      {
+        links.insert(links.end(), { key, ownerKey[i] });
+      }
+    }
+  }
+  return JoinedLinks(ranks, links);
+}
+
 /// The Sums packed at `in`, with `means` means.
 Sums Unpack(const double* in, std::size_t means);
+
+/// Every rank's parts of the components (`parts`, part k under the key keyOfPart(k); parts
+/// without a particle left out), gathered on every rank and added up by key.
+template <typename KeyOfPart>
+std::map<double, Sums> AddedOverRanks(
+  const Communicator& ranks, const std::vector<Sums>& parts, int components, KeyOfPart&& keyOfPart)
+{
+  std::vector<double> packed;
+  for (std::size_t k = 0; k < parts.size(); ++k)
+  {
+    if (parts[k].HasReference)
+    {
+      Pack(keyOfPart(k), parts[k], packed);
+    }
+  }
+  ranks.GatherAll(packed);
+  std::map<double, Sums> byKey;
+  const std::size_t record = FixedFields + static_cast<std::size_t>(components);
+  for (std::size_t k = 0; k + record <= packed.size(); k += record)
+  {
+    byKey[packed[k]].Add(Unpack(&packed[k], static_cast<std::size_t>(components)));
+  }
+  return byKey;
+}
 
 /// The arrays whose means the table gives: every named numeric point array with a value per
 /// particle (all their components, `components` in all).

@@ -30,9 +30,10 @@ struct FloodResult
 /// (`inSeed`) through neighbours with f > f_iso, where `dataOffsets` holds f - f_iso per
 /// sample. It goes on from what `flooded` already holds (empty: nothing yet): only the seeds
 /// not yet flooded start new searches, so a later round from more seeds (across a periodic
-/// box's faces, or from other MPI ranks) costs what it adds, and the reach is the same as one
-/// flood from all the seeds at once. result.SeedSamples counts the seeds with f > f_iso it
-/// started from, result.InsideSamples the samples it added (both only this call's).
+/// box's faces, or from other MPI ranks) costs a pass over the seed flags and what it adds, and
+/// the reach is the same as one flood from all the seeds at once. result.SeedSamples counts the
+/// seeds with f > f_iso it started from, result.InsideSamples the samples it added (both only this
+/// call's).
 void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
   const AbortCheck& aborted);
