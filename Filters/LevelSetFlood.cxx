@@ -51,13 +51,12 @@ void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets
       return Visit::Enqueue;
     },
     &stop);
-  result.InsideSamples = queue.size();
 }
 
 // Outside pockets next to the inside with fewer than `bubbleSize` samples become inside.
 // Each search stops as soon as its pocket proves large, so the cost stays near the front.
 void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vector<char>& inside,
-  FloodResult& result, SerialAbortCheck& stop)
+  SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
@@ -137,7 +136,6 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
         visited[j] = 0;
         mark[j] = 1;
       }
-      result.FilledBubbles += isLarge ? 0 : pocket.size();
     }
   }
 }
@@ -331,7 +329,7 @@ std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<
 {
   SerialAbortCheck stop(aborted);
   std::vector<char> inside(flooded);
-  FillBubbles(geometry, bubbleSize, inside, result, stop);
+  FillBubbles(geometry, bubbleSize, inside, stop);
   result.Aborted = stop.WasStopped();
   return inside;
 }

@@ -20,10 +20,8 @@ namespace lsi
 
 struct FloodResult
 {
-  std::size_t InsideSamples = 0; // samples the flood reached (this call's)
-  std::size_t FilledBubbles = 0; // samples of small outside pockets taken as inside
-  std::size_t SeedSamples = 0;   // seed samples with f > f_iso it started from (this call's)
-  bool Aborted = false;          // stopped on request; the inside is then incomplete
+  std::size_t SeedSamples = 0; // seed samples with f > f_iso it started from (this call's)
+  bool Aborted = false;        // stopped on request; the inside is then incomplete
 };
 
 /// The flood: marks in `flooded` (one flag per sample) the samples connected to the seeds
@@ -32,15 +30,14 @@ struct FloodResult
 /// not yet flooded start new searches, so a later round from more seeds (across a periodic
 /// box's faces, or from other MPI ranks) costs a pass over the seed flags and what it adds, and
 /// the reach is the same as one flood from all the seeds at once. result.SeedSamples counts the
-/// seeds with f > f_iso it started from, result.InsideSamples the samples it added (both only this
-/// call's).
+/// seeds with f > f_iso it started from (only this call's).
 void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
   const AbortCheck& aborted);
 
 /// The flood's inside from its reach (`flooded`, FloodFurther): outside pockets of fewer than
 /// `bubbleSize` samples enclosed by it are noise below the neighbourhood scale, and are filled
-/// (taken as inside). result.FilledBubbles counts their samples.
+/// (taken as inside).
 std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<char>& flooded,
   std::size_t bubbleSize, FloodResult& result, const AbortCheck& aborted);
 

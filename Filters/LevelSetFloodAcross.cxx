@@ -8,7 +8,7 @@
 namespace lsi
 {
 
-FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
+bool FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
   const std::vector<vtkIdType>& original, vtkIdType originalCount,
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
   double& seedSamples, const AbortCheck& aborted)
@@ -34,7 +34,7 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
   const FloodResult first = floodHere();
   if (!ranks.All(!first.Aborted))
   {
-    return FloodAcrossEnd::Aborted;
+    return false;
   }
   seedSamples = ranks.Sum(static_cast<double>(first.SeedSamples));
   // Under MPI: seeds where another rank's flood reached this rank's samples (and the other way),
@@ -43,13 +43,13 @@ FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ra
   {
     if (!ranks.All(!floodHere().Aborted))
     {
-      return FloodAcrossEnd::Aborted;
+      return false;
     }
   }
   FloodResult filled;
   inside =
     FilledInside(geometry, flooded, static_cast<std::size_t>(geometry.Stride), filled, aborted);
-  return ranks.All(!filled.Aborted) ? FloodAcrossEnd::Whole : FloodAcrossEnd::Aborted;
+  return ranks.All(!filled.Aborted);
 }
 
 } // namespace lsi

@@ -18,13 +18,6 @@
 namespace lsi
 {
 
-/// How FloodAcross ended (the same on every rank).
-enum class FloodAcrossEnd
-{
-  Whole,  // no flood reached a new particle: the component is complete
-  Aborted // some rank's flood stopped on request
-};
-
 /// Floods from `inSeed` (FloodFurther, then FilledInside into `inside`) until the component is
 /// whole. In a periodic box (`original`: OriginalIds, empty outside one) where the flood reached
 /// a particle it seeds the particle's images, and the flood goes on from them, until no new
@@ -34,8 +27,9 @@ enum class FloodAcrossEnd
 /// joined at the ghosts, are the serial graph. Each round floods only from its new seeds, and
 /// adds seeds that are never added again, so the rounds end, after at most as many as there are
 /// seeds to add. `seedSamples`: the first flood's seed samples with f > f_iso, summed over the
-/// ranks. The ghosts' sides are left as this rank's flood found them.
-FloodAcrossEnd FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
+/// ranks. The ghosts' sides are left as this rank's flood found them. False (on every rank)
+/// when some rank's flood stopped on request: the inside is then incomplete.
+bool FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
   const std::vector<vtkIdType>& original, vtkIdType originalCount,
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
   double& seedSamples, const AbortCheck& aborted);

@@ -942,9 +942,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     last.InSeed = seeds.InSeed;
     std::vector<char> inSeed = seeds.InSeed, inside;
     double seedSamples = 0.0;
-    const lsi::FloodAcrossEnd end =
-      this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples);
-    if (end == lsi::FloodAcrossEnd::Aborted)
+    if (!this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples))
     {
       return false;
     }
@@ -973,7 +971,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   return true;
 }
 
-lsi::FloodAcrossEnd vtkLevelSetIsosurface::FloodComponent(const lsi::Neighborhoods& geometry,
+bool vtkLevelSetIsosurface::FloodComponent(const lsi::Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
   double& seedSamples)
 {

@@ -80,7 +80,6 @@ class vtkPointSet;
 class vtkTable;
 namespace lsi
 {
-enum class FloodAcrossEnd;
 struct EnclosedDeepInside;
 class PointCloudIndex;
 struct EvolutionSettings;
@@ -633,9 +632,9 @@ private:
     vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values);
   // The flood of the seeds' component (`inside`), the method's and a quick re-run's, across the
   // periodic box's faces and the ranks (LevelSetFloodAcross.h); seeds are added to `inSeed`.
-  lsi::FloodAcrossEnd FloodComponent(const lsi::Neighborhoods& geometry,
-    const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
-    double& seedSamples);
+  // False if aborted.
+  bool FloodComponent(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    std::vector<char>& inSeed, std::vector<char>& inside, double& seedSamples);
   void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
   void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& phi, const lsi::IsopointSet& isopoints);

@@ -253,9 +253,7 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   std::vector<char> added = addsSeeds ? last.InSeed : std::vector<char>();
   std::vector<char>& inSeed = addsSeeds ? added : last.InSeed;
   double seedSamples = 0.0;
-  const lsi::FloodAcrossEnd end =
-    this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples);
-  if (end != lsi::FloodAcrossEnd::Whole)
+  if (!this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples))
   {
     return false; // aborted
   }
