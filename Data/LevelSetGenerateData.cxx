@@ -1,11 +1,10 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Writes the paper's synthetic test data (§8.2 one-component field, our multi-component field)
-// as uniform random samples with the scalar "f", to a binary .vtp (readable by Debian 12's
-// ParaView 5.11, which cannot read appended-mode XML).
-//   LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES OUTPUT.vtp
-//   [RANDOM_SEED]
-//     [EXACT_SURFACE.vtp]
+// Writes the synthetic test data (the paper's §8.2 one-component field, and our cases:
+// SyntheticCases.h) as random samples with the scalar "f", to a binary .vtp (readable by Debian
+// 12's ParaView 5.11, which cannot read appended-mode XML).
+//   LevelSetGenerateData one-component|multi-component|adaptive-noisy|snake|sphere SAMPLES
+//     OUTPUT.vtp [RANDOM_SEED] [EXACT_SURFACE.vtp]
 // The optional last file receives the exact isosurface as a triangle mesh, for rendering tests:
 // Flying Edges on the analytic field sampled on a 320^3 grid over the box (its error, about
 // h^2 / (8 R) for grid step h and radius of curvature R, is far below a pixel).
@@ -73,26 +72,13 @@ int main(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    std::cerr << "usage: LevelSetGenerateData one-component|multi-component|adaptive-noisy SAMPLES "
-                 "OUTPUT.vtp "
-                 "[RANDOM_SEED]\n";
+    std::cerr << "usage: LevelSetGenerateData one-component|multi-component|adaptive-noisy|snake|"
+                 "sphere SAMPLES OUTPUT.vtp [RANDOM_SEED] [EXACT_SURFACE.vtp]\n";
     return EXIT_FAILURE;
   }
   const std::string name = argv[1];
-  std::unique_ptr<lsi::cases::Case> c;
-  if (name == "one-component")
-  {
-    c.reset(new lsi::cases::OneComponentCase);
-  }
-  else if (name == "multi-component")
-  {
-    c.reset(new lsi::cases::MultiComponentCase);
-  }
-  else if (name == "adaptive-noisy")
-  {
-    c.reset(new lsi::cases::AdaptiveNoisyCase);
-  }
-  else
+  const std::unique_ptr<lsi::cases::Case> c = lsi::cases::MakeCase(name);
+  if (!c)
   {
     std::cerr << "unknown case " << name << "\n";
     return EXIT_FAILURE;

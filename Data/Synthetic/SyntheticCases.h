@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The analytic test cases: the paper's one-component field (§8.2), a multi-component field of
-// our own (§8.3 leaves its formula out), and a sphere. Each knows its value and gradient
-// everywhere, so the exact isosurface is known. Used by the data generator, the tests and the
-// benchmark (plain C++/Eigen).
+// our own (§8.3 leaves its formula out), an adaptive noisy cloud, a snaking tube and a sphere. Each
+// knows its value and gradient everywhere, so the exact isosurface is known. Used by the data
+// generator, the tests and the benchmark (plain C++/Eigen).
 #ifndef SyntheticCases_h
 #define SyntheticCases_h
 
@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -238,6 +239,60 @@ struct AdaptiveNoisyCase : Case
   }
 };
 
+/// A tube of radius 3 along a path that snakes back and forth in x through 6 rows in y and 4
+/// layers in z (f = 3 - distance to the path, isovalue 0), in a box twice as long in x as wide.
+/// One component, which crosses the plane x = 64 (where ranks split the box in x) 24 times: a
+/// flood over MPI ranks goes round after round from one rank's half to the other's, a row at a
+/// time. Rows 10 apart, so that 4 units of outside (about 3.7 spacings at 330,000 samples)
+/// separate the tubes: no neighbourhood links one row's inside to the next row's.
+struct SnakeCase : Case
+{
+  static constexpr int Rows = 6, Layers = 4;
+  static constexpr double Radius = 3.0, Pitch = 10.0, First = 7.0, RunStart = 8.0, RunEnd = 120.0;
+  std::vector<Eigen::Vector3d> Path; // the polyline's vertices
+  SnakeCase()
+  {
+    this->Name = "snake";
+    this->IsoValue = 0.0;
+    this->BoxMax =
+      Eigen::Vector3d(128, 2 * First + (Rows - 1) * Pitch, 2 * First + (Layers - 1) * Pitch);
+    // Run k along x, in row r of layer l (the rows of a layer in turn, every other layer
+    // backwards, so that consecutive runs are neighbours), joined at the runs' ends.
+    for (int k = 0; k < Rows * Layers; ++k)
+    {
+      const int layer = k / Rows, j = k % Rows;
+      const int row = layer % 2 == 0 ? j : Rows - 1 - j;
+      const double y = First + row * Pitch, z = First + layer * Pitch;
+      const bool forwards = k % 2 == 0;
+      this->Path.emplace_back(forwards ? RunStart : RunEnd, y, z);
+      this->Path.emplace_back(forwards ? RunEnd : RunStart, y, z);
+    }
+    this->Seeds = { { Eigen::Vector3d(RunStart + 4.0, First, First), 2.5 } };
+    this->CurvatureWeight = 0.05;
+  }
+  // The path's point nearest to x.
+  Eigen::Vector3d Nearest(const Eigen::Vector3d& x) const
+  {
+    Eigen::Vector3d best = this->Path[0];
+    for (std::size_t k = 0; k + 1 < this->Path.size(); ++k)
+    {
+      const Eigen::Vector3d a = this->Path[k], ab = this->Path[k + 1] - a;
+      const double t = std::max(0.0, std::min(1.0, (x - a).dot(ab) / ab.squaredNorm()));
+      const Eigen::Vector3d c = a + t * ab;
+      best = (x - c).squaredNorm() < (x - best).squaredNorm() ? c : best;
+    }
+    return best;
+  }
+  double Value(const Eigen::Vector3d& x) const override
+  {
+    return Radius - (x - this->Nearest(x)).norm();
+  }
+  Eigen::Vector3d Gradient(const Eigen::Vector3d& x) const override
+  {
+    return -(x - this->Nearest(x)).normalized();
+  }
+};
+
 /// `count` uniform random samples in the case's box (deterministic for a given seed).
 inline std::vector<Eigen::Vector3d> UniformSamples(
   const Case& c, std::size_t count, std::uint64_t seed)
@@ -278,6 +333,23 @@ inline bool ProjectOntoSurface(const Case& c, Eigen::Vector3d& x)
 inline std::vector<Eigen::Vector3d> Case::Samples(std::size_t count, std::uint64_t seed) const
 {
   return UniformSamples(*this, count, seed);
+}
+
+/// The case called `name` (one-component, multi-component, adaptive-noisy, snake, sphere), or
+/// null.
+inline std::unique_ptr<Case> MakeCase(const std::string& name)
+{
+  if (name == "one-component")
+    return std::unique_ptr<Case>(new OneComponentCase);
+  if (name == "multi-component")
+    return std::unique_ptr<Case>(new MultiComponentCase);
+  if (name == "adaptive-noisy")
+    return std::unique_ptr<Case>(new AdaptiveNoisyCase);
+  if (name == "snake")
+    return std::unique_ptr<Case>(new SnakeCase);
+  if (name == "sphere")
+    return std::unique_ptr<Case>(new SphereCase(Eigen::Vector3d(64, 64, 64), 40.0, 64.0));
+  return nullptr;
 }
 
 } // namespace cases

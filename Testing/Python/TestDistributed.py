@@ -9,7 +9,9 @@
   pvpython TestDistributed.py PLUGIN CASE DATA.vtp SEED REFERENCE.npz connect=PORT
       does the same through a pvserver (mpiexec -n N pvserver --server-port=PORT).
 
-CASE: one-component, multi-component or adaptive-noisy (files of LevelSetGenerateData), or
+CASE: one-component, multi-component, adaptive-noisy or snake (files of LevelSetGenerateData;
+the snake's tube crosses the middle of the box in x 36 times: the flood crosses between the
+ranks' halves round after round), or
 swift-vz: the SWIFT Roberts flow (Data/SWIFT), the SPH interpolant of the velocity's z, 0.7, in
 its periodic box, every component (tubes through the faces), or evrard: the Tipsy glass
 (Data/ChaNGa) with Particle Density's summed density (64 neighbours), the SPH field's level
@@ -61,6 +63,7 @@ CASES = {
     "multi-component": (0.5, {"inside": [44, 64, 64, 14], "cut": [44, 64, 64, 14]},
                         {"inside": [], "cut": [70, 64, 64, 14]}),
     "adaptive-noisy": (0.000839224, {"inside": [56, 64, 64, 4], "cut": [64, 64, 64, 8]}, []),
+    "snake": (0.0, {"inside": [12, 7, 7, 2.5], "cut": [64, 7, 7, 2.5]}, []),
     "swift-vz": (0.7, {"inside": [1.5, 3.0, 3.0, 1.0], "cut": [0, 0, 0, 0]}, []),
     "evrard": (1.0 / np.pi, {"inside": [-0.3, 0.0, 0.0, 0.1], "cut": [0.0, 0.0, 0.0, 0.1]}, []),
 }

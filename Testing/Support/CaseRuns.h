@@ -31,20 +31,6 @@ namespace lsi
 namespace cases
 {
 
-/// The case called `name` (one-component, multi-component, adaptive-noisy, sphere), or null.
-inline std::unique_ptr<Case> MakeCase(const std::string& name)
-{
-  if (name == "one-component")
-    return std::unique_ptr<Case>(new OneComponentCase);
-  if (name == "multi-component")
-    return std::unique_ptr<Case>(new MultiComponentCase);
-  if (name == "adaptive-noisy")
-    return std::unique_ptr<Case>(new AdaptiveNoisyCase);
-  if (name == "sphere")
-    return std::unique_ptr<Case>(new SphereCase(Eigen::Vector3d(64, 64, 64), 40.0, 64.0));
-  return nullptr;
-}
-
 /// The case's array ("f"), isovalue and seeds (first sphere main, the others additional).
 inline void SetCaseInputs(vtkLevelSetIsosurface* filter, const Case& c)
 {
