@@ -181,14 +181,13 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
   // enough particles fall in it for a smooth surface integral.
   auto width = [&](std::size_t i) { return geometry.RadiusOf(i); };
-  std::vector<char> touching(geometry.NumberOfSamples, 0);
+  const std::vector<char> touching = TouchingFlags(in);
   vtkSMPThreadLocal<double> widestHere(0.0); // a maximum: the same on any number of threads
   vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
     double& w = widestHere.Local();
     for (vtkIdType i = begin; i < end; ++i)
     {
-      touching[i] = Touches(in, static_cast<std::size_t>(i));
-      w = touching[i] ? std::max(w, 2.0 * width(i)) : w;
+      w = touching[i] ? std::max(w, 2.0 * width(static_cast<std::size_t>(i))) : w;
     }
   });
   double widest = 0.0;
@@ -358,15 +357,15 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
 
   // Each component's key: its root here (the rank in the high bits under MPI). Under MPI the
   // components that meet at a ghost are one: each touching ghost links its root here to its
-  // owner's. (Serial loops: Root shortens the paths it walks.)
+  // owner's (which touches too: TouchingFlags). (Serial loops: Root shortens the paths it
+  // walks.)
   const double rankKey = ranks.Distributed() ? ranks.Rank * 4294967296.0 : 0.0;
   auto owned = [&](std::size_t i) { return in.OriginalIds[i] >= 0; };
   std::map<double, double> joined;
   if (ranks.Distributed())
   {
-    joined = JoinedAtGhosts(ranks, geometry.NumberOfSamples, owned, [&](std::size_t i) {
-      return owned(i) || touches(i) ? rankKey + Root(parent, slot[i]) : -1.0;
-    });
+    joined = JoinedAtGhosts(ranks, geometry.NumberOfSamples, owned,
+      [&](std::size_t i) { return touches(i) ? rankKey + Root(parent, slot[i]) : -1.0; });
   }
   // Every rank's part of every component, gathered and added up by component.
   std::map<double, Sums> byKey = AddedOverRanks(ranks, sums, components, [&](std::size_t k) {

@@ -268,8 +268,14 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   const std::size_t groups = deep.Sums.size() / record;
   // The band: the touching near samples (in storage order). Nodes: the groups, then the band's
   // samples; bandOf gives a near sample's place in the band.
+  // (Under MPI a ghost touches where its owner does: TouchingFlags.)
+  const std::vector<char> atOwners =
+    in.Ranks->Distributed() ? TouchingFlags(in) : std::vector<char>();
+  auto touches = [&](std::uint32_t i) {
+    return atOwners.empty() ? Touches(in, i) : atOwners[i] != 0;
+  };
   const std::vector<std::uint32_t> inBand = IndicesWhere<std::uint32_t>(
-    deep.Near.size(), [&](std::size_t p) { return Touches(in, deep.Near[p]); });
+    deep.Near.size(), [&](std::size_t p) { return touches(deep.Near[p]); });
   std::vector<std::uint32_t> band(inBand.size());
   std::vector<std::uint32_t> bandOf(deep.Near.size(), EnclosedDeepInside::None);
   vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {

@@ -60,6 +60,12 @@ inline bool Touches(const EnclosedInputs& in, std::size_t i)
   return phi > 0.0 || (phi > in.FarOutside && phi > -in.Geometry->RadiusOf(i));
 }
 
+/// Per sample, whether it touches the inside (Touches), in parallel. Under MPI each ghost takes
+/// its owner's flag: a ghost at the halo's edge has a cut list, so its own radius, and with it
+/// whether it touches, may differ from the serial one, and the components then join at the
+/// ghosts where a serial run's would not.
+std::vector<char> TouchingFlags(const EnclosedInputs& in);
+
 /// Union-find over 0..n-1, each set linked towards its lowest index (so a root is its set's
 /// lowest member), that several threads may join at once: a root is linked under a lower one by
 /// a compare-and-swap, and a search shortens the path it walks to ancestors only, so the sets
