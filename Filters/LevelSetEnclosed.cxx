@@ -181,7 +181,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
   // enough particles fall in it for a smooth surface integral.
   auto width = [&](std::size_t i) { return geometry.RadiusOf(i); };
-  const std::vector<char> touching = TouchingFlags(in);
+  const std::vector<char> touching = FlagsAtOwners(
+    *in.Ranks, geometry.NumberOfSamples, [&](std::size_t i) { return Touches(in, i); });
   vtkSMPThreadLocal<double> widestHere(0.0); // a maximum: the same on any number of threads
   vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
     double& w = widestHere.Local();
@@ -357,7 +358,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
 
   // Each component's key: its root here (the rank in the high bits under MPI). Under MPI the
   // components that meet at a ghost are one: each touching ghost links its root here to its
-  // owner's (which touches too: TouchingFlags). (Serial loops: Root shortens the paths it
+  // owner's (which touches too: FlagsAtOwners). (Serial loops: Root shortens the paths it
   // walks.)
   const double rankKey = ranks.Distributed() ? ranks.Rank * 4294967296.0 : 0.0;
   auto owned = [&](std::size_t i) { return in.OriginalIds[i] >= 0; };

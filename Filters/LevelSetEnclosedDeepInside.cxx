@@ -132,8 +132,12 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
 {
   const Neighborhoods& geometry = *in.Geometry;
   const std::size_t n = geometry.NumberOfSamples;
-  const std::vector<std::uint32_t> inside =
-    IndicesWhere<std::uint32_t>(n, [&](std::size_t i) { return DeepInside(in, i); });
+  // (Under MPI a ghost is deep where its owner is: FlagsAtOwners.)
+  const std::vector<char> atOwners = in.Ranks->Distributed()
+    ? FlagsAtOwners(*in.Ranks, n, [&](std::size_t i) { return DeepInside(in, i); })
+    : std::vector<char>();
+  const std::vector<std::uint32_t> inside = IndicesWhere<std::uint32_t>(
+    n, [&](std::size_t i) { return atOwners.empty() ? DeepInside(in, i) : atOwners[i] != 0; });
   // The groups: the deep samples joined through their neighbour lists (as the touching ones
   // are in the full route: from the samples whose lists are whole), numbered in storage order.
   deep.Group.clear();
@@ -268,9 +272,10 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   const std::size_t groups = deep.Sums.size() / record;
   // The band: the touching near samples (in storage order). Nodes: the groups, then the band's
   // samples; bandOf gives a near sample's place in the band.
-  // (Under MPI a ghost touches where its owner does: TouchingFlags.)
-  const std::vector<char> atOwners =
-    in.Ranks->Distributed() ? TouchingFlags(in) : std::vector<char>();
+  // (Under MPI a ghost touches where its owner does: FlagsAtOwners.)
+  const std::vector<char> atOwners = in.Ranks->Distributed()
+    ? FlagsAtOwners(*in.Ranks, n, [&](std::size_t i) { return Touches(in, i); })
+    : std::vector<char>();
   auto touches = [&](std::uint32_t i) {
     return atOwners.empty() ? Touches(in, i) : atOwners[i] != 0;
   };

@@ -62,25 +62,6 @@ void Sums::Add(const Sums& other)
   }
 }
 
-std::vector<char> TouchingFlags(const EnclosedInputs& in)
-{
-  const std::size_t n = in.Geometry->NumberOfSamples;
-  std::vector<char> touching(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      touching[i] = Touches(in, static_cast<std::size_t>(i));
-    }
-  });
-  if (in.Ranks->Distributed())
-  {
-    std::vector<double> atOwner(touching.begin(), touching.end());
-    in.Ranks->RefreshGhosts(atOwner);
-    std::copy(atOwner.begin(), atOwner.end(), touching.begin());
-  }
-  return touching;
-}
-
 void Pack(double key, const Sums& c, std::vector<double>& out)
 {
   out.insert(out.end(),

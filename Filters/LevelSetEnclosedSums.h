@@ -12,6 +12,7 @@
 #include "NearestNeighbors.h"
 
 #include "vtkDataArray.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
@@ -60,11 +61,28 @@ inline bool Touches(const EnclosedInputs& in, std::size_t i)
   return phi > 0.0 || (phi > in.FarOutside && phi > -in.Geometry->RadiusOf(i));
 }
 
-/// Per sample, whether it touches the inside (Touches), in parallel. Under MPI each ghost takes
-/// its owner's flag: a ghost at the halo's edge has a cut list, so its own radius, and with it
-/// whether it touches, may differ from the serial one, and the components then join at the
-/// ghosts where a serial run's would not.
-std::vector<char> TouchingFlags(const EnclosedInputs& in);
+/// Per sample (storage order), whether test(i) holds, in parallel. Under MPI each ghost takes its
+/// owner's answer: a ghost at the halo's edge has a cut list, so its own radius, and with it a
+/// test that reads it (Touches, the deep inside's), may differ from the serial one, and the
+/// components would then join at the ghosts where a serial run's do not.
+template <typename Test>
+std::vector<char> FlagsAtOwners(const Communicator& ranks, std::size_t samples, Test&& test)
+{
+  std::vector<char> flags(samples);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(samples), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      flags[i] = test(static_cast<std::size_t>(i)) ? 1 : 0;
+    }
+  });
+  if (ranks.Distributed())
+  {
+    std::vector<double> atOwner(flags.begin(), flags.end());
+    ranks.RefreshGhosts(atOwner);
+    std::copy(atOwner.begin(), atOwner.end(), flags.begin());
+  }
+  return flags;
+}
 
 /// Union-find over 0..n-1, each set linked towards its lowest index (so a root is its set's
 /// lowest member), that several threads may join at once: a root is linked under a lower one by
