@@ -25,9 +25,18 @@ std::vector<double> RadiusBounds(const Neighborhoods& geometry);
 /// The same bound for sample i alone (+inf when there are too few samples).
 double RadiusBound(const Neighborhoods& geometry, std::size_t i);
 
+/// A tighter bound, and a costlier one (a partial sort of a few hundred distances): the
+/// (Stride - 1)-th nearest of the samples within `half` places of sample i in storage order, i
+/// excluded (+inf when fewer than Stride - 1 lie there). Any Stride - 1 of them lie no nearer
+/// than i's nearest ones, so their farthest bounds h_i; the nearest of many is near h_i.
+/// `squared`: scratch space.
+double WindowRadiusBound(
+  const Neighborhoods& geometry, std::size_t i, std::size_t half, std::vector<double>& squared);
+
 /// The halo's box (xmin, xmax, ymin, ...) over the samples: min and max of x_i -+ (factor * h_i
 /// + band), each h_i as RadiusOf gives it. Lists are computed (in parallel) only for the samples
-/// whose bounded reach could pass the reach of the samples that bound the box so far.
+/// whose bounded reach could pass the reach of the samples that bound the box so far: by
+/// RadiusBound, then, for those that pass it, by WindowRadiusBound.
 /// `computed` receives how many samples needed their lists. False only when aborted; an empty
 /// set gives the empty box (+inf, -inf, ...). `firstPerSide`: how many samples per side, those
 /// with the farthest bounded reach, set the reach to pass (any number gives the same box).

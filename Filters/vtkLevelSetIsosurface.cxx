@@ -516,7 +516,12 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   {
     for (const auto& entry : { std::make_pair("GhostParticles", double(ranks.GhostCount)),
            std::make_pair("CommunicationSeconds", ranks.CommunicationSeconds),
-           std::make_pair("InitializationSeconds", this->InitializationSeconds) })
+           std::make_pair("InputSeconds", this->InputSeconds),
+           std::make_pair("NeighborSearchSeconds", this->NeighborSearchSeconds),
+           std::make_pair("InitializationSeconds", this->InitializationSeconds),
+           std::make_pair("EvolutionSeconds", this->EvolutionSeconds),
+           std::make_pair("IsopointSeconds", this->IsopointSeconds),
+           std::make_pair("OutputSeconds", this->OutputSeconds) })
     {
       vtkNew<vtkDoubleArray> value;
       value->SetName(entry.first);

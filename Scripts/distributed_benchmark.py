@@ -6,9 +6,9 @@ One timed run of the filter on the paper's case under N ranks x THREADS threads:
 by rank 0 and spread with Distribute Points (not timed, as a parallel reader would give it), then
 Level-Set Isosurface (Isopoints, NumberOfThreads = THREADS, QuickIsoValueChanges) is timed, then
 a move of its seed within the same component, then a 2% isovalue change. Writes, per rank: the
-filter's seconds, its seconds in communication (waiting for slower ranks included) and in the
-seeds and the flood (across the ranks) of the first run, its particles, and the peak resident
-memory of the process; and the ghost fraction."""
+filter's seconds, its seconds in communication (waiting for slower ranks included), in the
+seeds and the flood (across the ranks) and in the other stages of the first run, its particles,
+and the peak resident memory of the process; and the ghost fraction."""
 import json
 import resource
 import sys
@@ -62,6 +62,11 @@ ghost_fraction = surface.GetProperty("GhostFraction").GetElement(0)
 first_run_fields = surface.GetClientSideObject().GetOutputDataObject(1).GetFieldData()
 initialisation = first_run_fields.GetArray("InitializationSeconds").GetValue(0) \
     if first_run_fields.GetArray("InitializationSeconds") else -1.0
+# And its other stages (-1 where not reported); what they leave of the filter's seconds is the
+# spreading of the particles and the ghosts' exchange (with the neighbour search before it).
+STAGES = ["Input", "NeighborSearch", "Evolution", "Isopoint", "Output"]
+stages = [first_run_fields.GetArray(name + "Seconds").GetValue(0)
+          if first_run_fields.GetArray(name + "Seconds") else -1.0 for name in STAGES]
 
 
 def timed_rerun():
@@ -87,7 +92,7 @@ local = surface.GetClientSideObject().GetOutputDataObject(1).GetFieldData()
 communication = local.GetArray("CommunicationSeconds")
 mine = [seconds, communication.GetValue(0) if communication else 0.0,
         source.GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints(), before,
-        resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, initialisation]
+        resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, initialisation] + stages
 send, receive = vtkDoubleArray(), vtkDoubleArray()
 for value in mine:
     send.InsertNextValue(value)
@@ -105,7 +110,9 @@ if rank == 0:
         "isovalue_change_slid": surface.GetProperty("SlidLastSurface").GetElement(0),
         "per_rank": [{"filter_seconds": p[0], "communication_seconds": p[1], "particles": int(p[2]),
                       "peak_MB_before_filter": p[3], "peak_MB": p[4],
-                      "initialisation_seconds": p[5] if p[5] >= 0.0 else None}
+                      "initialisation_seconds": p[5] if p[5] >= 0.0 else None,
+                      "stage_seconds": {name: p[6 + k] for k, name in enumerate(STAGES)
+                                        if p[6 + k] >= 0.0}}
                      for p in per_rank],
     }
     print("%d rank(s) x %d thread(s): %.2f s, %d isopoints, ghosts %.1f%% of the particles"
@@ -123,5 +130,8 @@ if rank == 0:
               % (r, p["particles"], p["filter_seconds"], p["communication_seconds"],
                  "%.2f s" % flood if flood is not None else "not reported", p["peak_MB"],
                  p["peak_MB_before_filter"]))
+        if p["stage_seconds"]:
+            print("    stages: " + ", ".join("%s %.2f s" % (name, seconds)
+                                          for name, seconds in p["stage_seconds"].items()))
     with open(out, "w") as f:
         json.dump(result, f, indent=1)
