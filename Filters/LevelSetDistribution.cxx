@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetDistribution.h"
 
+#include "LevelSetGhostMessages.h"
 #include "LevelSetHaloReach.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
 #include "vtkCommunicator.h"
 #include "vtkDistributedPointCloudFilter.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkMPIController.h"
@@ -36,8 +36,6 @@ enum Tag
   ToOwnersTag = 71003,
   GatherTag = 71004
 };
-
-const char* const ValueArrayName = "vtkLevelSetIsosurfaceValue";
 
 // The points and point arrays of `ids` of `input` (all of them when ids is null), as a vertex-
 // free vtkPolyData, the form in which pieces travel between ranks.
@@ -392,7 +390,7 @@ vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)
 }
 
 vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned, const double reachBox[6],
-  const std::vector<double>& support, std::vector<double>& values)
+  const std::vector<double>& support, std::vector<double>& values, std::string& problem)
 {
   const CommunicationTimer timer(this->CommunicationSeconds);
   const vtkIdType n = owned->GetNumberOfPoints();
@@ -430,59 +428,53 @@ vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned, const 
     this->Partners[r] = (sentCounts[r] > 0 || allCounts[r * size + this->Rank] > 0) ? 1 : 0;
   }
 
-  // The owned samples carry f along, as an array, to their ghost copies.
-  vtkSmartPointer<vtkPolyData> mine = PointsOf(owned, nullptr);
-  vtkNew<vtkDoubleArray> f;
-  f->SetName(ValueArrayName);
-  f->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
+  // Room for the ghosts after the owned samples, in rank order; each partner's message is
+  // read straight into its place.
+  std::vector<vtkIdType> firstOf(size, 0);
+  vtkIdType next = n;
+  for (std::size_t r = 0; r < size; ++r)
   {
-    f->SetValue(i, values[i]);
+    firstOf[r] = next;
+    const auto count = static_cast<vtkIdType>(allCounts[r * size + this->Rank]);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      this->ReceivedIds[r].push_back(next + k);
+    }
+    next += count;
   }
-  mine->GetPointData()->AddArray(f);
-  std::vector<vtkSmartPointer<vtkPolyData>> received(size);
+  this->GhostCount = next - n;
+  vtkSmartPointer<vtkPolyData> all = WithRoomForGhosts(owned, next);
+  values.resize(static_cast<std::size_t>(next));
+  std::string local;
   this->WithEachPartner(this->Partners, [&](int other, bool sendFirst) {
     auto send = [&]() {
       if (!this->SentIds[other].empty())
       {
-        vtkSmartPointer<vtkPolyData> piece = PointsOf(mine, &this->SentIds[other]);
-        this->Controller->Send(piece, other, GhostTag);
+        const std::vector<char> message = GhostMessage(owned, values, this->SentIds[other]);
+        const auto bytes = static_cast<vtkIdType>(message.size());
+        this->Controller->Send(&bytes, 1, other, GhostTag);
+        this->Controller->Send(message.data(), bytes, other, GhostTag);
       }
     };
     auto receive = [&]() {
-      if (allCounts[other * size + this->Rank] > 0)
+      if (!this->ReceivedIds[other].empty())
       {
-        received[other] = vtkSmartPointer<vtkPolyData>::New();
-        this->Controller->Receive(received[other], other, GhostTag);
+        vtkIdType bytes = 0;
+        this->Controller->Receive(&bytes, 1, other, GhostTag);
+        std::vector<char> message(static_cast<std::size_t>(std::max<vtkIdType>(bytes, 0)));
+        this->Controller->Receive(message.data(), bytes, other, GhostTag);
+        std::string problem;
+        if (!ReadGhostMessage(message, all, firstOf[other], values, problem) && local.empty())
+        {
+          local = "rank " + std::to_string(this->Rank) + " received " + problem + " from rank " +
+            std::to_string(other) + ".";
+        }
       }
     };
     sendFirst ? (send(), receive()) : (receive(), send());
   });
-  std::vector<vtkSmartPointer<vtkPolyData>> pieces = { mine };
-  vtkIdType next = n;
-  for (std::size_t r = 0; r < size; ++r)
-  {
-    if (received[r])
-    {
-      pieces.push_back(received[r]);
-      const vtkIdType count = received[r]->GetNumberOfPoints();
-      for (vtkIdType k = 0; k < count; ++k)
-      {
-        this->ReceivedIds[r].push_back(next + k);
-      }
-      next += count;
-    }
-  }
-  this->GhostCount = next - n;
-  vtkSmartPointer<vtkPolyData> all = Concatenated(pieces);
-  vtkDataArray* allValues = all->GetPointData()->GetArray(ValueArrayName);
-  values.resize(static_cast<std::size_t>(next));
-  for (vtkIdType i = 0; i < next; ++i)
-  {
-    values[i] = allValues->GetComponent(i, 0);
-  }
-  all->GetPointData()->RemoveArray(ValueArrayName);
-  return all;
+  problem = this->FirstProblem(local);
+  return problem.empty() ? all : nullptr;
 }
 
 void Distribution::Attach(const Neighborhoods& geometry)

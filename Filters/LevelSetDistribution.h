@@ -63,9 +63,10 @@ public:
   /// The owned samples followed by ghost copies of other ranks' samples: those inside this
   /// rank's `reachBox` (xmin, xmax, ymin, ...: the bounds of the boxes x_i +- reach_i over
   /// owned samples, HaloReachBox), or whose `support` (per sample, may be empty) reaches into
-  /// it. `values` (f per sample) is extended.
+  /// it. `values` (f per sample) is extended. Null on every rank, with `problem` said, when a
+  /// rank received a malformed message.
   vtkSmartPointer<vtkPolyData> WithGhosts(vtkPointSet* owned, const double reachBox[6],
-    const std::vector<double>& support, std::vector<double>& values);
+    const std::vector<double>& support, std::vector<double>& values, std::string& problem);
 
   /// After the neighbour search on WithGhosts' output: the owned samples and the ghosts'
   /// owners in storage order; marks the ghosts whose neighbourhood the reach box cuts.

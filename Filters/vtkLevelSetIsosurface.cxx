@@ -296,6 +296,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   if (ranks.Distributed())
   {
     work = this->WithGhosts(work, *geometry, values);
+    if (!work)
+    {
+      return false;
+    }
     geometry = this->FindNeighborhoods(work->GetPoints(), false);
     if (!ranks.All(geometry != nullptr))
     {
@@ -673,7 +677,10 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
     this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
   double reachBox[6];
   std::size_t listed = 0;
-  if (!lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed, this->Stage(AllListsStage)))
+  // (Every rank stops here if one aborted: the exchange below needs them all.)
+  lsi::Distribution& ranks = *this->Internal->Ranks;
+  if (!ranks.All(
+        lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed, this->Stage(AllListsStage))))
   {
     return nullptr;
   }
@@ -693,9 +700,18 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
       support[i] = std::isfinite(h) ? std::abs(h) * arrays.SupportPerSmoothingLength : 0.0;
     }
   }
+  std::string failure;
   vtkSmartPointer<vtkPolyData> withGhosts =
-    this->Internal->Ranks->WithGhosts(work, reachBox, support, values);
-  vtkDebugMacro(<< this->Internal->Ranks->GhostCount << " ghost particles from other ranks.");
+    ranks.WithGhosts(work, reachBox, support, values, failure);
+  if (!withGhosts)
+  {
+    if (this->ReportsForAll())
+    {
+      vtkErrorMacro(<< "The exchange of ghost particles failed: " << failure);
+    }
+    return nullptr;
+  }
+  vtkDebugMacro(<< ranks.GhostCount << " ghost particles from other ranks.");
   return withGhosts;
 }
 

@@ -171,7 +171,16 @@ int vtkParticleDensity::RequestData(
     double box[6];
     NeighborReachBox(xyz, k, box);
     std::vector<double> unused(static_cast<std::size_t>(owned->GetNumberOfPoints()), 0.0);
-    work = ranks.WithGhosts(owned, box, std::vector<double>(), unused);
+    work = ranks.WithGhosts(owned, box, std::vector<double>(), unused, problem);
+    if (!work)
+    {
+      if (reports)
+      {
+        vtkErrorMacro(<< "The exchange of ghost particles failed: " << problem);
+      }
+      output->Initialize();
+      return reports ? 0 : 1;
+    }
     AppendCoordinates(work, owned->GetNumberOfPoints(), xyz, problem); // the ghosts, after
   }
   const vtkIdType n = owned->GetNumberOfPoints();
