@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the method's steps need from the other MPI ranks when the particles are spread over
 // them. Each rank holds its own samples ("owned": its particles and their periodic images) and,
-// after them, ghost copies of the other ranks' samples near its own. A step computes on all of
-// them, as a serial run would, and
+// after them, ghost copies of the other ranks' samples near its own. A step computes on them as
+// a serial run would (on the owned ones alone where the ghosts' results would be overwritten
+// by their owners' anyway: KeepOwned), and
 // - counts and sums over its owned samples only, then adds the ranks' totals (Sum, Max);
 // - after writing per-sample values, copies each owner's values onto its ghost copies
 //   (RefreshGhosts), so the next step reads the serial values everywhere;
@@ -13,6 +14,7 @@
 #ifndef LevelSetCommunicator_h
 #define LevelSetCommunicator_h
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -31,6 +33,17 @@ public:
   bool Owns(std::size_t sample) const
   {
     return this->OwnedSamples.empty() || this->OwnedSamples[sample] != 0;
+  }
+  /// `samples` less the ghosts (one process: as they are). For a step whose writes at ghosts
+  /// RefreshGhosts would overwrite: it need not compute them.
+  void KeepOwned(std::vector<std::size_t>& samples) const
+  {
+    if (!this->OwnedSamples.empty())
+    {
+      samples.erase(std::remove_if(samples.begin(), samples.end(),
+                      [&](std::size_t i) { return this->OwnedSamples[i] == 0; }),
+        samples.end());
+    }
   }
   /// Sums and maxima over the ranks, in place, the same on every rank.
   virtual void Sum(double*, int) const {}

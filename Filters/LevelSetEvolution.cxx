@@ -65,7 +65,8 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
     halfWidth += 2.0 * settings.NeighborhoodRadius;
   }
   this->Collector.Where(this->Phi, halfWidth, this->Band);
-  // Curvature needs unit normals on the band and on its neighbours.
+  this->Ranks->KeepOwned(this->Band); // the ghosts take their owners' new values
+  // Curvature needs unit normals on the band and on its neighbours (ghosts too).
   this->Collector.WithNeighbors(this->Band, this->Region);
   this->ComputeGradients(this->Region, this->Phi);
 

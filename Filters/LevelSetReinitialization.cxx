@@ -31,6 +31,7 @@ void Reinitialization::Run(
   // to the region are repaired as the front approaches them.
   this->Band.Where(phi, ReinitializationHalfWidth(settings), this->Core);
   this->Band.WithNeighbors(this->Core, this->Updated);
+  ranks.KeepOwned(this->Updated); // after every step the ghosts take their owners' values
   const std::vector<std::size_t>& region = this->Updated;
   this->Geometry.EnsureStencils(region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
