@@ -141,12 +141,14 @@ namespace
 // Rough isopoints: one per neighbour pair (i, j) with phi_i > 0 >= phi_j whose segment passes
 // the angle criterion, placed where the linear interpolation of phi vanishes.
 void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
-  double minimumCosine, std::vector<double>& points)
+  double minimumCosine, std::vector<double>& points, const Communicator& ranks)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
-  const std::vector<std::size_t> front = IndicesWhere<std::size_t>(
-    n, [&](std::size_t i) { return phi[i] > 0.0 && phi[i] < 3.0 * geometry.RadiusOf(i); });
+  const std::vector<std::size_t> front = FrontNearOwned(geometry, ranks,
+    IndicesWhere<std::size_t>(
+      n, [&](std::size_t i) { return phi[i] > 0.0 && phi[i] < 3.0 * geometry.RadiusOf(i); }),
+    NearOwnedSteps);
   {
     // The angle criterion needs gradients on the front and at its negative neighbours.
     std::vector<char> needed(n, 0);
@@ -216,6 +218,59 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
 
 } // namespace
 
+std::vector<std::size_t> FrontNearOwned(const Neighborhoods& geometry, const Communicator& ranks,
+  const std::vector<std::size_t>& front, int steps)
+{
+  if (!ranks.Distributed())
+  {
+    return front;
+  }
+  geometry.EnsureNeighbors(front);
+  std::vector<char> near(geometry.NumberOfSamples, 0);
+  std::vector<std::size_t> ghosts; // of the front, not reached yet
+  for (const std::size_t i : front)
+  {
+    if (ranks.Owns(i))
+    {
+      near[i] = 1;
+    }
+    else
+    {
+      ghosts.push_back(i);
+    }
+  }
+  // Step by step (a ghost reached in this step does not pass it on before the next).
+  for (int step = 0; step < steps && !ghosts.empty(); ++step)
+  {
+    std::vector<std::size_t> still, added;
+    for (const std::size_t i : ghosts)
+    {
+      const std::uint32_t* ids = geometry.NeighborsOf(i);
+      bool next = false;
+      for (int m = 1; m < geometry.Stride && !next; ++m)
+      {
+        next = near[ids[m]] || ranks.Owns(ids[m]);
+      }
+      (next ? added : still).push_back(i);
+    }
+    for (const std::size_t i : added)
+    {
+      near[i] = 1;
+    }
+    ghosts.swap(still);
+  }
+  std::vector<std::size_t> kept;
+  kept.reserve(front.size());
+  for (const std::size_t i : front)
+  {
+    if (near[i])
+    {
+      kept.push_back(i);
+    }
+  }
+  return kept;
+}
+
 // Every sample of a pocket disagrees with the data, so only the (few) disagreeing samples are
 // searched.
 std::vector<double> WithoutSpuriousPockets(
@@ -266,13 +321,14 @@ std::vector<double> WithoutSpuriousPockets(
 }
 
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
-  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted)
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted,
+  const Communicator& ranks)
 {
   // Progress in proportion to the parts' times at 2M samples: rough points a third, their
   // projection the rest.
   out = IsopointSet();
   std::vector<double> points, normals;
-  RoughIsopoints(geometry, phi, settings.MinimumCosine, points);
+  RoughIsopoints(geometry, phi, settings.MinimumCosine, points, ranks);
   out.RoughCount = points.size() / 3;
   // Many crossings lie within one voxel: project one per voxel only.
   std::vector<char> valid(out.RoughCount, 0);

@@ -9,6 +9,7 @@
 #define LevelSetIsopoints_h
 
 #include "IsopointRefinement.h"
+#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
@@ -90,9 +91,23 @@ std::vector<double> WithoutSpuriousPockets(
   const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double> phi);
 
 /// The isopoints of `phi` (after WithoutSpuriousPockets): rough points, one Newton projection
-/// per voxel of side CellSize, thinned to one point per voxel. Returns false only when aborted.
+/// per voxel of side CellSize, thinned to one point per voxel. Under MPI only near this rank's
+/// own samples (FrontNearOwned). Returns false only when aborted.
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,
-  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted);
+  const IsopointSettings& settings, IsopointSet& out, const AbortCheck& aborted,
+  const Communicator& ranks = SingleProcess());
+
+/// Neighbour steps, through the front, from a rank's own samples to the farthest ghost whose
+/// crossings make isopoints there. A rank keeps the points nearest its own samples (within
+/// about one step of them); each point depends on the crossings within about two steps
+/// (thinning, projection, completion); the halo is six deep.
+constexpr int NearOwnedSteps = 4;
+
+/// `front` less the ghosts more than `steps` neighbour steps from an owned sample, walking
+/// through the front's ghosts (one process: `front` as it is). Their points would be made only
+/// for the other ranks to keep: about a third of a rank's isopoints.
+std::vector<std::size_t> FrontNearOwned(const Neighborhoods& geometry, const Communicator& ranks,
+  const std::vector<std::size_t>& front, int steps);
 
 /// Step 6, completion: around each isopoint, the empty cells of a small grid on its tangent
 /// plane (Numerics/TangentPlaneCompletion.h) propose new points, projected onto the zero level
