@@ -463,10 +463,10 @@ vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned, const 
         this->Controller->Receive(&bytes, 1, other, GhostTag);
         std::vector<char> message(static_cast<std::size_t>(std::max<vtkIdType>(bytes, 0)));
         this->Controller->Receive(message.data(), bytes, other, GhostTag);
-        std::string problem;
-        if (!ReadGhostMessage(message, all, firstOf[other], values, problem) && local.empty())
+        std::string why; // (this rank's; `problem` is every rank's, decided below)
+        if (!ReadGhostMessage(message, all, firstOf[other], values, why) && local.empty())
         {
-          local = "rank " + std::to_string(this->Rank) + " received " + problem + " from rank " +
+          local = "rank " + std::to_string(this->Rank) + " received " + why + " from rank " +
             std::to_string(other) + ".";
         }
       }
