@@ -57,7 +57,9 @@ struct Neighborhoods
   mutable std::vector<unsigned char> StencilState;
   mutable std::size_t ComputedStencils = 0;
 
-  double MeanRadius = 0.0; // mean h_i over the fixed sample of the samples (InRadiusSample)
+  // Mean h_i over up to MeanRadiusSearches of the fixed sample of the samples (InRadiusSample):
+  // a scale for the checks of the data's units, not a parameter of the method.
+  double MeanRadius = 0.0;
 
   // Which build this is: unique per build in the process (NeighborCache), so that what was
   // computed on these samples is recognised as theirs (0: not numbered).
@@ -229,6 +231,10 @@ struct Neighborhoods
   mutable UninitializedVector<double> SampleRadii;
   mutable std::uint64_t SampleRowsEvery = 0;
 
+  /// Sample i's list into `ids` (Stride entries), not kept; returns its radius.
+  /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
+  double SearchRow(std::size_t i, double nearbyRadius, std::uint32_t* ids) const;
+
 private:
   const float* ScaledStencilOf(std::size_t i) const
   {
@@ -246,8 +252,6 @@ private:
   }
   /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
   void ComputeRow(std::size_t i, double nearbyRadius) const;
-  /// Sample i's list into `ids` (Stride entries); returns its radius.
-  double SearchRow(std::size_t i, double nearbyRadius, std::uint32_t* ids) const;
 };
 
 /// About how many samples the global scales are taken over (Neighborhoods::InRadiusSample):
@@ -257,6 +261,8 @@ inline std::uint64_t RadiusSampleEvery(double samples)
 {
   return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(samples / RadiusSampleSize));
 }
+/// How many of the fixed sample's samples Neighborhoods::MeanRadius is taken over.
+constexpr std::size_t MeanRadiusSearches = 2048;
 
 /// Samples per list computed in one parallel batch below which a serial loop computes them
 /// as it goes (a parallel loop's start costs more than a few searches).
