@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetHaloReach.h"
 
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+
+#include <array>
 
 #include <algorithm>
 #include <cmath>
@@ -110,12 +113,29 @@ std::vector<double> RadiusBounds(const Neighborhoods& geometry)
 }
 
 bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, double box[6],
-  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide)
+  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide, const bool wanted[6])
 {
   const std::size_t n = geometry.NumberOfSamples;
   // Each side (0..5: -x, +x, -y, ...) as a maximum until the end: the lower bounds negated.
   std::fill(box, box + 6, -HUGE_VAL);
   computed = 0;
+  int sides[6], sideCount = 0; // the sides computed
+  for (int side = 0; side < 6; ++side)
+  {
+    if (!wanted || wanted[side])
+    {
+      sides[sideCount++] = side;
+    }
+    else
+    {
+      box[side] = HUGE_VAL; // unbounded
+    }
+  }
+  if (sideCount == 0)
+  {
+    box[0] = box[2] = box[4] = -HUGE_VAL; // (the lower sides, unbounded)
+    return !Aborted(aborted, 1.0);
+  }
   // How far sample i reaches in direction `side` (0..5: -x, +x, -y, ...), as a maximum.
   // (Rounded as the box x_i -+ reach_i would be: -(x - reach) is reach - x exactly.)
   auto reachOf = [&](std::size_t i, int side, double radius) {
@@ -126,8 +146,9 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
   auto exactBox = [&](const std::vector<std::uint32_t>& samples) {
     for (const std::uint32_t i : samples)
     {
-      for (int side = 0; side < 6; ++side)
+      for (int s = 0; s < sideCount; ++s)
       {
+        const int side = sides[s];
         const double reach = reachOf(i, side, geometry.RadiusOf(i));
         box[side] = std::max(box[side], reach);
       }
@@ -149,20 +170,36 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
   {
     // 1. The samples that reach farthest by their bounds, a few per side: their exact reach is
     //    a reach the box attains.
+    //    (Per side the m least keys (-reach, index), kept in a heap in one pass over the
+    //    samples: most are no better than its worst and are never inserted.)
     const std::size_t m = std::max<std::size_t>(1, std::min(firstPerSide, n));
-    std::vector<std::uint32_t> first;
-    std::vector<std::pair<double, std::uint32_t>> keyed(n);
-    for (int side = 0; side < 6; ++side)
+    using Keyed = std::pair<double, std::uint32_t>;
+    std::vector<Keyed> heaps[6]; // max-heaps: the front is the worst key kept
+    for (std::size_t i = 0; i < n; ++i)
     {
-      for (std::size_t i = 0; i < n; ++i)
+      for (int s = 0; s < sideCount; ++s)
       {
-        keyed[i] = { -reachOf(i, side, bounds[i]), static_cast<std::uint32_t>(i) };
+        const Keyed key{ -reachOf(i, sides[s], bounds[i]), static_cast<std::uint32_t>(i) };
+        std::vector<Keyed>& heap = heaps[s];
+        if (heap.size() < m)
+        {
+          heap.push_back(key);
+          std::push_heap(heap.begin(), heap.end());
+        }
+        else if (key < heap.front())
+        {
+          std::pop_heap(heap.begin(), heap.end());
+          heap.back() = key;
+          std::push_heap(heap.begin(), heap.end());
+        }
       }
-      std::nth_element(
-        keyed.begin(), keyed.begin() + static_cast<std::ptrdiff_t>(m - 1), keyed.end());
-      for (std::size_t j = 0; j < m; ++j)
+    }
+    std::vector<std::uint32_t> first;
+    for (int s = 0; s < sideCount; ++s)
+    {
+      for (const Keyed& key : heaps[s])
       {
-        first.push_back(keyed[j].second);
+        first.push_back(key.second);
       }
     }
     std::sort(first.begin(), first.end());
@@ -178,8 +215,9 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
     //    WindowRadiusBound (a twentieth of a list's cost), which leaves out most of them.
     const double attained[6] = { box[0], box[1], box[2], box[3], box[4], box[5] };
     auto passes = [&](std::size_t i, double bound) {
-      for (int side = 0; side < 6; ++side)
+      for (int s = 0; s < sideCount; ++s)
       {
+        const int side = sides[s];
         const double reach = reachOf(i, side, bound);
         const double allowance =
           Slack * (std::abs(geometry.Position(i)[side / 2]) + factor * bound + std::abs(band));
@@ -230,6 +268,41 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
     box[2 * d] = -box[2 * d];
   }
   return !Aborted(aborted, 1.0);
+}
+
+void SidesFacingOtherRanks(const Neighborhoods& geometry, const Communicator& ranks, bool wanted[6])
+{
+  // Each side as a maximum (the lower bounds negated), over this rank's samples, then over all.
+  const std::size_t n = geometry.NumberOfSamples;
+  vtkSMPThreadLocal<std::array<double, 6>> local(
+    std::array<double, 6>{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    std::array<double, 6>& sides = local.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const double* x = geometry.Position(static_cast<std::size_t>(i));
+      for (int d = 0; d < 3; ++d)
+      {
+        sides[2 * d] = std::max(sides[2 * d], -x[d]);
+        sides[2 * d + 1] = std::max(sides[2 * d + 1], x[d]);
+      }
+    }
+  });
+  double mine[6] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const std::array<double, 6>& sides : local)
+  {
+    for (int side = 0; side < 6; ++side)
+    {
+      mine[side] = std::max(mine[side], sides[side]);
+    }
+  }
+  double all[6];
+  std::copy(mine, mine + 6, all);
+  ranks.Max(all, 6);
+  for (int side = 0; side < 6; ++side)
+  {
+    wanted[side] = all[side] > mine[side];
+  }
 }
 
 } // namespace lsi

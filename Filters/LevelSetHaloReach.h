@@ -7,6 +7,7 @@
 #ifndef LevelSetHaloReach_h
 #define LevelSetHaloReach_h
 
+#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
@@ -33,6 +34,9 @@ double RadiusBound(const Neighborhoods& geometry, std::size_t i);
 double WindowRadiusBound(
   const Neighborhoods& geometry, std::size_t i, std::size_t half, std::vector<double>& squared);
 
+/// HaloReachBox's samples per side whose exact reach is taken first.
+constexpr std::size_t HaloFirstPerSide = 64;
+
 /// The halo's box (xmin, xmax, ymin, ...) over the samples: min and max of x_i -+ (factor * h_i
 /// + band), each h_i as RadiusOf gives it. Lists are computed (in parallel) only for the samples
 /// whose bounded reach could pass the reach of the samples that bound the box so far: by
@@ -40,8 +44,17 @@ double WindowRadiusBound(
 /// `computed` receives how many samples needed their lists. False only when aborted; an empty
 /// set gives the empty box (+inf, -inf, ...). `firstPerSide`: how many samples per side, those
 /// with the farthest bounded reach, set the reach to pass (any number gives the same box).
+/// `wanted` (null: all): the sides (-x, +x, -y, ...) to compute; the others are unbounded
+/// (-inf or +inf) at no cost: under MPI, the sides beyond which no other rank holds a sample.
 bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, double box[6],
-  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide = 64);
+  std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide = HaloFirstPerSide,
+  const bool wanted[6] = nullptr);
+
+/// Which sides (-x, +x, -y, ...) of this rank's samples' bounds another rank holds samples
+/// beyond (collective: every rank calls it). The reach box matters on those sides only: on the
+/// others no rank has a sample it could send.
+void SidesFacingOtherRanks(
+  const Neighborhoods& geometry, const Communicator& ranks, bool wanted[6]);
 
 } // namespace lsi
 

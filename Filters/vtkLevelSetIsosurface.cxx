@@ -677,10 +677,14 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
     this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
   double reachBox[6];
   std::size_t listed = 0;
-  // (Every rank stops here if one aborted: the exchange below needs them all.)
   lsi::Distribution& ranks = *this->Internal->Ranks;
-  if (!ranks.All(
-        lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed, this->Stage(AllListsStage))))
+  // Only the sides beyond which another rank holds samples bound what it sends here: the
+  // others are left unbounded, uncomputed (a slab of a split in x needs one side of six).
+  bool wanted[6];
+  lsi::SidesFacingOtherRanks(owned, ranks, wanted);
+  // (Every rank stops here if one aborted: the exchange below needs them all.)
+  if (!ranks.All(lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed,
+        this->Stage(AllListsStage), lsi::HaloFirstPerSide, wanted)))
   {
     return nullptr;
   }

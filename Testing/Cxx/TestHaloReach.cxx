@@ -5,7 +5,8 @@
 // the sparse outskirts reaching farthest), a few clusters with isolated particles far out, the
 // same in other units, a cloud with a wider band (Epsilon), and one of too few samples:
 //   - every radius bound (RadiusBounds, WindowRadiusBound) bounds the sample's radius;
-//   - the box equals the box of every sample's x_i -+ (factor h_i + band), to the bit;
+//   - the box equals the box of every sample's x_i -+ (factor h_i + band), to the bit; so does
+//     its +x side computed alone (the others then unbounded);
 //   - the uniform slab needs fewer than 5% of the lists (53% with RadiusBounds alone), the
 //     Plummer sphere fewer than 5%.
 #include "LevelSetHaloReach.h"
@@ -118,6 +119,21 @@ std::size_t CheckCloud(const std::string& name, vtkPoints* points, int neighbors
   lsi::HaloReachBox(one, factor, band, fromOne, computedFromOne, lsi::AbortCheck(), 1);
   Check(std::equal(fromOne, fromOne + 6, reference),
     name + ": the same box from one sample per side first");
+  // One side only (a rank with one neighbour across +x): that side to the bit, the others
+  // unbounded, and fewer lists.
+  lsi::Neighborhoods oneSide;
+  lsi::BuildNeighborhoods(points, neighbors, oneSide, lsi::AbortCheck());
+  const bool wanted[6] = { false, true, false, false, false, false };
+  double sided[6];
+  std::size_t computedOneSide = 0;
+  lsi::HaloReachBox(oneSide, factor, band, sided, computedOneSide, lsi::AbortCheck(),
+    lsi::HaloFirstPerSide, wanted);
+  Check(sided[1] == reference[1] && sided[0] == -HUGE_VAL && sided[2] == -HUGE_VAL &&
+      sided[3] == HUGE_VAL && sided[4] == -HUGE_VAL && sided[5] == HUGE_VAL,
+    name + ": +x alone, to the bit, the other sides unbounded");
+  Check(computedOneSide <= computed,
+    name + ": +x alone computes no more lists (" + std::to_string(computedOneSide) + " of " +
+      std::to_string(computed) + ")");
   const std::vector<double> bounds = lsi::RadiusBounds(every);
   std::size_t wrong = 0;
   for (std::size_t i = 0; i < bounds.size(); ++i)
