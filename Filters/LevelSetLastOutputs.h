@@ -116,6 +116,11 @@ struct LastOutputs
   bool QuickCheck = false;
   vtkSmartPointer<vtkPointSet> Work;
   vtkSmartPointer<vtkPointSet> Owned; // under MPI: this rank's particles (before the ghosts)
+  // Under MPI, what sized the halo besides the radii: Epsilon's band and a fingerprint of the
+  // kernel supports (a full re-run with the same keeps the ghosts).
+  double HaloBand = 0.0;
+  std::uint64_t HaloSupport = 0;
+  std::vector<double> WorkValues; // under MPI: f over Work, in its order (ghosts' included)
   std::vector<char> Inside;
   std::vector<double> DataOffsets;
   double Spacing = 0.0;

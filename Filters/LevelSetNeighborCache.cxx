@@ -119,10 +119,8 @@ std::uint64_t ValueFingerprint(const std::vector<double>& values)
     [&](vtkIdType i, std::uint64_t h) { return Mix(h, DoubleBits(values[i])); });
 }
 
-const Neighborhoods* NeighborCache::Get(
-  vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built)
+const Neighborhoods* NeighborCache::Find(vtkPoints* points, int neighbors)
 {
-  built = false;
   const vtkIdType n = points->GetNumberOfPoints();
   // Hashing the coordinates takes a pass over them: at most once per call, and only when an
   // entry of the same size is not the very same unmodified points object.
@@ -152,7 +150,17 @@ const Neighborhoods* NeighborCache::Get(
       return &e.Geometry;
     }
   }
+  return nullptr;
+}
 
+const Neighborhoods* NeighborCache::Get(
+  vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built)
+{
+  built = false;
+  if (const Neighborhoods* cached = this->Find(points, neighbors))
+  {
+    return cached;
+  }
   // Make room first: the old entries' memory is freed before the new one is allocated.
   while (!this->Entries.empty() && this->Entries.size() >= std::max<std::size_t>(1, capacity))
   {
@@ -167,9 +175,9 @@ const Neighborhoods* NeighborCache::Get(
   entry->Geometry.BuildNumber = ++builds;
   entry->Points = points;
   entry->PointsTime = points->GetMTime();
-  entry->NumberOfPoints = n;
+  entry->NumberOfPoints = points->GetNumberOfPoints();
   entry->NumberOfNeighbors = neighbors;
-  entry->Fingerprint = fingerprintOnce();
+  entry->Fingerprint = CoordinateFingerprint(points); // (a pass over them, against a build)
   this->Entries.push_front(std::move(entry));
   built = true;
   return &this->Entries.front()->Geometry;

@@ -40,6 +40,9 @@ public:
   /// beyond `capacity`; `built` tells which. Returns null when aborted.
   const Neighborhoods* Get(
     vtkPoints* points, int neighbors, std::size_t capacity, const AbortCheck& aborted, bool& built);
+  /// The cached neighbourhoods of `points` with `neighbors` neighbours (marked most recently
+  /// used), or null: never builds.
+  const Neighborhoods* Find(vtkPoints* points, int neighbors);
 
 private:
   struct Entry

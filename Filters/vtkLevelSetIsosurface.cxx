@@ -252,6 +252,18 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return true;
   }
+  // Under MPI a full re-run on the same particles (a change of CurvatureWeight, say) keeps the
+  // last run's ghosts, their neighbourhoods and the ranks that trade them.
+  const lsi::Neighborhoods* keptGhosts = ranks.Distributed() ? this->KeptGhosts(input) : nullptr;
+  std::unique_ptr<lsi::Distribution> keptRanks;
+  vtkSmartPointer<vtkPointSet> keptOwned = last.Owned, keptWork = last.Work;
+  std::vector<double> keptValues;
+  if (keptGhosts)
+  {
+    keptRanks = std::move(this->Internal->LastRanks);
+    keptValues = std::move(last.WorkValues);
+  }
+  last.WorkValues.clear();
   last.Valid = false; // until this run succeeds
   last.SurfaceReady = false;
   this->Internal->LastRanks.reset();
@@ -264,20 +276,41 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   this->InputSeconds = SecondsSince(inputStart);
   vtkSmartPointer<vtkPointSet> original = input;
-  if (ranks.Distributed())
-  {
-    bool idle = false; // a rank left without particles by an input too small to spread
-    original = this->Distribute(input, values, idle);
-    if (idle)
-    {
-      return true;
-    }
-  }
-  vtkSmartPointer<vtkPointSet> work = this->WithPeriodicImages(original, values);
-  const lsi::Neighborhoods* geometry =
-    work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
+  vtkSmartPointer<vtkPointSet> work;
+  const lsi::Neighborhoods* geometry = nullptr;
   std::vector<vtkIdType> mergedId; // input id -> merged point, when duplicates were merged
-  if (geometry && geometry->DuplicateSamples > 0)
+  if (keptGhosts)
+  {
+    // The last run's particles with their ghosts (no periodic box: KeptGhosts), and f over them
+    // as WithGhosts gave it.
+    original = keptOwned;
+    work = keptWork;
+    geometry = keptGhosts;
+    ranks = *keptRanks;
+    ranks.CommunicationSeconds = 0.0;
+    this->Internal->Box = lsi::PeriodicBox();
+    this->Internal->OriginalCount = original->GetNumberOfPoints();
+    this->Internal->ImageOf.clear();
+    this->NeighborSearchSeconds = this->SpatialSortSeconds = this->NearestNeighborSeconds =
+      this->TreeBuildSeconds = 0.0;
+    values = std::move(keptValues);
+    this->GhostFraction = last.GhostFraction;
+  }
+  else
+  {
+    if (ranks.Distributed())
+    {
+      bool idle = false; // a rank left without particles by an input too small to spread
+      original = this->Distribute(input, values, idle);
+      if (idle)
+      {
+        return true;
+      }
+    }
+    work = this->WithPeriodicImages(original, values);
+    geometry = work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
+  }
+  if (!keptGhosts && geometry && geometry->DuplicateSamples > 0)
   {
     values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
     vtkIdType merged = 0;
@@ -293,7 +326,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return false;
   }
-  if (ranks.Distributed())
+  if (ranks.Distributed() && !keptGhosts)
   {
     work = this->WithGhosts(work, *geometry, values);
     if (!work)
@@ -444,7 +477,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.SlideReady = this->QuickIsoValueChanges && last.QuickCheck &&
     isopointSettings.RefineOnData && (field || found.FitSize > 0 || ranks.Distributed()) &&
     (!this->Internal->Box.Enabled || !uncut.Points.empty());
-  last.Owned = last.QuickCheck && ranks.Distributed() ? original : nullptr;
+  last.Owned = last.SurfaceReady && ranks.Distributed() ? original : nullptr;
+  if (last.Owned)
+  {
+    last.WorkValues = values; // (f with the ghosts' values, which came with them)
+  }
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
@@ -673,8 +710,12 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   // samples only, so never less than the serial radius), and a wider band if Epsilon asks. The
   // rank's reach box bounds them all (from the lists of the samples that can reach farthest).
   const std::size_t n = owned.NumberOfSamples;
-  const double band =
-    this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
+  double band = 0.0;
+  std::vector<double> support;
+  this->HaloInputs(work, band, support);
+  // (What a full re-run compares to keep these ghosts: KeptGhosts.)
+  this->Internal->Last.HaloBand = band;
+  this->Internal->Last.HaloSupport = lsi::ValueFingerprint(support);
   double reachBox[6];
   std::size_t listed = 0;
   lsi::Distribution& ranks = *this->Internal->Ranks;
@@ -689,21 +730,6 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
     return nullptr;
   }
   vtkDebugMacro(<< "halo: " << listed << " of " << n << " neighbour lists computed");
-  std::vector<double> support;
-  // The SPH field at a point sums every particle whose kernel reaches it.
-  int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
-  lsi::SPHFieldArrays arrays;
-  std::string problem, choice;
-  if (lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice))
-  {
-    support.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const double h = arrays.SmoothingLength->GetComponent(static_cast<vtkIdType>(i), 0);
-      support[i] = std::isfinite(h) ? std::abs(h) * arrays.SupportPerSmoothingLength : 0.0;
-    }
-  }
   std::string failure;
   vtkSmartPointer<vtkPolyData> withGhosts =
     ranks.WithGhosts(work, reachBox, support, values, failure);
@@ -717,6 +743,53 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   }
   vtkDebugMacro(<< ranks.GhostCount << " ghost particles from other ranks.");
   return withGhosts;
+}
+
+void vtkLevelSetIsosurface::HaloInputs(
+  vtkPointSet* work, double& band, std::vector<double>& support)
+{
+  band = this->Epsilon > 0.0 ? 2.0 * std::max(this->Epsilon, this->CurvatureEpsilon) : 0.0;
+  support.clear();
+  // The SPH field at a point sums every particle whose kernel reaches it.
+  int association = -1;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
+  lsi::SPHFieldArrays arrays;
+  std::string problem, choice;
+  if (lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice))
+  {
+    const vtkIdType n = work->GetNumberOfPoints();
+    support.resize(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double h = arrays.SmoothingLength->GetComponent(i, 0);
+      support[i] = std::isfinite(h) ? std::abs(h) * arrays.SupportPerSmoothingLength : 0.0;
+    }
+  }
+}
+
+const lsi::Neighborhoods* vtkLevelSetIsosurface::KeptGhosts(vtkPointSet* input)
+{
+  const lsi::LastOutputs& last = this->Internal->Last;
+  const lsi::Neighborhoods* geometry = nullptr;
+  // The same input (its stamp, the neighbourhoods still cached), the same ranks, no periodic
+  // box then or now, and the same halo (Epsilon's band, the kernel supports).
+  if (last.Owned && last.Work && !this->Internal->Box.Enabled && this->LastRanksMatch())
+  {
+    std::string problem;
+    const lsi::PeriodicBox box =
+      lsi::FindPeriodicBox(last.Owned, this->BoxSize, this->Periodic, problem);
+    double band = 0.0;
+    std::vector<double> support;
+    this->HaloInputs(last.Owned, band, support);
+    // (Looked up, never searched: LastGeometry would search for a new NumberOfNeighbors.)
+    if (!box.Enabled && problem.empty() && band == last.HaloBand &&
+      lsi::ValueFingerprint(support) == last.HaloSupport && last.Valid && last.SurfaceReady &&
+      input == last.Input && lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp)
+    {
+      geometry = this->Internal->Cache.Find(last.Work->GetPoints(), this->NumberOfNeighbors);
+    }
+  }
+  return this->Internal->Ranks->All(geometry != nullptr) ? geometry : nullptr;
 }
 
 vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(

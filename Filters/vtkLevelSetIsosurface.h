@@ -630,6 +630,12 @@ private:
     vtkPointSet* input, std::vector<double>& values, bool& idle);
   vtkSmartPointer<vtkPointSet> WithGhosts(
     vtkPointSet* work, const lsi::Neighborhoods& owned, std::vector<double>& values);
+  // Under MPI, what sizes a rank's halo besides its neighbourhood radii: the band Epsilon asks
+  // for, and each particle's kernel support on the SPH field (else none).
+  void HaloInputs(vtkPointSet* work, double& band, std::vector<double>& support);
+  // Under MPI, for a full re-run on the same particles with the same halo: the last run's
+  // neighbourhoods with its ghosts (kept with its ranks), else null. Decided with the others.
+  const lsi::Neighborhoods* KeptGhosts(vtkPointSet* input);
   // The flood of the seeds' component (`inside`), the method's and a quick re-run's, across the
   // periodic box's faces and the ranks (LevelSetFloodAcross.h); seeds are added to `inSeed`.
   // False if aborted.

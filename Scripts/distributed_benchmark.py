@@ -5,10 +5,11 @@
 One timed run of the filter on the paper's case under N ranks x THREADS threads: the .vtp is read
 by rank 0 and spread with Distribute Points (not timed, as a parallel reader would give it), then
 Level-Set Isosurface (Isopoints, NumberOfThreads = THREADS, QuickIsoValueChanges) is timed, then
-a move of its seed within the same component, then a 2% isovalue change. Writes, per rank: the
-filter's seconds, its seconds in communication (waiting for slower ranks included), in the
-seeds and the flood (across the ranks) and in the other stages of the first run, its particles,
-and the peak resident memory of the process; and the ghost fraction."""
+a move of its seed within the same component, then a 2% isovalue change, then a CurvatureWeight
+change (a full re-run on the same particles). Writes, per rank: the filter's seconds, its
+seconds in communication (waiting for slower ranks included), in the seeds and the flood
+(across the ranks) and in the other stages of the first run, its particles, and the peak
+resident memory of the process; and the ghost fraction."""
 import json
 import resource
 import sys
@@ -88,6 +89,12 @@ seed_move_reused = surface.GetProperty("ReusedLastOutputs").GetElement(0)
 # Then a 2% isovalue change (QuickIsoValueChanges): every rank slides its surface.
 surface.IsoValue = new_iso.GetValue(0)
 iso_change = timed_rerun()
+# Then CurvatureWeight doubled: the method runs in full, on the same particles (outside a
+# periodic box every rank keeps its ghosts, their neighbourhoods and the flood).
+floods = surface.GetProperty("FloodCount").GetElement(0)
+surface.CurvatureWeight = 0.3
+curvature_change = timed_rerun()
+curvature_floods = surface.GetProperty("FloodCount").GetElement(0) - floods
 local = surface.GetClientSideObject().GetOutputDataObject(1).GetFieldData()
 communication = local.GetArray("CommunicationSeconds")
 mine = [seconds, communication.GetValue(0) if communication else 0.0,
@@ -108,6 +115,8 @@ if rank == 0:
         "seed_move_reused": seed_move_reused,
         "isovalue_change_seconds": iso_change,
         "isovalue_change_slid": surface.GetProperty("SlidLastSurface").GetElement(0),
+        "curvature_weight_change_seconds": curvature_change,
+        "curvature_weight_change_floods": curvature_floods,
         "per_rank": [{"filter_seconds": p[0], "communication_seconds": p[1], "particles": int(p[2]),
                       "peak_MB_before_filter": p[3], "peak_MB": p[4],
                       "initialisation_seconds": p[5] if p[5] >= 0.0 else None,
@@ -123,6 +132,8 @@ if rank == 0:
     print("  isovalue 2%% change: %.3f s (%.1f%% of the first run), surface %s"
           % (iso_change, 100 * iso_change / wall,
              "slid" if result["isovalue_change_slid"] else "recomputed"))
+    print("  CurvatureWeight change: %.3f s (%.1f%% of the first run), %d flood(s)"
+          % (curvature_change, 100 * curvature_change / wall, curvature_floods))
     for r, p in enumerate(result["per_rank"]):
         flood = p["initialisation_seconds"]
         print("  rank %d: %d particles, filter %.2f s of which communication %.2f s and seeds "

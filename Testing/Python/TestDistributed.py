@@ -34,6 +34,9 @@ slid surface.
 Option output-change: then OutputType becomes Splats and back Isopoints: every rank must make
 its surface output anew from its last points (RemadeSurfaceOutput), one splat per isopoint,
 and back the same isopoints, which pass the same checks again.
+Option curvature-change: then CurvatureWeight doubles and comes back: outside a periodic box
+every rank keeps its ghosts, their neighbourhoods and the flood (NeighborSearchCount and
+FloodCount unchanged), and gives back the first run's isopoints to the bit.
 Option around-seed (a periodic case): PeriodicOutput "around the seed" (the points moved into
 the periodic cell centred on the seed; their splat radii from points moved alike)."""
 import sys
@@ -248,6 +251,28 @@ if port:
     check(ranks > 1, "the pvserver runs on %d ranks" % ranks)
 serial = np.load(reference)
 compare(result, serial)
+if "curvature-change" in options:
+    # A full re-run on the same particles: outside a periodic box every rank keeps its ghosts,
+    # their neighbourhoods (no search) and the flood (no flood); back at the first
+    # CurvatureWeight, the first run's isopoints to the bit.
+    def counts():
+        return (surface.GetPropertyValue("NeighborSearchCount"),
+                surface.GetPropertyValue("FloodCount"))
+    weight = surface.CurvatureWeight
+    before = counts()
+    surface.CurvatureWeight = 2.0 * weight
+    changed = run()
+    after = counts()
+    if case != "swift-vz":  # (its periodic box: the images and ghosts are made again)
+        check(after == before, "a CurvatureWeight change keeps the ghosts, their neighbourhoods "
+              "and the flood (NeighborSearchCount, FloodCount %s -> %s)" % (before, after))
+    surface.CurvatureWeight = weight
+    back = run()
+    check(np.array_equal(back["points"], result["points"]) and
+          np.array_equal(back["splat_radius"], result["splat_radius"]),
+          "back at CurvatureWeight %g: the first run's isopoints and splat radii to the bit"
+          % weight)
+    compare(back, serial)
 if "seed-move" in options:
     # Within the same component: the same flood, so the last outputs are handed on.
     surface.SeedCenter = [main[0] - main[3] / 6.0, main[1], main[2]]
