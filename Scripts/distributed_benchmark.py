@@ -89,6 +89,7 @@ seed_move_reused = surface.GetProperty("ReusedLastOutputs").GetElement(0)
 # Then a 2% isovalue change (QuickIsoValueChanges): every rank slides its surface.
 surface.IsoValue = new_iso.GetValue(0)
 iso_change = timed_rerun()
+iso_change_slid = surface.GetProperty("SlidLastSurface").GetElement(0)
 # Then CurvatureWeight doubled: the method runs in full, on the same particles (outside a
 # periodic box every rank keeps its ghosts, their neighbourhoods and the flood).
 floods = surface.GetProperty("FloodCount").GetElement(0)
@@ -114,7 +115,7 @@ if rank == 0:
         "seed_move_seconds": seed_move,
         "seed_move_reused": seed_move_reused,
         "isovalue_change_seconds": iso_change,
-        "isovalue_change_slid": surface.GetProperty("SlidLastSurface").GetElement(0),
+        "isovalue_change_slid": iso_change_slid,
         "curvature_weight_change_seconds": curvature_change,
         "curvature_weight_change_floods": curvature_floods,
         "per_rank": [{"filter_seconds": p[0], "communication_seconds": p[1], "particles": int(p[2]),
