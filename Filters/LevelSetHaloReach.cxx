@@ -2,10 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetHaloReach.h"
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-
-#include <array>
 
 #include <algorithm>
 #include <cmath>
@@ -268,41 +265,6 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
     box[2 * d] = -box[2 * d];
   }
   return !Aborted(aborted, 1.0);
-}
-
-void SidesFacingOtherRanks(const Neighborhoods& geometry, const Communicator& ranks, bool wanted[6])
-{
-  // Each side as a maximum (the lower bounds negated), over this rank's samples, then over all.
-  const std::size_t n = geometry.NumberOfSamples;
-  vtkSMPThreadLocal<std::array<double, 6>> local(
-    std::array<double, 6>{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL });
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    std::array<double, 6>& sides = local.Local();
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const double* x = geometry.Position(static_cast<std::size_t>(i));
-      for (int d = 0; d < 3; ++d)
-      {
-        sides[2 * d] = std::max(sides[2 * d], -x[d]);
-        sides[2 * d + 1] = std::max(sides[2 * d + 1], x[d]);
-      }
-    }
-  });
-  double mine[6] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (const std::array<double, 6>& sides : local)
-  {
-    for (int side = 0; side < 6; ++side)
-    {
-      mine[side] = std::max(mine[side], sides[side]);
-    }
-  }
-  double all[6];
-  std::copy(mine, mine + 6, all);
-  ranks.Max(all, 6);
-  for (int side = 0; side < 6; ++side)
-  {
-    wanted[side] = all[side] > mine[side];
-  }
 }
 
 } // namespace lsi

@@ -7,7 +7,6 @@
 #ifndef LevelSetHaloReach_h
 #define LevelSetHaloReach_h
 
-#include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
@@ -49,12 +48,6 @@ constexpr std::size_t HaloFirstPerSide = 64;
 bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, double box[6],
   std::size_t& computed, const AbortCheck& aborted, std::size_t firstPerSide = HaloFirstPerSide,
   const bool wanted[6] = nullptr);
-
-/// Which sides (-x, +x, -y, ...) of this rank's samples' bounds another rank holds samples
-/// beyond (collective: every rank calls it). The reach box matters on those sides only: on the
-/// others no rank has a sample it could send.
-void SidesFacingOtherRanks(
-  const Neighborhoods& geometry, const Communicator& ranks, bool wanted[6]);
 
 } // namespace lsi
 

@@ -721,8 +721,18 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   lsi::Distribution& ranks = *this->Internal->Ranks;
   // Only the sides beyond which another rank holds samples bound what it sends here: the
   // others are left unbounded, uncomputed (a slab of a split in x needs one side of six).
+  double own[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL }, all[6];
+  if (work->GetNumberOfPoints() > 0)
+  {
+    lsi::PointBounds(work->GetPoints(), own);
+  }
+  this->Bounds(work, all); // every rank's
   bool wanted[6];
-  lsi::SidesFacingOtherRanks(owned, ranks, wanted);
+  for (int d = 0; d < 3; ++d)
+  {
+    wanted[2 * d] = all[2 * d] < own[2 * d];
+    wanted[2 * d + 1] = all[2 * d + 1] > own[2 * d + 1];
+  }
   // (Every rank stops here if one aborted: the exchange below needs them all.)
   if (!ranks.All(lsi::HaloReachBox(owned, HaloRadii, band, reachBox, listed,
         this->Stage(AllListsStage), lsi::HaloFirstPerSide, wanted)))
@@ -781,12 +791,10 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::KeptGhosts(vtkPointSet* input)
     double band = 0.0;
     std::vector<double> support;
     this->HaloInputs(last.Owned, band, support);
-    // (Looked up, never searched: LastGeometry would search for a new NumberOfNeighbors.)
     if (!box.Enabled && problem.empty() && band == last.HaloBand &&
-      lsi::ValueFingerprint(support) == last.HaloSupport && last.Valid && last.SurfaceReady &&
-      input == last.Input && lsi::InputStamp::Of(input, this->ScalarsOf(input)) == last.Stamp)
+      lsi::ValueFingerprint(support) == last.HaloSupport)
     {
-      geometry = this->Internal->Cache.Find(last.Work->GetPoints(), this->NumberOfNeighbors);
+      geometry = this->LastGeometry(input, false);
     }
   }
   return this->Internal->Ranks->All(geometry != nullptr) ? geometry : nullptr;

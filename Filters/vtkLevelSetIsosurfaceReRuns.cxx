@@ -201,13 +201,12 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
   {
     return nullptr;
   }
-  bool searched = false;
+  // (Looked up, never searched: one not cached, after a change of NumberOfNeighbors say, would
+  // only be thrown away.)
   vtkPoints* points = last.Work ? last.Work->GetPoints() : input->GetPoints();
-  const lsi::Neighborhoods* geometry = this->Internal->Cache.Get(points, this->NumberOfNeighbors,
-    static_cast<std::size_t>(this->NeighborCacheSize), lsi::AbortCheck(), searched);
-  return geometry && !searched && (!withFlood || geometry->NumberOfSamples == last.Inside.size())
-    ? geometry
-    : nullptr;
+  const lsi::Neighborhoods* geometry = this->Internal->Cache.Find(points, this->NumberOfNeighbors);
+  return geometry && (!withFlood || geometry->NumberOfSamples == last.Inside.size()) ? geometry
+                                                                                     : nullptr;
 }
 
 bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
