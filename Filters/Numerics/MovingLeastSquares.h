@@ -217,6 +217,66 @@ bool FitLinear(const double centre[3], std::size_t count, PositionFn position, V
   return true;
 }
 
+/// Solves A x = b for a symmetric positive definite A given by its lower triangle, by LDL^T
+/// without pivoting. False (x unset) when a pivot is not positive or is below `relative` times
+/// the largest: the matrix is singular or too ill-conditioned for the solve to mean anything.
+template <int N>
+bool SolveSymmetricDefinite(const Eigen::Matrix<double, N, N>& a,
+  const Eigen::Matrix<double, N, 1>& b, double relative, Eigen::Matrix<double, N, 1>& x)
+{
+  double l[N][N]; // l[i][k], k < i: the unit lower factor; l[i][i]: pivot i
+  double largest = 0.0, smallest = HUGE_VAL;
+  for (int j = 0; j < N; ++j)
+  {
+    double dj = a(j, j);
+    double ld[N]; // l[j][k] * d_k
+    for (int k = 0; k < j; ++k)
+    {
+      ld[k] = l[j][k] * l[k][k];
+      dj -= l[j][k] * ld[k];
+    }
+    if (!(dj > 0.0))
+    {
+      return false;
+    }
+    l[j][j] = dj;
+    largest = std::max(largest, dj);
+    smallest = std::min(smallest, dj);
+    for (int i = j + 1; i < N; ++i)
+    {
+      double sum = a(i, j);
+      for (int k = 0; k < j; ++k)
+      {
+        sum -= l[i][k] * ld[k];
+      }
+      l[i][j] = sum / dj;
+    }
+  }
+  if (!(smallest >= relative * largest))
+  {
+    return false;
+  }
+  for (int i = 0; i < N; ++i) // L y = b
+  {
+    double sum = b[i];
+    for (int k = 0; k < i; ++k)
+    {
+      sum -= l[i][k] * x[k];
+    }
+    x[i] = sum;
+  }
+  for (int i = N - 1; i >= 0; --i) // D L^T x = y
+  {
+    double sum = x[i] / l[i][i];
+    for (int k = i + 1; k < N; ++k)
+    {
+      sum -= l[k][i] * x[k];
+    }
+    x[i] = sum;
+  }
+  return true;
+}
+
 /// The weighted least-squares fit of per-sample values around `centre` that the data support:
 /// quadratic (basis 1, x, y, z and the six second-order monomials, in coordinates centred and
 /// scaled by 1/h; the linear fit's weights) where its six second-order terms explain
@@ -302,14 +362,12 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   const double samples = sumWeights * sumWeights / sumSquaredWeights; // effective count
   if (samples >= 16.0)
   {
-    // Pivoted LDL^T (a tenth of an eigendecomposition's cost); its pivots' spread measures the
-    // conditioning.
-    const Eigen::LDLT<Matrix10, Eigen::Lower> ldlt(normal);
-    const Vector10 pivots = ldlt.vectorD().cwiseAbs();
-    if (ldlt.info() == Eigen::Success && pivots.maxCoeff() > 0.0 &&
-      pivots.minCoeff() >= 1e-7 * pivots.maxCoeff())
+    // LDL^T without pivoting (the normal matrix is positive semi-definite: pivoting adds no
+    // stability; Eigen's pivoted LDLT was a sixth of the fit's time); its pivots' spread
+    // measures the conditioning.
+    Vector10 full;
+    if (SolveSymmetricDefinite(normal, right, 1e-7, full))
     {
-      const Vector10 full = ldlt.solve(right);
       double linearResidual = 0.0, quadraticResidual = 0.0;
       for (std::size_t j = 0; j < count; ++j)
       {

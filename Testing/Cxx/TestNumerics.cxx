@@ -179,6 +179,60 @@ void TestMLS()
     "a NaN position: every linear fit reports it singular");
 }
 
+// The LDL^T solve of the quadratic fit: the solution of random symmetric positive definite
+// systems to rounding; refused when a pivot vanishes (a singular matrix), is negative (an
+// indefinite one) or is below the relative threshold (near-singular).
+void TestSolveSymmetricDefinite()
+{
+  using Matrix10 = Eigen::Matrix<double, 10, 10>;
+  using Vector10 = Eigen::Matrix<double, 10, 1>;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial)
+  {
+    Matrix10 m;
+    for (int i = 0; i < 10; ++i)
+    {
+      for (int j = 0; j < 10; ++j)
+      {
+        m(i, j) = u(random);
+      }
+    }
+    const Matrix10 a = m * m.transpose() + 0.1 * Matrix10::Identity();
+    Vector10 x, exact;
+    for (int i = 0; i < 10; ++i)
+    {
+      exact[i] = u(random);
+    }
+    const Vector10 b = a * exact;
+    // (Only the lower triangle is read: the upper one is garbage here.)
+    Matrix10 lower = a;
+    for (int i = 0; i < 10; ++i)
+    {
+      for (int j = i + 1; j < 10; ++j)
+      {
+        lower(i, j) = 1e300;
+      }
+    }
+    const bool ok = lsi::SolveSymmetricDefinite(lower, b, 1e-12, x);
+    Check(ok && (x - exact).norm() < 1e-8 * exact.norm(),
+      "the LDL^T solve of a positive definite system is exact to rounding");
+  }
+  Matrix10 singular = Matrix10::Identity();
+  singular(9, 9) = 0.0;
+  Vector10 x = Vector10::Zero();
+  const Vector10 b = Vector10::Ones();
+  Check(!lsi::SolveSymmetricDefinite(singular, b, 0.0, x), "a zero pivot is refused");
+  Matrix10 indefinite = Matrix10::Identity();
+  indefinite(4, 4) = -1.0;
+  Check(!lsi::SolveSymmetricDefinite(indefinite, b, 0.0, x), "a negative pivot is refused");
+  Matrix10 nearSingular = Matrix10::Identity();
+  nearSingular(3, 3) = 1e-9;
+  Check(!lsi::SolveSymmetricDefinite(nearSingular, b, 1e-7, x) &&
+      lsi::SolveSymmetricDefinite(nearSingular, b, 1e-10, x) && std::abs(x[3] - 1e9) < 1e-3,
+    "a pivot below the relative threshold is refused, above it solved");
+}
+
 void TestQuadraticFit()
 {
   // A quadratic field on 54 scattered samples: value and gradient exact (to rounding) at a
@@ -1109,6 +1163,7 @@ int main()
   TestSolveOnLine();
   TestSplines();
   TestMLS();
+  TestSolveSymmetricDefinite();
   TestQuadraticFit();
   TestTheorem1();
   TestReinitialization();
