@@ -721,12 +721,8 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithGhosts(
   lsi::Distribution& ranks = *this->Internal->Ranks;
   // Only the sides beyond which another rank holds samples bound what it sends here: the
   // others are left unbounded, uncomputed (a slab of a split in x needs one side of six).
-  double own[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL }, all[6];
-  if (work->GetNumberOfPoints() > 0)
-  {
-    lsi::PointBounds(work->GetPoints(), own);
-  }
-  this->Bounds(work, all); // every rank's
+  double all[6], own[6];
+  this->Bounds(work, all, own); // every rank's, and this rank's
   bool wanted[6];
   for (int d = 0; d < 3; ++d)
   {
@@ -845,18 +841,23 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::WithPeriodicImages(
   return work;
 }
 
-void vtkLevelSetIsosurface::Bounds(vtkPointSet* input, double bounds[6])
+void vtkLevelSetIsosurface::Bounds(vtkPointSet* input, double bounds[6], double own[6])
 {
   // Under MPI, the whole input's: the largest of -min and max over the ranks.
-  double signedBounds[6] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  double local[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
   if (input->GetNumberOfPoints() > 0)
   {
-    lsi::PointBounds(input->GetPoints(), bounds);
-    for (int d = 0; d < 3; ++d)
-    {
-      signedBounds[2 * d] = -bounds[2 * d];
-      signedBounds[2 * d + 1] = bounds[2 * d + 1];
-    }
+    lsi::PointBounds(input->GetPoints(), local);
+  }
+  if (own)
+  {
+    std::copy(local, local + 6, own);
+  }
+  double signedBounds[6];
+  for (int d = 0; d < 3; ++d)
+  {
+    signedBounds[2 * d] = -local[2 * d];
+    signedBounds[2 * d + 1] = local[2 * d + 1];
   }
   this->Internal->Ranks->Max(signedBounds, 6);
   for (int d = 0; d < 3; ++d)

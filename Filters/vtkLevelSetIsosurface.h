@@ -645,7 +645,9 @@ private:
   void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& phi, const lsi::IsopointSet& isopoints);
   lsi::SPHFieldRequest SPHRequest() const;
-  void Bounds(vtkPointSet* input, double bounds[6]);
+  // The input's bounds over every rank; `own` (if given) receives this rank's alone (empty:
+  // +inf, -inf, ...).
+  void Bounds(vtkPointSet* input, double bounds[6], double own[6] = nullptr);
   // Under MPI, messages about the whole run come from rank 0 only.
   bool ReportsForAll() const;
   vtkSmartPointer<vtkPointSet> WithPeriodicImages(vtkPointSet* input, std::vector<double>& values);

@@ -8,7 +8,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/Scripts/setup-debian12.sh"
 cd "$here/build"
-# Two tests at a time (this machine's cores; 15 -> about 12 minutes). The one test that times
+# Two tests at a time (this machine's cores; 15 -> 13 minutes here). The one test that times
 # something, TestAbortLatency, runs alone (RUN_SERIAL).
 ctest --output-on-failure --timeout 600 -j 2
 bash "$here/Fuzz/run-fuzzers.sh"
