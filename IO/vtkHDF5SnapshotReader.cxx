@@ -345,11 +345,7 @@ vtkHDF5SnapshotReader::~vtkHDF5SnapshotReader() = default;
 
 std::string vtkHDF5SnapshotReader::ParticleTypeName(int number)
 {
-  static const char* const names[] = { "Gas", "DarkMatter", nullptr, nullptr, "Stars",
-    "BlackHoles" };
-  const std::string part = "PartType" + std::to_string(number);
-  return number >= 0 && number < 6 && names[number] ? std::string(names[number]) + " (" + part + ")"
-                                                    : part;
+  return PartTypeName(number);
 }
 
 bool vtkHDF5SnapshotReader::CanReadFile(const char* name)

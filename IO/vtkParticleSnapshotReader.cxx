@@ -60,6 +60,15 @@ void vtkParticleSnapshotReader::SetParticleTypeStatus(const char* name, int stat
   this->ParticleTypeSelection->SetArraySetting(name, status);
 }
 
+std::string vtkParticleSnapshotReader::PartTypeName(int number)
+{
+  static const char* const names[] = { "Gas", "DarkMatter", nullptr, nullptr, "Stars",
+    "BlackHoles" };
+  const std::string part = "PartType" + std::to_string(number);
+  return number >= 0 && number < 6 && names[number] ? std::string(names[number]) + " (" + part + ")"
+                                                    : part;
+}
+
 vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
 {
   vtkNew<vtkIdTypeArray> ids;

@@ -53,6 +53,12 @@ public:
   void SetParticleTypeStatus(const char* name, int status);
   ///@}
 
+  /**
+   * The name of GADGET's particle type `number` (PartType<number>) in the selection, as the
+   * GADGET-family readers give it: "Gas (PartType0)", "DarkMatter (PartType1)", "PartType2", ...
+   */
+  static std::string PartTypeName(int number);
+
   /** One vertex cell per point 0 .. count-1. */
   static vtkNew<vtkCellArray> VertexCells(vtkIdType count);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkTipsyParticleReader.h"
 
+#include "ByteOrder.h"
+
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -27,24 +29,7 @@ struct TipsyHeader
   bool BigEndian = true;
 };
 
-template <typename T>
-T FromBytes(const char* bytes, bool bigEndian)
-{
-  char copy[sizeof(T)];
-  std::memcpy(copy, bytes, sizeof(T));
-  const std::uint16_t probe = 1;
-  const bool hostLittle = *reinterpret_cast<const char*>(&probe) == 1;
-  if (bigEndian == hostLittle)
-  {
-    for (std::size_t i = 0; i < sizeof(T) / 2; ++i)
-    {
-      std::swap(copy[i], copy[sizeof(T) - 1 - i]);
-    }
-  }
-  T value;
-  std::memcpy(&value, copy, sizeof(T));
-  return value;
-}
+using lsi::FromBytes;
 
 bool Plausible(const TipsyHeader& h, std::uint64_t fileSize)
 {

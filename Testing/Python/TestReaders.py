@@ -7,7 +7,8 @@ chosen by ParaView's reader factory) and checks particle counts per type, array 
 lengths, masses, Time and BoxSize:
 - DATA_DIR (the repository's Data/): the three ChaNGa Tipsy files and the SWIFT snapshot;
 - SNAPSHOT_DIR: the snapshots make_test_snapshots.py writes (a GADGET-4 snapshot in two files,
-  an AREPO-style file);
+  an AREPO-style file, the same particles as GADGET-2 binary snapshots, SnapFormat 1 in two
+  files and 2);
 - SHARED_DATA_DIR (optional, ../shared/data when it is beside the clone): every HDF5 and Tipsy
   file there, the GADGET-4 gas sphere as a time series of four snapshots.
 Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
@@ -106,6 +107,38 @@ check_points(parts[1], "GADGET-4 in two files, dark matter", 40, ["Velocities", 
 _, arepo = open_file(os.path.join(snapshot_dir, "arepo_like.hdf5"))
 check_points(arepo, "AREPO-style, no SmoothingLength", 60, ["Density", "Masses"], time=0.5,
              box=4.0)
+
+# GADGET-2 binary: the GADGET-4 snapshot's particles in two files (format 1), its gas alone
+# (format 2, big-endian, double precision), found by name (snap_*, snapshot_*) and content.
+_, binary = open_file(os.path.join(snapshot_dir, "snap_format1.1"),
+                      ["Gas (PartType0)", "1", "DarkMatter (PartType1)", "1"])
+parts = blocks(binary) if binary is not None and binary.IsA("vtkMultiBlockDataSet") else [None, None]
+check_points(parts[0], "GADGET-2 binary in two files, gas", 50,
+             ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
+             masses=(0.25, 0.25), time=2.5, box=10.0)
+check_points(parts[1], "GADGET-2 binary in two files, dark matter", 40, ["Velocities", "Masses"],
+             masses=(0.5, 0.5))
+if parts[0] is not None and gadget is not None and gadget.IsA("vtkMultiBlockDataSet"):
+    hdf5_gas = gadget.GetBlock(0)
+    same = all(max(abs(a - b) for a, b in zip(parts[0].GetPoint(k), hdf5_gas.GetPoint(k))) <
+               1e-6 * max(abs(c) for c in hdf5_gas.GetPoint(k)) and
+               abs(parts[0].GetPointData().GetArray("Density").GetValue(k) -
+                   hdf5_gas.GetPointData().GetArray("Density").GetValue(k)) < 1e-5 *
+               hdf5_gas.GetPointData().GetArray("Density").GetValue(k)
+               for k in range(50))
+    check(same, "GADGET-2 binary gas: the HDF5 snapshot's positions and densities (to single "
+          "precision)")
+reader, big = open_file(os.path.join(snapshot_dir, "snapshot_format2_big"))
+check(reader is not None and reader.GetXMLName() == "GadgetBinaryReader",
+      "snapshot_format2_big opened by the GADGET Binary Snapshot Reader (got %s)"
+      % (reader.GetXMLName() if reader else None))
+check_points(big, "GADGET-2 binary format 2, big-endian", 50,
+             ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
+             masses=(0.25, 0.25), time=0.75)
+check(big is not None and big.GetPoints().GetDataType() == 11 and
+      big.GetPointData().GetGlobalIds() is not None and
+      big.GetPointData().GetGlobalIds().GetValue(49) == 1049,
+      "format 2: double-precision positions, 8-byte ids as the global ids")
 
 # ../shared/data, when it is beside the clone: every HDF5 and Tipsy file.
 if shared:

@@ -19,6 +19,12 @@ tests can check each one.
   NumPart_ThisFile), bad_columns.0/1.hdf5 (Velocities with 3 columns, then 5),
   bad_types.0/1.hdf5 (InternalEnergy text, then numbers).
 - string_arrays.hdf5: Header attributes that are arrays of strings, fixed and variable length.
+- snap_format1.0, snap_format1.1: the same particles as gadget4_multi (50 gas with masses 0.25
+  in a MASS block, 40 dark matter with 0.5 in the mass table) as one GADGET-2 binary snapshot
+  in two files, SnapFormat 1, little-endian, single precision; snapshot_format2_big: the gas
+  alone, SnapFormat 2, big-endian, double precision, 8-byte ids (both read by
+  vtkGadgetBinaryReader; the header packed here with numpy's structured dtype, GADGET-2's
+  io_header).
 """
 import os
 import sys
@@ -62,6 +68,50 @@ def dark(group, first, count):
     group["Coordinates"] = np.stack([-1.0 - i, 2.0 * i, 3.0 + 0 * i], axis=1).astype(np.float32)
     group["Velocities"] = np.zeros((count, 3), dtype=np.float32)
     group["ParticleIDs"] = (5000 + i).astype(np.uint64)
+
+
+# GADGET-2's io_header (256 bytes): the fields before the fill, in order.
+GADGET_HEADER = [("npart", "i4", 6), ("mass", "f8", 6), ("time", "f8"), ("redshift", "f8"),
+                 ("flag_sfr", "i4"), ("flag_feedback", "i4"), ("npartTotal", "u4", 6),
+                 ("flag_cooling", "i4"), ("num_files", "i4"), ("BoxSize", "f8"),
+                 ("Omega0", "f8"), ("OmegaLambda", "f8"), ("HubbleParam", "f8"),
+                 ("flag_stellarage", "i4"), ("flag_metals", "i4"),
+                 ("npartTotalHighWord", "u4", 6), ("flag_entropy_instead_u", "i4")]
+
+
+def write_gadget(name, this_file, total, mass_table, time, box, files, blocks, fmt, order):
+    """One file of a GADGET binary snapshot: `blocks` a list of (label, array) in file order,
+    `order` '<' or '>' (byte order), `fmt` 1 or 2 (labelled blocks)."""
+    dtype = np.dtype([(f[0], order + f[1], f[2]) if len(f) == 3 else (f[0], order + f[1])
+                      for f in GADGET_HEADER])
+    head = np.zeros(1, dtype=dtype)
+    head["npart"], head["mass"], head["time"] = this_file, mass_table, time
+    head["npartTotal"], head["num_files"], head["BoxSize"] = total, files, box
+    raw = head.tobytes() + bytes(256 - dtype.itemsize)
+    with open(name, "wb") as f:
+        def record(data):
+            length = np.array([len(data)], dtype=order + "i4").tobytes()
+            f.write(length + data + length)
+        for label, data in [("HEAD", raw)] + [(l, a.astype(a.dtype.newbyteorder(order)).tobytes())
+                                              for l, a in blocks]:
+            if fmt == 2:
+                record(label.ljust(4).encode() + np.array([len(data) + 8], order + "i4").tobytes())
+            record(data)
+
+
+def gadget_blocks(g0, gn, d0, dn, real, ids):
+    """POS, VEL, ID, MASS (gas only: dark matter's mass is in the table), U, RHO, HSML of gas
+    [g0, g0 + gn) and dark matter [d0, d0 + dn), with gas()'s and dark()'s values."""
+    i, j = np.arange(g0, g0 + gn), np.arange(d0, d0 + dn)
+    gas_xyz = np.stack([gas_value(i, 0), gas_value(i, 1), gas_value(i, 2)], axis=1)
+    dark_xyz = np.stack([-1.0 - j, 2.0 * j, 3.0 + 0 * j], axis=1)
+    blocks = [("POS", np.concatenate([gas_xyz, dark_xyz]).astype(real)),
+              ("VEL", np.concatenate([-gas_xyz, np.zeros((dn, 3))]).astype(real)),
+              ("ID", np.concatenate([1000 + i, 5000 + j]).astype(ids)),
+              ("MASS", np.full(gn, 0.25).astype(real)),
+              ("U", gas_value(i, 4).astype(real)), ("RHO", gas_value(i, 3).astype(real)),
+              ("HSML", gas_value(i, 5).astype(real))]
+    return [(label, data) for label, data in blocks if len(data)]
 
 
 def main(out):
@@ -144,6 +194,13 @@ def main(out):
         f["Header"].attrs.create("Variable", ["alpha", "beta", "gamma"],
                                  dtype=h5py.string_dtype())
         gas(f.create_group("PartType0"), 0, 10)
+    # GADGET-2 binary: the same particles in two files (format 1), the gas alone (format 2).
+    for part, (g0, gn, d0, dn) in enumerate([(0, 30, 0, 25), (30, 20, 25, 15)]):
+        write_gadget(path("snap_format1.%d" % part), [gn, dn, 0, 0, 0, 0], [50, 40, 0, 0, 0, 0],
+                     [0, 0.5, 0, 0, 0, 0], 2.5, 10.0, 2,
+                     gadget_blocks(g0, gn, d0, dn, np.float32, np.uint32), 1, "<")
+    write_gadget(path("snapshot_format2_big"), [50, 0, 0, 0, 0, 0], [50, 0, 0, 0, 0, 0],
+                 [0] * 6, 0.75, 0.0, 1, gadget_blocks(0, 50, 0, 0, np.float64, np.uint64), 2, ">")
     print("wrote the test snapshots to", out)
 
 

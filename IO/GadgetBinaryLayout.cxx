@@ -1,0 +1,449 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "GadgetBinaryLayout.h"
+
+#include "ByteOrder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace lsi
+{
+namespace gadget
+{
+namespace
+{
+constexpr std::uint32_t HeaderBytes = 256;
+constexpr std::uint32_t LabelBytes = 8; // format 2: 4 characters and the next record's length
+
+// Which types a block covers, by what the block holds.
+enum class Coverage
+{
+  All,     // every type present (positions, velocities, ids, ...)
+  Massive, // types present whose MassTable entry is 0 (the MASS block)
+  Gas,     // type 0 (internal energy, density, smoothing length, ...)
+  Stars,   // type 4 (stellar ages)
+  GasStars // types 0 and 4 (metallicities)
+};
+
+struct KnownBlock
+{
+  const char* Label; // format 2's, without trailing blanks
+  const char* Name;
+  int Components;
+  bool Integer;
+  Coverage Covers;
+};
+
+// GADGET-2/3's blocks, in format 1's order (io.c; NE and NH only with cooling, SFR with star
+// formation, AGE with stellar ages, Z with metals: the header's flags).
+const KnownBlock Known[] = {
+  { "POS", "Coordinates", 3, false, Coverage::All },
+  { "VEL", "Velocities", 3, false, Coverage::All },
+  { "ID", "ParticleIDs", 1, true, Coverage::All },
+  { "MASS", "Masses", 1, false, Coverage::Massive },
+  { "U", "InternalEnergy", 1, false, Coverage::Gas },
+  { "RHO", "Density", 1, false, Coverage::Gas },
+  { "NE", "ElectronAbundance", 1, false, Coverage::Gas },
+  { "NH", "NeutralHydrogenAbundance", 1, false, Coverage::Gas },
+  { "HSML", "SmoothingLength", 1, false, Coverage::Gas },
+  { "SFR", "StarFormationRate", 1, false, Coverage::Gas },
+  { "AGE", "StellarFormationTime", 1, false, Coverage::Stars },
+  { "Z", "Metallicity", 1, false, Coverage::GasStars },
+  { "POT", "Potential", 1, false, Coverage::All },
+  { "ACCE", "Acceleration", 3, false, Coverage::All },
+  { "ENDT", "RateOfChangeOfEntropy", 1, false, Coverage::Gas },
+  { "TSTP", "TimeStep", 1, false, Coverage::All },
+};
+
+const KnownBlock* KnownByLabel(const std::string& label)
+{
+  for (const KnownBlock& known : Known)
+  {
+    if (label == known.Label)
+    {
+      return &known;
+    }
+  }
+  return nullptr;
+}
+
+// Format 1's blocks in order, as the header's flags say the file has them (the blocks after Z
+// depend on compile-time options no header records: not named).
+std::vector<const KnownBlock*> FormatOneOrder(const Header& head)
+{
+  std::vector<const KnownBlock*> order;
+  for (const KnownBlock& known : Known)
+  {
+    const std::string label = known.Label;
+    if ((label == "NE" || label == "NH") && !head.FlagCooling)
+    {
+      continue;
+    }
+    if ((label == "SFR" && !head.FlagSfr) || (label == "AGE" && !head.FlagStellarAge) ||
+      (label == "Z" && !head.FlagMetals))
+    {
+      continue;
+    }
+    order.push_back(&known);
+    if (label == "Z")
+    {
+      break;
+    }
+  }
+  return order;
+}
+
+std::array<bool, NumberOfTypes> Covered(const Header& head, Coverage coverage)
+{
+  std::array<bool, NumberOfTypes> covers{};
+  for (int t = 0; t < NumberOfTypes; ++t)
+  {
+    const bool present = head.ThisFile[t] > 0;
+    switch (coverage)
+    {
+      case Coverage::All:
+        covers[t] = present;
+        break;
+      case Coverage::Massive:
+        covers[t] = present && head.MassTable[t] == 0.0;
+        break;
+      case Coverage::Gas:
+        covers[t] = present && t == 0;
+        break;
+      case Coverage::Stars:
+        covers[t] = present && t == 4;
+        break;
+      case Coverage::GasStars:
+        covers[t] = present && (t == 0 || t == 4);
+        break;
+    }
+  }
+  return covers;
+}
+
+long long CountCovered(const Header& head, const std::array<bool, NumberOfTypes>& covers)
+{
+  long long count = 0;
+  for (int t = 0; t < NumberOfTypes; ++t)
+  {
+    count += covers[t] ? head.ThisFile[t] : 0;
+  }
+  return count;
+}
+
+// The bytes per value of a block of `bytes` over `count` particles of `components` values: 4 or
+// 8, else 0 (the size does not fit).
+int ValueBytesFor(std::uint64_t bytes, long long count, int components)
+{
+  if (count <= 0)
+  {
+    return 0;
+  }
+  const std::uint64_t per = static_cast<std::uint64_t>(count) * components;
+  for (int valueBytes : { 4, 8 })
+  {
+    if (bytes == per * valueBytes)
+    {
+      return valueBytes;
+    }
+  }
+  return 0;
+}
+
+// Gives `block` the name and coverage of `known` if its size fits them. (Some initial
+// conditions hold a MASS block of every type even where the mass table has a mass: read too.)
+bool Describe(const Header& head, const KnownBlock& known, std::uint64_t bytes, Block& block)
+{
+  block.Name = known.Name;
+  block.Components = known.Components;
+  block.Integer = known.Integer;
+  for (Coverage coverage : { known.Covers, Coverage::All })
+  {
+    block.Covers = Covered(head, coverage);
+    block.ValueBytes = ValueBytesFor(bytes, CountCovered(head, block.Covers), known.Components);
+    if (block.ValueBytes != 0 || known.Covers != Coverage::Massive)
+    {
+      break;
+    }
+  }
+  return block.ValueBytes != 0;
+}
+
+// A block of unknown meaning: every type or the gas, one value or three per particle, as its
+// size fits (in that order of preference). Named `name`.
+bool DescribeUnknown(const Header& head, const std::string& name, std::uint64_t bytes, Block& block)
+{
+  for (Coverage coverage : { Coverage::All, Coverage::Gas })
+  {
+    for (int components : { 1, 3 })
+    {
+      const KnownBlock guess = { "", "", components, false, coverage };
+      if (Describe(head, guess, bytes, block))
+      {
+        block.Name = name;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool ParseHeader(const char* b, bool big, Header& head, std::string& problem)
+{
+  auto i32 = [&](int at) { return FromBytes<std::int32_t>(b + at, big); };
+  auto u32 = [&](int at) { return FromBytes<std::uint32_t>(b + at, big); };
+  auto f64 = [&](int at) { return FromBytes<double>(b + at, big); };
+  for (int t = 0; t < NumberOfTypes; ++t)
+  {
+    const std::int32_t thisFile = i32(4 * t);
+    if (thisFile < 0)
+    {
+      problem = "the header counts " + std::to_string(thisFile) + " particles of type " +
+        std::to_string(t) + " (not a GADGET-1/2/3 binary snapshot, or damaged)";
+      return false;
+    }
+    head.ThisFile[t] = thisFile;
+    head.MassTable[t] = f64(24 + 8 * t);
+    head.Total[t] =
+      static_cast<long long>(u32(96 + 4 * t)) + (static_cast<long long>(u32(168 + 4 * t)) << 32);
+  }
+  head.Time = f64(72);
+  head.Redshift = f64(80);
+  head.FlagSfr = i32(88);
+  head.FlagFeedback = i32(92);
+  head.FlagCooling = i32(120);
+  head.NumFiles = std::max<std::int32_t>(1, i32(124)); // 0 in some hand-made initial conditions
+  head.BoxSize = f64(128);
+  head.Omega0 = f64(136);
+  head.OmegaLambda = f64(144);
+  head.HubbleParam = f64(152);
+  head.FlagStellarAge = i32(160);
+  head.FlagMetals = i32(164);
+  head.FlagEntropyICs = i32(192);
+  if (!std::isfinite(head.Time) || !std::isfinite(head.BoxSize))
+  {
+    problem = "the header's time or box size is not a finite number (not a GADGET-1/2/3 binary "
+              "snapshot, or damaged)";
+    return false;
+  }
+  for (double m : head.MassTable)
+  {
+    if (!(m >= 0.0) || !std::isfinite(m))
+    {
+      problem = "the header's mass table holds " + std::to_string(m) +
+        " (not a GADGET-1/2/3 binary snapshot, or damaged)";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Reads a record's length at `at`, checks the same length follows the record: its data then
+// lie at at + 4, `length` bytes.
+bool ReadRecord(std::istream& in, std::uint64_t size, std::uint64_t at, bool big,
+  std::uint32_t& length, std::string& problem)
+{
+  char bytes[4];
+  if (at + 4 > size || !in.seekg(static_cast<std::streamoff>(at)) || !in.read(bytes, 4))
+  {
+    problem = "the file ends inside a record's length at byte " + std::to_string(at);
+    return false;
+  }
+  length = FromBytes<std::uint32_t>(bytes, big);
+  const std::uint64_t end = at + 4 + static_cast<std::uint64_t>(length);
+  if (end + 4 > size || !in.seekg(static_cast<std::streamoff>(end)) || !in.read(bytes, 4))
+  {
+    problem = "a record of " + std::to_string(length) + " bytes at byte " + std::to_string(at) +
+      " runs past the end of the file (truncated?)";
+    return false;
+  }
+  if (FromBytes<std::uint32_t>(bytes, big) != length)
+  {
+    problem = "the record at byte " + std::to_string(at) +
+      " does not end with its length (damaged, or not a GADGET binary snapshot)";
+    return false;
+  }
+  return true;
+}
+
+std::string Trimmed(const char* label)
+{
+  std::string text(label, 4);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\0'))
+  {
+    text.pop_back();
+  }
+  return text;
+}
+} // namespace
+
+const Block* FileLayout::Find(const std::string& name, int type) const
+{
+  for (const Block& block : this->Blocks)
+  {
+    if (block.Name == name && block.Covers[type])
+    {
+      return &block;
+    }
+  }
+  return nullptr;
+}
+
+bool LooksLikeGadget(const char* firstBytes, std::size_t size)
+{
+  if (size < 4)
+  {
+    return false;
+  }
+  for (bool big : { false, true })
+  {
+    const std::uint32_t first = FromBytes<std::uint32_t>(firstBytes, big);
+    if (first == HeaderBytes || first == LabelBytes)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::string& problem)
+{
+  layout = FileLayout();
+  char first[4];
+  if (size < 4 || !in.seekg(0) || !in.read(first, 4) || !LooksLikeGadget(first, 4))
+  {
+    problem = "not a GADGET binary snapshot (its first record is neither the 256-byte header "
+              "of format 1 nor the 8-byte label of format 2; GADGET-4's own binary header is "
+              "not read: write HDF5, SnapFormat 3)";
+    return false;
+  }
+  std::uint32_t length = FromBytes<std::uint32_t>(first, false);
+  layout.BigEndian = !(length == HeaderBytes || length == LabelBytes); // read as little-endian
+  const bool big = layout.BigEndian;
+  length = FromBytes<std::uint32_t>(first, big);
+  layout.Format2 = length == LabelBytes;
+  std::uint64_t at = 0;
+  // Format 2: the label of the next block, and where that block's record starts.
+  auto readLabel = [&](std::string& label) {
+    std::uint32_t labelLength = 0;
+    if (!ReadRecord(in, size, at, big, labelLength, problem))
+    {
+      return false;
+    }
+    char bytes[LabelBytes];
+    if (labelLength != LabelBytes || !in.seekg(static_cast<std::streamoff>(at + 4)) ||
+      !in.read(bytes, LabelBytes))
+    {
+      problem = "a block label at byte " + std::to_string(at) + " is not 8 bytes (format 2)";
+      return false;
+    }
+    label = Trimmed(bytes);
+    at += 4 + LabelBytes + 4;
+    return true;
+  };
+  std::string label;
+  if (layout.Format2 && !readLabel(label))
+  {
+    return false;
+  }
+  if (!ReadRecord(in, size, at, big, length, problem))
+  {
+    return false;
+  }
+  char header[HeaderBytes];
+  if (length != HeaderBytes || !in.seekg(static_cast<std::streamoff>(at + 4)) ||
+    !in.read(header, HeaderBytes))
+  {
+    problem = "the header record is " + std::to_string(length) +
+      " bytes, not 256 (GADGET-1/2/3; GADGET-4 binary snapshots are not read: write HDF5, "
+      "SnapFormat 3)";
+    return false;
+  }
+  if (!ParseHeader(header, big, layout.Head, problem))
+  {
+    return false;
+  }
+  at += 4 + HeaderBytes + 4;
+  const Header& head = layout.Head;
+  const std::vector<const KnownBlock*> order = FormatOneOrder(head);
+  std::size_t next = 0;     // format 1: the next block expected in `order`
+  bool orderBroken = false; // format 1: a block that did not fit the order was met
+  int number = 0;           // blocks after the header
+  while (at < size)
+  {
+    ++number;
+    if (layout.Format2 && !readLabel(label))
+    {
+      return false;
+    }
+    if (!ReadRecord(in, size, at, big, length, problem))
+    {
+      return false;
+    }
+    Block block;
+    block.Offset = at + 4;
+    at += 4 + static_cast<std::uint64_t>(length) + 4;
+    bool described = false;
+    std::string unknownName;
+    if (layout.Format2)
+    {
+      const KnownBlock* known = KnownByLabel(label);
+      described = known && Describe(head, *known, length, block);
+      unknownName = label.empty() ? "Block" + std::to_string(number) : label;
+    }
+    else
+    {
+      // Blocks covering no particle are not written: skip them in the order.
+      while (!orderBroken && next < order.size() &&
+        CountCovered(head, Covered(head, order[next]->Covers)) == 0)
+      {
+        ++next;
+      }
+      if (!orderBroken && next < order.size())
+      {
+        described = Describe(head, *order[next], length, block);
+        orderBroken = !described;
+        next += described ? 1 : 0;
+      }
+      unknownName = "Block" + std::to_string(number);
+    }
+    if (!described && !DescribeUnknown(head, unknownName, length, block))
+    {
+      layout.LeftOut.push_back(unknownName);
+      continue;
+    }
+    if (std::any_of(layout.Blocks.begin(), layout.Blocks.end(),
+          [&](const Block& earlier) { return earlier.Name == block.Name; }))
+    {
+      layout.LeftOut.push_back(block.Name + " (again)");
+      continue;
+    }
+    layout.Blocks.push_back(block);
+  }
+  const bool anyParticles = std::any_of(
+    head.ThisFile.begin(), head.ThisFile.end(), [](long long count) { return count > 0; });
+  if (anyParticles && !std::any_of(layout.Blocks.begin(), layout.Blocks.end(), [](const Block& b) {
+        return b.Name == "Coordinates";
+      }))
+  {
+    problem = "no block of positions fits the header's particle counts";
+    return false;
+  }
+  return true;
+}
+
+std::uint64_t ValueOffset(const FileLayout& layout, const Block& block, int type, long long index)
+{
+  long long before = 0;
+  for (int t = 0; t < type; ++t)
+  {
+    before += block.Covers[t] ? layout.Head.ThisFile[t] : 0;
+  }
+  const std::uint64_t valueBytes = static_cast<std::uint64_t>(block.ValueBytes) * block.Components;
+  return block.Offset + static_cast<std::uint64_t>(before + index) * valueBytes;
+}
+
+} // namespace gadget
+} // namespace lsi
