@@ -31,6 +31,42 @@ for order, label in ((">", "big"), ("<", "little")):
     write("FuzzTipsyReader", "mixed-" + label, header + gas + dark + star)
     write("FuzzTipsyReader", "truncated-" + label, (header + gas)[:60])
 
+# GADGET binary: Fortran records (length, data, length); a 256-byte header (int npart[6],
+# double mass[6], time, redshift, int flag_sfr, flag_feedback, uint npartTotal[6], int
+# flag_cooling, num_files, double BoxSize, Omega0, OmegaLambda, HubbleParam, ...); then POS,
+# VEL, ID, MASS, U, RHO, HSML. Format 1 little-endian, format 2 (labelled) big-endian, one with
+# the cooling flag and NE, NH, one saying 2 files.
+def gadget(order, fmt, cooling=False, files=1, real="f"):
+    npart = [3, 2, 0, 0, 0, 0]
+    head = struct.pack(order + "6i6d2d2i6I2i4d", *npart, 0, 0.5, 0, 0, 0, 0, 0.25, 0.0, 0, 0,
+                       *npart, int(cooling), files, 10.0, 0.3, 0.7, 0.7)
+    head += bytes(256 - len(head))
+    n = sum(npart)
+    blocks = [("HEAD", head),
+              ("POS ", struct.pack(order + "%d%s" % (3 * n, real), *range(3 * n))),
+              ("VEL ", struct.pack(order + "%d%s" % (3 * n, real), *([0] * 3 * n))),
+              ("ID  ", struct.pack(order + "%dI" % n, *range(1, n + 1))),
+              ("MASS", struct.pack(order + "3" + real, 1, 2, 3)),
+              ("U   ", struct.pack(order + "3" + real, 1, 1, 1)),
+              ("RHO ", struct.pack(order + "3" + real, 1, 2, 4))]
+    if cooling:
+        blocks += [("NE  ", struct.pack(order + "3" + real, 1, 1, 1)),
+                   ("NH  ", struct.pack(order + "3" + real, 0, 0, 0))]
+    blocks.append(("HSML", struct.pack(order + "3" + real, 0.5, 0.5, 0.5)))
+    out = b""
+    for label, data in blocks:
+        if fmt == 2:
+            label_data = label.encode() + struct.pack(order + "i", len(data) + 8)
+            out += struct.pack(order + "i", 8) + label_data + struct.pack(order + "i", 8)
+        out += struct.pack(order + "i", len(data)) + data + struct.pack(order + "i", len(data))
+    return out
+
+
+write("FuzzGadgetBinaryReader", "format1-little", gadget("<", 1))
+write("FuzzGadgetBinaryReader", "format2-big-double", gadget(">", 2, real="d"))
+write("FuzzGadgetBinaryReader", "format1-cooling", gadget("<", 1, cooling=True))
+write("FuzzGadgetBinaryReader", "format1-two-files", gadget("<", 1, files=2))
+
 # The filter: flags, neighbours - 4, eight float64 parameters, then (x, y, z, f) float32 points
 # of a ball f = 20 - |x - (30, 30, 30)| in [0, 60]^3.
 rng = random.Random(7)

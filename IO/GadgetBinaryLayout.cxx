@@ -69,15 +69,15 @@ const KnownBlock* KnownByLabel(const std::string& label)
   return nullptr;
 }
 
-// Format 1's blocks in order, as the header's flags say the file has them (the blocks after Z
-// depend on compile-time options no header records: not named).
-std::vector<const KnownBlock*> FormatOneOrder(const Header& head)
+// Format 1's blocks in order, as the header's flags say the file has them (`cooling`: NE and
+// NH; the blocks after Z depend on compile-time options no header records: not named).
+std::vector<const KnownBlock*> FormatOneOrder(const Header& head, bool cooling)
 {
   std::vector<const KnownBlock*> order;
   for (const KnownBlock& known : Known)
   {
     const std::string label = known.Label;
-    if ((label == "NE" || label == "NH") && !head.FlagCooling)
+    if ((label == "NE" || label == "NH") && !cooling)
     {
       continue;
     }
@@ -277,6 +277,107 @@ std::string Trimmed(const char* label)
   }
   return text;
 }
+// Where a block's record lies (format 2: with its label).
+struct RecordPlace
+{
+  std::string Label;
+  std::uint64_t Offset = 0; // of its data
+  std::uint64_t Length = 0;
+};
+
+// Adds `block` to the layout, or to those left out if a block of its name came first.
+void Add(const Block& block, FileLayout& layout)
+{
+  if (std::any_of(layout.Blocks.begin(), layout.Blocks.end(),
+        [&](const Block& earlier) { return earlier.Name == block.Name; }))
+  {
+    layout.LeftOut.push_back(block.Name + " (again)");
+    return;
+  }
+  layout.Blocks.push_back(block);
+}
+
+// Format 2: each block by its label; unknown labels by their size.
+void NameLabelled(const Header& head, const std::vector<RecordPlace>& records, FileLayout& layout)
+{
+  for (std::size_t r = 0; r < records.size(); ++r)
+  {
+    Block block;
+    block.Offset = records[r].Offset;
+    const KnownBlock* known = KnownByLabel(records[r].Label);
+    const std::string name =
+      records[r].Label.empty() ? "Block" + std::to_string(r + 1) : records[r].Label;
+    if ((known && Describe(head, *known, records[r].Length, block)) ||
+      DescribeUnknown(head, name, records[r].Length, block))
+    {
+      Add(block, layout);
+    }
+    else
+    {
+      layout.LeftOut.push_back(name);
+    }
+  }
+}
+
+// Format 1: the blocks in GADGET-2's order while their sizes fit it; the others by their size,
+// named Block<N> (N counted from the first block after the header).
+void NameInOrder(
+  const Header& head, const std::vector<RecordPlace>& records, bool cooling, FileLayout& layout)
+{
+  layout.Blocks.clear();
+  layout.LeftOut.clear();
+  const std::vector<const KnownBlock*> order = FormatOneOrder(head, cooling);
+  std::size_t next = 0;     // the next block expected in `order`
+  bool orderBroken = false; // a block that did not fit the order was met
+  for (std::size_t r = 0; r < records.size(); ++r)
+  {
+    Block block;
+    block.Offset = records[r].Offset;
+    // Blocks covering no particle are not written: skip them in the order.
+    while (next < order.size() && CountCovered(head, Covered(head, order[next]->Covers)) == 0)
+    {
+      ++next;
+    }
+    bool described = false;
+    if (!orderBroken && next < order.size())
+    {
+      described = Describe(head, *order[next], records[r].Length, block);
+      orderBroken = !described;
+      next += described ? 1 : 0;
+    }
+    const std::string name = "Block" + std::to_string(r + 1);
+    if (described || DescribeUnknown(head, name, records[r].Length, block))
+    {
+      Add(block, layout);
+    }
+    else
+    {
+      layout.LeftOut.push_back(name);
+    }
+  }
+}
+
+// How many blocks of one value per gas particle follow the block named Density.
+int GasBlocksAfterDensity(
+  const Header& head, const std::vector<RecordPlace>& records, const FileLayout& layout)
+{
+  const Block* density = layout.Find("Density", 0);
+  int count = 0;
+  bool after = false;
+  for (const RecordPlace& record : records)
+  {
+    if (after)
+    {
+      if (ValueBytesFor(record.Length, head.ThisFile[0], 1) == 0)
+      {
+        break;
+      }
+      ++count;
+    }
+    after = after || (density && record.Offset == density->Offset);
+  }
+  return count;
+}
 } // namespace
 
 const Block* FileLayout::Find(const std::string& name, int type) const
@@ -366,15 +467,12 @@ bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::s
     return false;
   }
   at += 4 + HeaderBytes + 4;
-  const Header& head = layout.Head;
-  const std::vector<const KnownBlock*> order = FormatOneOrder(head);
-  std::size_t next = 0;     // format 1: the next block expected in `order`
-  bool orderBroken = false; // format 1: a block that did not fit the order was met
-  int number = 0;           // blocks after the header
+  // Every block's record (and label), then their names and types.
+  std::vector<RecordPlace> records;
   while (at < size)
   {
-    ++number;
-    if (layout.Format2 && !readLabel(label))
+    RecordPlace record;
+    if (layout.Format2 && !readLabel(record.Label))
     {
       return false;
     }
@@ -382,45 +480,26 @@ bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::s
     {
       return false;
     }
-    Block block;
-    block.Offset = at + 4;
+    record.Offset = at + 4;
+    record.Length = length;
+    records.push_back(record);
     at += 4 + static_cast<std::uint64_t>(length) + 4;
-    bool described = false;
-    std::string unknownName;
-    if (layout.Format2)
+  }
+  const Header& head = layout.Head;
+  if (layout.Format2)
+  {
+    NameLabelled(head, records, layout);
+  }
+  else
+  {
+    NameInOrder(head, records, head.FlagCooling != 0, layout);
+    // A header may say cooling where the run wrote no NE and NH blocks (GADGET-2 writes its
+    // parameter CoolingOn there, with or without cooling's blocks): then fewer than three
+    // one-value gas blocks (NE, NH, HSML) follow the density, and the blocks are named without.
+    if (head.FlagCooling && GasBlocksAfterDensity(head, records, layout) < 3)
     {
-      const KnownBlock* known = KnownByLabel(label);
-      described = known && Describe(head, *known, length, block);
-      unknownName = label.empty() ? "Block" + std::to_string(number) : label;
+      NameInOrder(head, records, false, layout);
     }
-    else
-    {
-      // Blocks covering no particle are not written: skip them in the order.
-      while (!orderBroken && next < order.size() &&
-        CountCovered(head, Covered(head, order[next]->Covers)) == 0)
-      {
-        ++next;
-      }
-      if (!orderBroken && next < order.size())
-      {
-        described = Describe(head, *order[next], length, block);
-        orderBroken = !described;
-        next += described ? 1 : 0;
-      }
-      unknownName = "Block" + std::to_string(number);
-    }
-    if (!described && !DescribeUnknown(head, unknownName, length, block))
-    {
-      layout.LeftOut.push_back(unknownName);
-      continue;
-    }
-    if (std::any_of(layout.Blocks.begin(), layout.Blocks.end(),
-          [&](const Block& earlier) { return earlier.Name == block.Name; }))
-    {
-      layout.LeftOut.push_back(block.Name + " (again)");
-      continue;
-    }
-    layout.Blocks.push_back(block);
   }
   const bool anyParticles = std::any_of(
     head.ThisFile.begin(), head.ThisFile.end(), [](long long count) { return count > 0; });

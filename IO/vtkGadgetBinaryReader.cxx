@@ -33,6 +33,7 @@ struct vtkGadgetBinaryReader::Internals
   };
   std::vector<Part> Parts;
   std::vector<int> TypeNumbers; // GADGET type of each listed type
+  std::string Warned;           // the last warning about left-out blocks (given once per file)
 };
 
 namespace
@@ -220,7 +221,9 @@ bool vtkGadgetBinaryReader::ReadMetaData(
   std::vector<ParticleType>& types, double& time, vtkFieldData* fields, std::string& problem)
 {
   Internals& internal = *this->Internal;
+  const std::string warned = internal.Warned;
   internal = Internals();
+  internal.Warned = warned;
   gadget::FileLayout opened;
   if (!ReadLayoutOf(this->FileName, opened, problem))
   {
@@ -247,6 +250,7 @@ bool vtkGadgetBinaryReader::ReadMetaData(
       return false;
     }
   }
+  std::string leftOut; // blocks not understood, in any part
   for (const std::string& name : files)
   {
     Internals::Part part;
@@ -267,7 +271,19 @@ bool vtkGadgetBinaryReader::ReadMetaData(
         std::to_string(head.NumFiles);
       return false;
     }
+    for (const std::string& block : part.Layout.LeftOut)
+    {
+      leftOut += (leftOut.empty() ? "" : ", ") + block;
+    }
     internal.Parts.push_back(std::move(part));
+  }
+  // (The meta data is read at each pipeline pass: the warning is given once per file.)
+  const std::string warning = this->FileName + ": blocks left out, their sizes fitting no " +
+    "particle type's count (or a name met twice): " + leftOut;
+  if (!leftOut.empty() && warning != internal.Warned)
+  {
+    vtkWarningMacro(<< warning);
+    internal.Warned = warning;
   }
   for (int t = 0; t < gadget::NumberOfTypes; ++t)
   {

@@ -109,6 +109,7 @@ struct WriteOptions
   int Format = 1;
   bool BigEndian = false;
   bool Cooling = false;
+  bool CoolingFlagOnly = false; // the header says cooling, no NE and NH blocks are written
   int Files = 1;
 };
 
@@ -167,7 +168,7 @@ void WriteGadget(const std::string& path, const Particles& particles, const Writ
     {
       header.Put<std::uint32_t>(static_cast<std::uint32_t>(particles.Counts[t]));
     }
-    header.Put<std::int32_t>(o.Cooling ? 1 : 0);
+    header.Put<std::int32_t>(o.Cooling || o.CoolingFlagOnly ? 1 : 0);
     header.Put<std::int32_t>(o.Files);
     header.Put<double>(particles.BoxSize);
     header.Put<double>(0.3);     // Omega0
@@ -361,9 +362,11 @@ void TestKnownParticles(const WriteOptions& o, bool doubles, bool ids64)
   const std::string what = "format " + std::to_string(o.Format) +
     (o.BigEndian ? ", big-endian" : ", little-endian") + (doubles ? ", double" : ", float") +
     (ids64 ? ", 64-bit ids" : "") + (o.Cooling ? ", cooling" : "") +
+    (o.CoolingFlagOnly ? ", cooling flag without its blocks" : "") +
     (o.Files > 1 ? ", " + std::to_string(o.Files) + " files" : "");
   const std::string base = "gadget_test_" + std::to_string(o.Format) + (o.BigEndian ? "b" : "l") +
-    (doubles ? "d" : "f") + (ids64 ? "8" : "4") + (o.Cooling ? "c" : "") + std::to_string(o.Files);
+    (doubles ? "d" : "f") + (ids64 ? "8" : "4") + (o.Cooling ? "c" : "") +
+    (o.CoolingFlagOnly ? "k" : "") + std::to_string(o.Files);
   const Particles particles = KnownParticles(doubles, ids64, extra);
   WriteGadget(base, particles, o);
   // (A snapshot in files is opened from any of them: the last.)
@@ -377,6 +380,8 @@ void TestKnownParticles(const WriteOptions& o, bool doubles, bool ids64)
   reader->Update();
   vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
   Check(messages->Count == 0, what + ": no message (got: " + messages->All + ")");
+  Check(!gas || (gas->GetPointData()->GetArray("ElectronAbundance") != nullptr) == o.Cooling,
+    what + ": ElectronAbundance read exactly where the file has it");
   Check(gas && gas->GetNumberOfPoints() == 7 && gas->GetNumberOfVerts() == 7,
     what + ": by default the 7 gas particles as vertices");
   if (!gas || gas->GetNumberOfPoints() != 7)
@@ -401,7 +406,7 @@ void TestKnownParticles(const WriteOptions& o, bool doubles, bool ids64)
       Field(gas, "NumPart_Total", 4) == "3" && Field(gas, "MassTable", 1) == "0.5" &&
       Field(gas, "HubbleParam") == "0.68" &&
       Field(gas, "NumFilesPerSnapshot") == std::to_string(o.Files) &&
-      Field(gas, "Flag_Cooling") == (o.Cooling ? "1" : "0"),
+      Field(gas, "Flag_Cooling") == (o.Cooling || o.CoolingFlagOnly ? "1" : "0"),
     what + ": the header as field data (BoxSize " + Field(gas, "BoxSize") + ", NumPart_Total[4] " +
       Field(gas, "NumPart_Total", 4) + ")");
   const int precision = gas->GetPoints()->GetDataType() == VTK_DOUBLE ? 8 : 4;
@@ -551,6 +556,32 @@ void TestBadFiles()
   std::remove("gadget_bad_source");
 }
 
+// A format-2 block whose size fits no particle count: a warning naming it, the rest read.
+void TestLeftOutBlock()
+{
+  WriteOptions o;
+  o.Format = 2;
+  WriteGadget("gadget_left_out", KnownParticles(false, false, false), o);
+  {
+    std::ofstream out("gadget_left_out", std::ios::binary | std::ios::app);
+    Bytes junk(false);
+    junk.Data = { 'a', 'b', 'c', 'd', 'e' };
+    Label(out, "JUNK", junk.Data.size(), false);
+    Record(out, junk, false);
+  }
+  vtkNew<vtkGadgetBinaryReader> reader;
+  reader->SetFileName("gadget_left_out");
+  vtkNew<MessageCounter> warnings;
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->Update();
+  auto* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(warnings->Count == 1 && warnings->Last.find("JUNK") != std::string::npos,
+    "a block of 5 bytes: one warning naming it (got: " + warnings->All + ")");
+  Check(gas && gas->GetNumberOfPoints() == 7 && WorstError(gas, 0, 0, false, false, 0.0) == 0.0,
+    "a block of 5 bytes: the other blocks read exactly");
+  std::remove("gadget_left_out");
+}
+
 // A real GADGET snapshot (HDF5) written again as format 1: the same particles, arrays and
 // markers, so the filter's SPH surface is the same to the bit.
 void TestSameSurfaceAsHDF5(const std::string& hdf5)
@@ -665,7 +696,11 @@ int main(int argc, char* argv[])
       TestKnownParticles(o, big, !big);
     }
   }
+  WriteOptions flagOnly; // format 1: the header says cooling, the blocks go U, RHO, HSML
+  flagOnly.CoolingFlagOnly = true;
+  TestKnownParticles(flagOnly, false, false);
   TestBadFiles();
+  TestLeftOutBlock();
   if (argc > 1)
   {
     TestSameSurfaceAsHDF5(argv[1]);

@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """mpiexec -n 2 pvbatch TestReadersMPI.py PLUGIN SNAPSHOT_DIR SWIFT_FILE GLASS_FILE
 
-Under MPI each rank reads its own share of a snapshot: the GADGET-4 snapshot in two files, the
-SWIFT snapshot and the Tipsy glass, each read with the ranks' process ids attached and
+Under MPI each rank reads its own share of a snapshot: the GADGET-4 snapshot in two files, its
+particles as a GADGET-2 binary snapshot in two files, the SWIFT snapshot and the Tipsy glass, each read with the ranks' process ids attached and
 gathered on rank 0. Checks that every rank read a part (none the whole), and that together they
 read exactly the particles one rank reads: the same ids (or coordinates) once each.
 Then Particle Density on the glass as read (each rank holding an interleaved share): every
@@ -35,7 +35,8 @@ def keys(data):
     return [tuple(round(c, 7) for c in data.GetPoint(i)) for i in range(data.GetNumberOfPoints())]
 
 
-for path, count in [(snapshots + "/gadget4_multi.0.hdf5", 50), (swift, 32768), (glass, 28721)]:
+for path, count in [(snapshots + "/gadget4_multi.0.hdf5", 50), (snapshots + "/snap_format1.0", 50),
+                    (swift, 32768), (glass, 28721)]:
     reader = OpenDataFile(path)
     with_ranks = ProcessIdScalars(Input=reader)
     with_ranks.UpdatePipeline()
