@@ -285,9 +285,9 @@ bool vtkGadgetBinaryReader::ReadMetaData(
     vtkWarningMacro(<< warning);
     internal.Warned = warning;
   }
+  std::vector<long long> totals(gadget::NumberOfTypes, 0);
   for (int t = 0; t < gadget::NumberOfTypes; ++t)
   {
-    long long total = 0;
     const Internals::Part* first = nullptr; // the first part with particles of this type
     for (const Internals::Part& part : internal.Parts)
     {
@@ -296,7 +296,7 @@ bool vtkGadgetBinaryReader::ReadMetaData(
       {
         continue;
       }
-      total += count;
+      totals[t] += count;
       first = first ? first : &part;
       // Every part must hold the same arrays for a type: an array read from some parts only
       // would leave other particles' values unset.
@@ -308,25 +308,8 @@ bool vtkGadgetBinaryReader::ReadMetaData(
         return false;
       }
     }
-    if (total == 0)
-    {
-      continue;
-    }
-    ParticleType type;
-    type.Name = PartTypeName(t);
-    type.Count = total;
-    type.SelectedByDefault = t == 0;
-    types.push_back(type);
-    internal.TypeNumbers.push_back(t);
   }
-  if (types.empty())
-  {
-    problem = "the snapshot holds no particles";
-    return false;
-  }
-  // No gas: select the first type there is, so that opening the file shows something.
-  types[0].SelectedByDefault = true;
-  return true;
+  return ListPartTypes(totals, types, internal.TypeNumbers, problem);
 }
 
 bool vtkGadgetBinaryReader::ReadParticles(

@@ -501,33 +501,17 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
     }
     counts.push_back(partCounts);
   }
-  for (int t = 0; t < numberOfTypes; ++t)
+  std::vector<long long> totals(static_cast<std::size_t>(numberOfTypes), 0);
+  for (const auto& partCounts : counts)
   {
-    long long total = 0;
-    for (const auto& partCounts : counts)
+    for (int t = 0; t < numberOfTypes; ++t)
     {
-      total += partCounts[t];
+      totals[t] += partCounts[t];
     }
-    if (total == 0)
-    {
-      continue;
-    }
-    ParticleType type;
-    type.Name = ParticleTypeName(t);
-    type.Count = total;
-    type.SelectedByDefault = t == 0;
-    types.push_back(type);
-    this->TypeNumbers.push_back(t);
   }
-  if (types.empty())
+  if (!ListPartTypes(totals, types, this->TypeNumbers, problem))
   {
-    problem = "the snapshot holds no particles";
     return false;
-  }
-  // No gas: select the first type there is, so that opening the file shows something.
-  if (this->TypeNumbers[0] != 0)
-  {
-    types[0].SelectedByDefault = true;
   }
   for (const auto& partCounts : counts)
   {

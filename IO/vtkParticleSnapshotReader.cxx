@@ -69,6 +69,32 @@ std::string vtkParticleSnapshotReader::PartTypeName(int number)
                                                     : part;
 }
 
+bool vtkParticleSnapshotReader::ListPartTypes(const std::vector<long long>& totals,
+  std::vector<ParticleType>& types, std::vector<int>& numbers, std::string& problem)
+{
+  types.clear();
+  numbers.clear();
+  for (std::size_t t = 0; t < totals.size(); ++t)
+  {
+    if (totals[t] > 0)
+    {
+      ParticleType type;
+      type.Name = PartTypeName(static_cast<int>(t));
+      type.Count = totals[t];
+      types.push_back(type);
+      numbers.push_back(static_cast<int>(t));
+    }
+  }
+  if (types.empty())
+  {
+    problem = "the snapshot holds no particles";
+    return false;
+  }
+  // Gas, or where there is none the first type there is, so that opening the file shows something.
+  types[0].SelectedByDefault = true;
+  return true;
+}
+
 vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
 {
   vtkNew<vtkIdTypeArray> ids;

@@ -90,6 +90,15 @@ protected:
     std::string& problem) = 0;
 
   /**
+   * The GADGET family's types (GADGET, GIZMO, AREPO, SWIFT): those of `totals` (particles of each
+   * type number over the snapshot) that hold particles, named by PartTypeName, gas selected by
+   * default or else the first type listed. `numbers` receives each listed type's number. False
+   * with `problem` set when no type holds particles.
+   */
+  static bool ListPartTypes(const std::vector<long long>& totals, std::vector<ParticleType>& types,
+    std::vector<int>& numbers, std::string& problem);
+
+  /**
    * What a snapshot says about its SPH field: the names of its density, smoothing-length and mass
    * arrays (empty: none), its kernel ("CubicSpline", "QuinticSpline" or "WendlandC2") and the
    * kernel's support radius per smoothing length (GADGET: 1, SWIFT: its Kernel gamma, Tipsy: 2).

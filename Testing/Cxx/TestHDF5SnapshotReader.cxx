@@ -7,6 +7,7 @@
 #include "vtkHDF5SnapshotReader.h"
 
 #include "MessageCounter.h"
+#include "RefusedFile.h"
 #include "TestCheck.h"
 
 #include "vtkCommand.h"
@@ -222,21 +223,11 @@ void TestBadFiles(const std::string& dir)
   for (const Case& c : cases)
   {
     const std::string path = dir + "/" + c.File;
-    Check(vtkHDF5SnapshotReader::CanReadFile(path.c_str()) == c.Readable,
-      path + ": CanReadFile is " + (c.Readable ? "true" : "false"));
-    vtkNew<vtkHDF5SnapshotReader> reader;
-    reader->SetFileName(path.c_str());
-    vtkNew<MessageCounter> errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    reader->Update();
-    Check(errors->Count > 0 && errors->Last.find(c.File) != std::string::npos &&
-        errors->Last.find(c.Expected) != std::string::npos,
-      path + ": an error naming the file and '" + c.Expected + "' (got: " + errors->Last + ")");
-    vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutput());
-    Check(out && out->GetNumberOfPoints() == 0, path + ": empty output");
-    const std::size_t quote = errors->Last.find('\'');
-    std::cout << c.File << " -> "
-              << (quote == std::string::npos ? errors->Last : errors->Last.substr(quote)) << "\n";
+    const std::string error =
+      lsi::test::CheckRefusedFile<vtkHDF5SnapshotReader>(path, c.Expected, c.Readable);
+    const std::size_t quote = error.find('\'');
+    std::cout << c.File << " -> " << (quote == std::string::npos ? error : error.substr(quote))
+              << "\n";
   }
 }
 
