@@ -32,6 +32,8 @@ def check(ok, what):
 
 
 def open_file(path, types=None):
+    """`types`: the names of the particle types to read (ParaView 5.11's array selection in
+    Python: the names listed are on, the others off)."""
     reader = OpenDataFile(path)
     check(reader is not None, "%s: ParaView finds a reader" % os.path.basename(path))
     if reader is None:
@@ -86,7 +88,7 @@ _, glass = open_file(os.path.join(changa, "adiabtophat_glass_28721.bin"))
 check_points(glass, "Evrard glass", 28721, tipsy_gas, masses=(3.48177e-05, 3.48177e-05))
 _, tube = open_file(os.path.join(changa, "shocktube.std"))
 check_points(tube, "shock tube", 20000, tipsy_gas, time=1.0)
-_, galaxy = open_file(os.path.join(changa, "changa_run581.20000"), ["DarkMatter", "1", "Stars", "1"])
+_, galaxy = open_file(os.path.join(changa, "changa_run581.20000"), ["DarkMatter", "Stars"])
 parts = blocks(galaxy) if galaxy is not None and galaxy.IsA("vtkMultiBlockDataSet") else [None, None]
 check_points(parts[0], "galaxy dark matter", 3627, ["mass", "velocity", "eps", "phi"])
 check_points(parts[1], "galaxy stars", 5321, ["mass", "velocity", "metals", "tform", "eps", "phi"])
@@ -97,7 +99,7 @@ check_points(swift, "SWIFT Roberts flow", 32768,
 
 # Snapshots the tests wrote.
 _, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),
-                      ["Gas (PartType0)", "1", "DarkMatter (PartType1)", "1"])
+                      ["Gas (PartType0)", "DarkMatter (PartType1)"])
 parts = blocks(gadget) if gadget is not None and gadget.IsA("vtkMultiBlockDataSet") else [None, None]
 check_points(parts[0], "GADGET-4 in two files, gas", 50,
              ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
@@ -111,7 +113,7 @@ check_points(arepo, "AREPO-style, no SmoothingLength", 60, ["Density", "Masses"]
 # GADGET-2 binary: the GADGET-4 snapshot's particles in two files (format 1), its gas alone
 # (format 2, big-endian, double precision), found by name (snap_*, snapshot_*) and content.
 _, binary = open_file(os.path.join(snapshot_dir, "snap_format1.1"),
-                      ["Gas (PartType0)", "1", "DarkMatter (PartType1)", "1"])
+                      ["Gas (PartType0)", "DarkMatter (PartType1)"])
 parts = blocks(binary) if binary is not None and binary.IsA("vtkMultiBlockDataSet") else [None, None]
 check_points(parts[0], "GADGET-2 binary in two files, gas", 50,
              ["Density", "SmoothingLength", "InternalEnergy", "Velocities", "Masses"],
@@ -128,6 +130,13 @@ if parts[0] is not None and gadget is not None and gadget.IsA("vtkMultiBlockData
                for k in range(50))
     check(same, "GADGET-2 binary gas: the HDF5 snapshot's positions and densities (to single "
           "precision)")
+# Its properties as keywords, as a script gives them (ParticleTypes: the names of the types to
+# read, the others off): dark matter alone.
+by_name = GADGETBinarySnapshotReader(FileNames=[os.path.join(snapshot_dir, "snap_format1.0")],
+                                     ParticleTypes=["DarkMatter (PartType1)"])
+by_name.UpdatePipeline()
+check_points(servermanager.Fetch(by_name), "GADGET Binary Snapshot Reader by keyword, dark matter",
+             40, ["Velocities", "Masses"], masses=(0.5, 0.5), time=2.5)
 reader, big = open_file(os.path.join(snapshot_dir, "snapshot_format2_big"))
 check(reader is not None and reader.GetXMLName() == "GadgetBinaryReader",
       "snapshot_format2_big opened by the GADGET Binary Snapshot Reader (got %s)"
