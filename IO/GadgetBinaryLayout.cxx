@@ -268,15 +268,17 @@ bool ReadRecord(std::istream& in, std::uint64_t size, std::uint64_t at, bool big
   return true;
 }
 
-std::string Trimmed(const char* label)
+// Text of `size` characters without its trailing blanks and NULs.
+std::string Trimmed(const char* text, std::size_t size = 4)
 {
-  std::string text(label, 4);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\0'))
+  std::string trimmed(text, size);
+  while (!trimmed.empty() && (trimmed.back() == ' ' || trimmed.back() == '\0'))
   {
-    text.pop_back();
+    trimmed.pop_back();
   }
-  return text;
+  return trimmed;
 }
+
 // Where a block's record lies (format 2: with its label).
 struct RecordPlace
 {
@@ -297,17 +299,101 @@ void Add(const Block& block, FileLayout& layout)
   layout.Blocks.push_back(block);
 }
 
-// Format 2: each block by its label; unknown labels by their size.
-void NameLabelled(const Header& head, const std::vector<RecordPlace>& records, FileLayout& layout)
+// One entry of GADGET-3's INFO block (format 2): a block's label, value type, values per
+// particle and the types that have it (40 bytes: char[4], char[8], int32, int32[6]).
+struct InfoEntry
+{
+  std::string Label;
+  int ValueBytes = 4;
+  bool Integer = false;
+  int Components = 1;
+  std::array<bool, NumberOfTypes> Present{};
+};
+constexpr std::uint64_t InfoEntryBytes = 40;
+
+// The INFO block's entries (none if it is not one: a size that is no multiple of an entry, or
+// above a thousand entries, or types it does not name).
+std::vector<InfoEntry> ReadInfo(std::istream& in, const RecordPlace& record, bool big)
+{
+  std::vector<InfoEntry> entries;
+  if (record.Length % InfoEntryBytes != 0 || record.Length > 1000 * InfoEntryBytes)
+  {
+    return entries;
+  }
+  std::vector<char> bytes(static_cast<std::size_t>(record.Length));
+  if (!in.seekg(static_cast<std::streamoff>(record.Offset)) ||
+    !in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+  {
+    return entries;
+  }
+  for (std::size_t at = 0; at < bytes.size(); at += InfoEntryBytes)
+  {
+    InfoEntry entry;
+    entry.Label = Trimmed(&bytes[at]);
+    const std::string type = Trimmed(&bytes[at + 4], 8);
+    const std::int32_t dimensions = FromBytes<std::int32_t>(&bytes[at + 12], big);
+    const bool known = type == "FLOAT" || type == "FLOATN" || type == "DOUBLE" ||
+      type == "DOUBLEN" || type == "LONG" || type == "LLONG";
+    if (!known || dimensions < 1 || dimensions > 64)
+    {
+      return std::vector<InfoEntry>();
+    }
+    entry.ValueBytes = type == "DOUBLE" || type == "DOUBLEN" || type == "LLONG" ? 8 : 4;
+    entry.Integer = type == "LONG" || type == "LLONG";
+    entry.Components = dimensions;
+    for (int t = 0; t < NumberOfTypes; ++t)
+    {
+      entry.Present[t] = FromBytes<std::int32_t>(&bytes[at + 16 + 4 * t], big) != 0;
+    }
+    entries.push_back(entry);
+  }
+  return entries;
+}
+
+// Gives `block` what the INFO entry for its label says, if its size fits that.
+bool DescribeFromInfo(const Header& head, const std::vector<InfoEntry>& info,
+  const std::string& label, std::uint64_t bytes, Block& block)
+{
+  for (const InfoEntry& entry : info)
+  {
+    if (entry.Label != label)
+    {
+      continue;
+    }
+    const KnownBlock* known = KnownByLabel(label);
+    block.Name = known ? known->Name : label;
+    block.Components = entry.Components;
+    block.ValueBytes = entry.ValueBytes;
+    block.Integer = entry.Integer;
+    for (int t = 0; t < NumberOfTypes; ++t)
+    {
+      block.Covers[t] = entry.Present[t] && head.ThisFile[t] > 0;
+    }
+    const std::uint64_t expected = static_cast<std::uint64_t>(CountCovered(head, block.Covers)) *
+      static_cast<std::uint64_t>(entry.Components) * static_cast<std::uint64_t>(entry.ValueBytes);
+    return expected == bytes && expected > 0;
+  }
+  return false;
+}
+
+// Format 2: each block as the INFO block (where there is one) or its label says; unknown labels
+// by their size.
+void NameLabelled(const Header& head, const std::vector<RecordPlace>& records,
+  const std::vector<InfoEntry>& info, FileLayout& layout)
 {
   for (std::size_t r = 0; r < records.size(); ++r)
   {
+    if (records[r].Label == "INFO")
+    {
+      continue; // (read before)
+    }
     Block block;
     block.Offset = records[r].Offset;
     const KnownBlock* known = KnownByLabel(records[r].Label);
     const std::string name =
       records[r].Label.empty() ? "Block" + std::to_string(r + 1) : records[r].Label;
-    if ((known && Describe(head, *known, records[r].Length, block)) ||
+    if (DescribeFromInfo(head, info, records[r].Label, records[r].Length, block) ||
+      (known && Describe(head, *known, records[r].Length, block)) ||
       DescribeUnknown(head, name, records[r].Length, block))
     {
       Add(block, layout);
@@ -488,7 +574,12 @@ bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::s
   const Header& head = layout.Head;
   if (layout.Format2)
   {
-    NameLabelled(head, records, layout);
+    std::vector<InfoEntry> info;
+    for (const RecordPlace& record : records)
+    {
+      info = record.Label == "INFO" ? ReadInfo(in, record, big) : info;
+    }
+    NameLabelled(head, records, info, layout);
   }
   else
   {

@@ -5,7 +5,8 @@
 // first the 256-byte header, then one record per block (positions, velocities, ids, masses,
 // then the gas's internal energy, density, smoothing length, ...), each holding the values of
 // the particle types it covers, type 0 first. Format 2 puts a small record before each block
-// naming it ("POS ", "VEL ", "ID  ", ...); format 1 gives blocks in a fixed order instead.
+// naming it ("POS ", "VEL ", "ID  ", ...), and GADGET-3 an INFO block describing the others;
+// format 1 gives blocks in a fixed order instead.
 // Either byte order is recognised from the first record's length. Plain C++: what the file
 // holds and where, for vtkGadgetBinaryReader to read.
 #ifndef LevelSetIsosurface_GadgetBinaryLayout_h

@@ -12,8 +12,9 @@
  *   block, or the header's mass table where a type has none), and for the gas "InternalEnergy",
  *   "Density" (the active scalars), "ElectronAbundance", "NeutralHydrogenAbundance",
  *   "SmoothingLength", "StarFormationRate", then "StellarFormationTime" and "Metallicity";
- * - format 2 (a label before each block) by its labels, any unknown block whose size fits one
- *   or three values per particle of every type or of the gas under its label; format 1 by
+ * - format 2 (a label before each block) by its labels and GADGET-3's INFO block where there is
+ *   one (each block's value type, values per particle and types), any other block whose size
+ *   fits one or three values per particle of every type or of the gas under its label; format 1 by
  *   GADGET-2's order (positions, velocities, ids, masses, internal energy, density, with cooling
  *   electron and neutral-hydrogen abundances, smoothing length, ...), the header's flags saying
  *   which blocks there are, and blocks past those as "Block<N>";

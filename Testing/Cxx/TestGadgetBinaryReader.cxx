@@ -82,6 +82,7 @@ struct Particles
     bool GasOnly;
     bool Double;
     std::function<double(int, int, int)> Value;
+    int OnlyType = -1; // >= 0: a block of that type alone
   };
   std::vector<Column> Columns;
   std::function<std::uint64_t(int, int)> Id;
@@ -95,6 +96,7 @@ struct WriteOptions
   bool Cooling = false;
   bool CoolingFlagOnly = false; // the header says cooling, no NE and NH blocks are written
   int Files = 1;
+  bool Info = false; // format 2: an INFO block (GADGET-3's) describing every block
 };
 
 // Particle g of type t lies in file p of `files`: [p * n / files, (p + 1) * n / files).
@@ -191,9 +193,55 @@ void WriteGadget(const std::string& path, const Particles& particles, const Writ
       }
       Record(out, data, o.BigEndian);
     };
+    // Which types a column's block holds.
+    auto covers = [&](const Particles::Column& column, int t) {
+      if (column.Label == "ID")
+      {
+        return true;
+      }
+      if (column.OnlyType >= 0)
+      {
+        return t == column.OnlyType;
+      }
+      return column.GasOnly ? t == 0 : (column.Label != "MASS" || particles.MassTable[t] == 0.0);
+    };
+    auto written = [&](const Particles::Column& column) {
+      return o.Cooling || (column.Label != "NE" && column.Label != "NH");
+    };
+    if (o.Info) // GADGET-3's INFO: label, type, values per particle, the types present
+    {
+      Bytes info(o.BigEndian);
+      for (const Particles::Column& column : particles.Columns)
+      {
+        if (!written(column))
+        {
+          continue;
+        }
+        std::string label = column.Label, type;
+        label.resize(4, ' ');
+        if (column.Label == "ID")
+        {
+          type = particles.Ids64 ? "LLONG" : "LONG";
+        }
+        else
+        {
+          type =
+            std::string(column.Double ? "DOUBLE" : "FLOAT") + (column.Components > 1 ? "N" : "");
+        }
+        type.resize(8, ' ');
+        info.Data.insert(info.Data.end(), label.begin(), label.end());
+        info.Data.insert(info.Data.end(), type.begin(), type.end());
+        info.Put<std::int32_t>(column.Components);
+        for (int t = 0; t < 6; ++t)
+        {
+          info.Put<std::int32_t>(covers(column, t) ? 1 : 0);
+        }
+      }
+      Label(out, "INFO", info.Data.size(), o.BigEndian);
+      Record(out, info, o.BigEndian);
+    }
     for (const Particles::Column& column : particles.Columns)
     {
-      const bool isMass = column.Label == "MASS";
       if (column.Label == "ID")
       {
         block(
@@ -210,13 +258,12 @@ void WriteGadget(const std::string& path, const Particles& particles, const Writ
           });
         continue;
       }
-      if ((column.Label == "NE" || column.Label == "NH") && !o.Cooling)
+      if (!written(column))
       {
         continue;
       }
       block(
-        column.Label,
-        [&](int t) { return column.GasOnly ? t == 0 : (!isMass || particles.MassTable[t] == 0.0); },
+        column.Label, [&](int t) { return covers(column, t); },
         [&](Bytes& data, int t, int g) {
           for (int c = 0; c < column.Components; ++c)
           {
@@ -555,6 +602,46 @@ void TestLeftOutBlock()
   std::remove("gadget_left_out");
 }
 
+// A format-2 snapshot with GADGET-3's INFO block: a block of the stars alone ("STRS", whose size
+// fits neither every type nor the gas) read where INFO says, the others as before, no warning.
+void TestInfoBlock()
+{
+  WriteOptions o;
+  o.Format = 2;
+  o.BigEndian = true;
+  o.Info = true;
+  Particles particles = KnownParticles(false, false, true);
+  Particles::Column stars = { "STRS", 1, false, false,
+    [](int t, int g, int c) { return Known(10, t, g, c); } };
+  stars.OnlyType = 4;
+  particles.Columns.push_back(stars);
+  WriteGadget("gadget_info", particles, o);
+  vtkNew<vtkGadgetBinaryReader> reader;
+  reader->SetFileName("gadget_info");
+  vtkNew<MessageCounter> messages;
+  reader->AddObserver(vtkCommand::WarningEvent, messages);
+  reader->AddObserver(vtkCommand::ErrorEvent, messages);
+  reader->UpdateInformation();
+  reader->GetParticleTypeSelection()->EnableAllArrays();
+  reader->Update();
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  Check(messages->Count == 0, "INFO block: no message (got: " + messages->All + ")");
+  auto* gas = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+  auto* star = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(2)) : nullptr;
+  Check(gas && WorstError(gas, 0, 0, false, true, 0.0) == 0.0,
+    "INFO block: the gas read back exactly, XTRA too");
+  vtkDataArray* ages = star ? star->GetPointData()->GetArray("STRS") : nullptr;
+  double worst = ages && ages->GetNumberOfTuples() == 3 ? 0.0 : HUGE_VAL;
+  for (vtkIdType i = 0; ages && i < ages->GetNumberOfTuples() && i < 3; ++i)
+  {
+    worst = std::max(worst, std::abs(ages->GetTuple1(i) - Known(10, 4, static_cast<int>(i), 0)));
+  }
+  Check(worst == 0.0 && star && WorstError(star, 4, 0, false, false, 0.0) == 0.0,
+    "INFO block: the stars' own block STRS and their other values read exactly");
+  Check(!gas || !gas->GetPointData()->GetArray("STRS"), "INFO block: STRS on the stars alone");
+  std::remove("gadget_info");
+}
+
 // A real GADGET snapshot (HDF5) written again as format 1: the same particles, arrays and
 // markers, so the filter's SPH surface is the same to the bit.
 void TestSameSurfaceAsHDF5(const std::string& hdf5)
@@ -674,6 +761,7 @@ int main(int argc, char* argv[])
   TestKnownParticles(flagOnly, false, false);
   TestBadFiles();
   TestLeftOutBlock();
+  TestInfoBlock();
   if (argc > 1)
   {
     TestSameSurfaceAsHDF5(argv[1]);
