@@ -35,8 +35,8 @@ for order, label in ((">", "big"), ("<", "little")):
 # double mass[6], time, redshift, int flag_sfr, flag_feedback, uint npartTotal[6], int
 # flag_cooling, num_files, double BoxSize, Omega0, OmegaLambda, HubbleParam, ...); then POS,
 # VEL, ID, MASS, U, RHO, HSML. Format 1 little-endian, format 2 (labelled) big-endian, one with
-# the cooling flag and NE, NH, one saying 2 files.
-def gadget(order, fmt, cooling=False, files=1, real="f"):
+# the cooling flag and NE, NH, one saying 2 files, one with GADGET-3's INFO block.
+def gadget(order, fmt, cooling=False, files=1, real="f", info=False):
     npart = [3, 2, 0, 0, 0, 0]
     head = struct.pack(order + "6i6d2d2i6I2i4d", *npart, 0, 0.5, 0, 0, 0, 0, 0.25, 0.0, 0, 0,
                        *npart, int(cooling), files, 10.0, 0.3, 0.7, 0.7)
@@ -53,6 +53,13 @@ def gadget(order, fmt, cooling=False, files=1, real="f"):
         blocks += [("NE  ", struct.pack(order + "3" + real, 1, 1, 1)),
                    ("NH  ", struct.pack(order + "3" + real, 0, 0, 0))]
     blocks.append(("HSML", struct.pack(order + "3" + real, 0.5, 0.5, 0.5)))
+    if info:  # GADGET-3's INFO: label, type, values per particle, types present
+        kind = "DOUBLE" if real == "d" else "FLOAT"
+        entries = [("POS ", kind + "N", 3, [1, 1, 0, 0, 0, 0]), ("ID  ", "LONG", 1, [1, 1, 0, 0, 0, 0]),
+                   ("MASS", kind, 1, [1, 0, 0, 0, 0, 0]), ("RHO ", kind, 1, [1, 0, 0, 0, 0, 0])]
+        blocks.insert(1, ("INFO", b"".join(label.encode() + t.ljust(8).encode() +
+                                           struct.pack(order + "7i", n, *present)
+                                           for label, t, n, present in entries)))
     out = b""
     for label, data in blocks:
         if fmt == 2:
@@ -66,6 +73,7 @@ write("FuzzGadgetBinaryReader", "format1-little", gadget("<", 1))
 write("FuzzGadgetBinaryReader", "format2-big-double", gadget(">", 2, real="d"))
 write("FuzzGadgetBinaryReader", "format1-cooling", gadget("<", 1, cooling=True))
 write("FuzzGadgetBinaryReader", "format1-two-files", gadget("<", 1, files=2))
+write("FuzzGadgetBinaryReader", "format2-info", gadget("<", 2, info=True))
 
 # The filter: flags, neighbours - 4, eight float64 parameters, then (x, y, z, f) float32 points
 # of a ball f = 20 - |x - (30, 30, 30)| in [0, 60]^3.
