@@ -97,11 +97,10 @@ void AddField(vtkFieldData* fields, const char* name, const std::vector<double>&
 // Header fields under the names of the HDF5 snapshots' Header attributes.
 void HeaderToFieldData(const gadget::Header& head, vtkFieldData* fields)
 {
-  std::vector<double> thisFile, total, low, high;
+  std::vector<double> thisFile, low, high; // (the totals' low and high 32-bit words)
   for (int t = 0; t < gadget::NumberOfTypes; ++t)
   {
     thisFile.push_back(static_cast<double>(head.ThisFile[t]));
-    total.push_back(static_cast<double>(head.Total[t]));
     low.push_back(static_cast<double>(head.Total[t] & 0xffffffffLL));
     high.push_back(static_cast<double>(head.Total[t] >> 32));
   }
