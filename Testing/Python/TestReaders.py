@@ -138,13 +138,15 @@ by_name.UpdatePipeline()
 check_points(servermanager.Fetch(by_name), "GADGET Binary Snapshot Reader by keyword, dark matter",
              40, ["Velocities", "Masses"], masses=(0.5, 0.5), time=2.5)
 # Both parts chosen together (the file dialog's group): one time step, the snapshot once.
-grouped = OpenDataFile([os.path.join(snapshot_dir, "snap_format1.%d" % p) for p in (0, 1)])
-grouped.UpdatePipelineInformation()
-grouped.UpdatePipeline()
-check(list(grouped.TimestepValues) == [2.5] and
-      grouped.GetDataInformation().GetNumberOfPoints() == 50,
-      "GADGET-2 binary, both parts opened as a group: one time step (%s), the 50 gas particles "
-      "once (%d)" % (list(grouped.TimestepValues), grouped.GetDataInformation().GetNumberOfPoints()))
+for pattern in ("snap_format1.%d", "gadget4_multi.%d.hdf5"):
+    grouped = OpenDataFile([os.path.join(snapshot_dir, pattern % p) for p in (0, 1)])
+    grouped.UpdatePipelineInformation()
+    grouped.UpdatePipeline()
+    check(list(grouped.TimestepValues) == [2.5] and
+          grouped.GetDataInformation().GetNumberOfPoints() == 50,
+          "%s, both parts opened as a group: one time step (%s), the 50 gas particles once (%d)"
+          % (pattern, list(grouped.TimestepValues),
+             grouped.GetDataInformation().GetNumberOfPoints()))
 reader, big = open_file(os.path.join(snapshot_dir, "snapshot_format2_big"))
 check(reader is not None and reader.GetXMLName() == "GadgetBinaryReader",
       "snapshot_format2_big opened by the GADGET Binary Snapshot Reader (got %s)"
