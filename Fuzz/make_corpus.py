@@ -74,6 +74,13 @@ write("FuzzGadgetBinaryReader", "format2-big-double", gadget(">", 2, real="d"))
 write("FuzzGadgetBinaryReader", "format1-cooling", gadget("<", 1, cooling=True))
 write("FuzzGadgetBinaryReader", "format1-two-files", gadget("<", 1, files=2))
 write("FuzzGadgetBinaryReader", "format2-info", gadget("<", 2, info=True))
+# GADGET-4's own header (192 bytes: 64-bit counts and totals, masses, time, redshift, box size,
+# num_files, alignment, Ntrees, TotNtrees) before the same blocks, format 1.
+g4 = gadget("<", 1)
+head4 = struct.pack("<6q6q6d3di4x2q", 3, 2, 0, 0, 0, 0, 3, 2, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 0,
+                    0.25, 0.0, 10.0, 1, 0, 0)
+write("FuzzGadgetBinaryReader", "format1-gadget4",
+      struct.pack("<i", 192) + head4 + struct.pack("<i", 192) + g4[4 + 256 + 4:])
 
 # The filter: flags, neighbours - 4, eight float64 parameters, then (x, y, z, f) float32 points
 # of a ball f = 20 - |x - (30, 30, 30)| in [0, 60]^3.

@@ -14,7 +14,8 @@ namespace gadget
 {
 namespace
 {
-constexpr std::uint32_t HeaderBytes = 256;
+constexpr std::uint32_t HeaderBytes = 256;        // GADGET-1/2/3's io_header
+constexpr std::uint32_t Gadget4HeaderBytes = 192; // GADGET-4's own, for 6 types
 constexpr std::uint32_t LabelBytes = 8; // format 2: 4 characters and the next record's length
 
 // Which types a block covers, by what the block holds.
@@ -190,7 +191,8 @@ bool DescribeUnknown(const Header& head, const std::string& name, std::uint64_t 
   return false;
 }
 
-bool ParseHeader(const char* b, bool big, Header& head, std::string& problem)
+// GADGET-1/2/3's 256-byte io_header.
+bool ParseGadget2Header(const char* b, bool big, Header& head, std::string& problem)
 {
   auto i32 = [&](int at) { return FromBytes<std::int32_t>(b + at, big); };
   auto u32 = [&](int at) { return FromBytes<std::uint32_t>(b + at, big); };
@@ -222,6 +224,43 @@ bool ParseHeader(const char* b, bool big, Header& head, std::string& problem)
   head.FlagStellarAge = i32(160);
   head.FlagMetals = i32(164);
   head.FlagEntropyICs = i32(192);
+  return true;
+}
+
+// GADGET-4's own header (without GADGET2_HEADER, 6 types): long long npart[6], npartTotal[6];
+// double mass[6], time, redshift, BoxSize; int num_files; long long Ntrees, TotNtrees.
+bool ParseGadget4Header(const char* b, bool big, Header& head, std::string& problem)
+{
+  for (int t = 0; t < NumberOfTypes; ++t)
+  {
+    const std::int64_t thisFile = FromBytes<std::int64_t>(b + 8 * t, big);
+    const std::int64_t total = FromBytes<std::int64_t>(b + 48 + 8 * t, big);
+    if (thisFile < 0 || thisFile > (std::int64_t(1) << 40) || total < 0)
+    {
+      problem = "the header counts " + std::to_string(thisFile) + " particles of type " +
+        std::to_string(t) + " (damaged, or not a GADGET binary snapshot)";
+      return false;
+    }
+    head.ThisFile[t] = thisFile;
+    head.Total[t] = total;
+    head.MassTable[t] = FromBytes<double>(b + 96 + 8 * t, big);
+  }
+  head.Time = FromBytes<double>(b + 144, big);
+  head.Redshift = FromBytes<double>(b + 152, big);
+  head.BoxSize = FromBytes<double>(b + 160, big);
+  head.NumFiles = std::max<std::int32_t>(1, FromBytes<std::int32_t>(b + 168, big));
+  head.Gadget4 = true;
+  return true;
+}
+
+// Either header, then what any header must hold.
+bool ParseHeader(const char* b, std::uint32_t length, bool big, Header& head, std::string& problem)
+{
+  if (!(length == HeaderBytes ? ParseGadget2Header(b, big, head, problem)
+                              : ParseGadget4Header(b, big, head, problem)))
+  {
+    return false;
+  }
   if (!std::isfinite(head.Time) || !std::isfinite(head.BoxSize))
   {
     problem = "the header's time or box size is not a finite number (not a GADGET-1/2/3 binary "
@@ -487,7 +526,7 @@ bool LooksLikeGadget(const char* firstBytes, std::size_t size)
   for (bool big : { false, true })
   {
     const std::uint32_t first = FromBytes<std::uint32_t>(firstBytes, big);
-    if (first == HeaderBytes || first == LabelBytes)
+    if (first == HeaderBytes || first == Gadget4HeaderBytes || first == LabelBytes)
     {
       return true;
     }
@@ -501,13 +540,14 @@ bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::s
   char first[4];
   if (size < 4 || !in.seekg(0) || !in.read(first, 4) || !LooksLikeGadget(first, 4))
   {
-    problem = "not a GADGET binary snapshot (its first record is neither the 256-byte header "
-              "of format 1 nor the 8-byte label of format 2; GADGET-4's own binary header is "
-              "not read: write HDF5, SnapFormat 3)";
+    problem = "not a GADGET binary snapshot (its first record is neither a header of format 1, "
+              "256 bytes or GADGET-4's 192, nor the 8-byte label of format 2)";
     return false;
   }
   std::uint32_t length = FromBytes<std::uint32_t>(first, false);
-  layout.BigEndian = !(length == HeaderBytes || length == LabelBytes); // read as little-endian
+  // (Read as little-endian: a length other than these is big-endian.)
+  layout.BigEndian =
+    !(length == HeaderBytes || length == Gadget4HeaderBytes || length == LabelBytes);
   const bool big = layout.BigEndian;
   length = FromBytes<std::uint32_t>(first, big);
   layout.Format2 = length == LabelBytes;
@@ -540,19 +580,19 @@ bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::s
     return false;
   }
   char header[HeaderBytes];
-  if (length != HeaderBytes || !in.seekg(static_cast<std::streamoff>(at + 4)) ||
-    !in.read(header, HeaderBytes))
+  if ((length != HeaderBytes && length != Gadget4HeaderBytes) ||
+    !in.seekg(static_cast<std::streamoff>(at + 4)) || !in.read(header, length))
   {
     problem = "the header record is " + std::to_string(length) +
-      " bytes, not 256 (GADGET-1/2/3; GADGET-4 binary snapshots are not read: write HDF5, "
-      "SnapFormat 3)";
+      " bytes, neither GADGET-1/2/3's 256 nor GADGET-4's 192 (a GADGET-4 built with other than "
+      "6 particle types: read its HDF5 output)";
     return false;
   }
-  if (!ParseHeader(header, big, layout.Head, problem))
+  if (!ParseHeader(header, length, big, layout.Head, problem))
   {
     return false;
   }
-  at += 4 + HeaderBytes + 4;
+  at += 4 + static_cast<std::uint64_t>(length) + 4;
   // Every block's record (and label), then their names and types.
   std::vector<RecordPlace> records;
   while (at < size)

@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The layout of one file of a GADGET-1/2/3 binary snapshot (SnapFormat 1 or 2), as the GADGET-2
 // user guide describes it: Fortran-style records (a 4-byte length before and after each), the
-// first the 256-byte header, then one record per block (positions, velocities, ids, masses,
-// then the gas's internal energy, density, smoothing length, ...), each holding the values of
-// the particle types it covers, type 0 first. Format 2 puts a small record before each block
-// naming it ("POS ", "VEL ", "ID  ", ...), and GADGET-3 an INFO block describing the others;
-// format 1 gives blocks in a fixed order instead.
-// Either byte order is recognised from the first record's length. Plain C++: what the file
-// holds and where, for vtkGadgetBinaryReader to read.
+// first the header (GADGET-2's 256 bytes, or GADGET-4's own 192), then one record per block
+// (positions, velocities, ids, masses, then the gas's internal energy, density, smoothing length,
+// ...), each holding the values of the particle types it covers, type 0 first. Format 2 puts a
+// small record before each block naming it ("POS ", "VEL ", "ID  ", ...), and GADGET-3 an INFO
+// block describing the others; format 1 gives blocks in a fixed order instead. Either byte order is
+// recognised from the first record's length. Plain C++: what the file holds and where, for
+// vtkGadgetBinaryReader to read.
 #ifndef LevelSetIsosurface_GadgetBinaryLayout_h
 #define LevelSetIsosurface_GadgetBinaryLayout_h
 
@@ -25,7 +25,8 @@ namespace gadget
 
 constexpr int NumberOfTypes = 6;
 
-/// The header of a file (GADGET-2's io_header: the 256-byte record).
+/// The header of a file: GADGET-2's io_header (the 256-byte record), or GADGET-4's own (192
+/// bytes: counts, totals, mass table, time, redshift, box size, number of files).
 struct Header
 {
   std::array<long long, NumberOfTypes> ThisFile{}; // particles of each type in this file
@@ -35,6 +36,7 @@ struct Header
   double BoxSize = 0.0, Omega0 = 0.0, OmegaLambda = 0.0, HubbleParam = 0.0;
   int FlagSfr = 0, FlagFeedback = 0, FlagCooling = 0, NumFiles = 1;
   int FlagStellarAge = 0, FlagMetals = 0, FlagEntropyICs = 0;
+  bool Gadget4 = false; // GADGET-4's own header: no flags, no cosmology (left 0)
 };
 
 /// One block of per-particle values: its array name (HDF5 snapshots' names: "Coordinates",
@@ -65,7 +67,7 @@ struct FileLayout
 };
 
 /// Whether the first bytes of a file (at least 4) start a GADGET binary snapshot: a first
-/// record of 256 bytes (format 1) or 8 (format 2), in either byte order.
+/// record of 256 or 192 bytes (format 1) or 8 (format 2), in either byte order.
 bool LooksLikeGadget(const char* firstBytes, std::size_t size);
 
 /// Reads the header and the blocks' places of the file `in`, `size` bytes long. False with

@@ -94,27 +94,33 @@ void AddField(vtkFieldData* fields, const char* name, const std::vector<double>&
   fields->AddArray(array);
 }
 
-// Header fields under the names of the HDF5 snapshots' Header attributes.
+// Header fields under the names of the HDF5 snapshots' Header attributes (GADGET-4's own header
+// has no flags and no cosmology, as its HDF5 Header; its totals are 64-bit).
 void HeaderToFieldData(const gadget::Header& head, vtkFieldData* fields)
 {
-  std::vector<double> thisFile, low, high; // (the totals' low and high 32-bit words)
+  std::vector<double> thisFile, total, low, high; // (the totals, and their 32-bit words)
   for (int t = 0; t < gadget::NumberOfTypes; ++t)
   {
     thisFile.push_back(static_cast<double>(head.ThisFile[t]));
+    total.push_back(static_cast<double>(head.Total[t]));
     low.push_back(static_cast<double>(head.Total[t] & 0xffffffffLL));
     high.push_back(static_cast<double>(head.Total[t] >> 32));
   }
   AddField(fields, "NumPart_ThisFile", thisFile);
-  AddField(fields, "NumPart_Total", low);
-  AddField(fields, "NumPart_Total_HighWord", high);
+  AddField(fields, "NumPart_Total", head.Gadget4 ? total : low);
   AddField(fields, "MassTable", std::vector<double>(head.MassTable.begin(), head.MassTable.end()));
   AddField(fields, "Time", { head.Time });
   AddField(fields, "Redshift", { head.Redshift });
   AddField(fields, "BoxSize", { head.BoxSize });
+  AddField(fields, "NumFilesPerSnapshot", { static_cast<double>(head.NumFiles) });
+  if (head.Gadget4)
+  {
+    return;
+  }
+  AddField(fields, "NumPart_Total_HighWord", high);
   AddField(fields, "Omega0", { head.Omega0 });
   AddField(fields, "OmegaLambda", { head.OmegaLambda });
   AddField(fields, "HubbleParam", { head.HubbleParam });
-  AddField(fields, "NumFilesPerSnapshot", { static_cast<double>(head.NumFiles) });
   AddField(fields, "Flag_Sfr", { static_cast<double>(head.FlagSfr) });
   AddField(fields, "Flag_Feedback", { static_cast<double>(head.FlagFeedback) });
   AddField(fields, "Flag_Cooling", { static_cast<double>(head.FlagCooling) });

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkGadgetBinaryReader
- * @brief   Reads GADGET-1/2/3 binary particle snapshots (SnapFormat 1 and 2).
+ * @brief   Reads GADGET-1/2/3/4 binary particle snapshots (SnapFormat 1 and 2).
  *
  * GADGET-2 writes its snapshots and initial conditions in this format by default (GADGET-3,
  * GIZMO and AREPO can too): a 256-byte header (particle counts per type, mass table, time,
@@ -24,8 +24,9 @@
  *   NumFilesPerSnapshot), Time as the output's time, and the SPH markers (GADGET's cubic spline,
  *   its smoothing length the kernel's support radius) so that filters find the SPH field;
  * - a snapshot in several files NAME.0, NAME.1, ... read as one from any of them.
- * Particle types, pieces under MPI and output: see vtkParticleSnapshotReader. GADGET-4's binary
- * header (other fields, 64-bit counts) is refused with a clear error: read its HDF5 output.
+ * GADGET-4's own binary header (192 bytes: 64-bit counts, no flags, no cosmology) is read too,
+ * its blocks as GADGET-2's. Particle types, pieces under MPI and output: see
+ * vtkParticleSnapshotReader.
  */
 #ifndef vtkGadgetBinaryReader_h
 #define vtkGadgetBinaryReader_h

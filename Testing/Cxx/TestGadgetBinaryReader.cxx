@@ -1,12 +1,13 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The GADGET binary reader: writes small snapshots with known particles, written here field by
-// field after GADGET-2's io_header and its blocks (format 1 and 2, both byte orders, single and
-// double precision, 4- and 8-byte ids, with and without cooling's blocks, one file or three)
-// and checks what comes back: every value, the types and their masses (MASS block or mass
-// table), the header's field data, the SPH markers, pieces across the files. Then bad files: a
-// clear error and an empty output each. With a GADGET-4 HDF5 snapshot as argument (../shared's
-// gas sphere), the same particles written as format 1 give the same surface to the bit.
+// field after GADGET-2's io_header (or GADGET-4's own header) and its blocks (format 1 and 2,
+// both byte orders, single and double precision, 4- and 8-byte ids, with and without cooling's
+// blocks, one file or three) and checks what comes back: every value, the types and their masses
+// (MASS block or mass table), the header's field data, the SPH markers, pieces across the files.
+// Then bad files: a clear error and an empty output each. With a GADGET-4 HDF5 snapshot as argument
+// (../shared's gas sphere), the same particles written as format 1 give the same surface to the
+// bit.
 #include "vtkGadgetBinaryReader.h"
 #include "vtkHDF5SnapshotReader.h"
 #include "vtkLevelSetIsosurface.h"
@@ -96,7 +97,8 @@ struct WriteOptions
   bool Cooling = false;
   bool CoolingFlagOnly = false; // the header says cooling, no NE and NH blocks are written
   int Files = 1;
-  bool Info = false; // format 2: an INFO block (GADGET-3's) describing every block
+  bool Info = false;    // format 2: an INFO block (GADGET-3's) describing every block
+  bool Gadget4 = false; // GADGET-4's own header (192 bytes) instead of GADGET-2's
 };
 
 // Particle g of type t lies in file p of `files`: [p * n / files, (p + 1) * n / files).
@@ -124,6 +126,73 @@ void Label(std::ofstream& out, const std::string& label, std::size_t nextBytes, 
   Record(out, data, bigEndian);
 }
 
+// GADGET-2's io_header, field by field, padded to 256 bytes; `count`: this file's particles.
+Bytes Gadget2Header(
+  const Particles& particles, const WriteOptions& o, const std::array<int, 6>& count)
+{
+  Bytes header(o.BigEndian);
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<std::int32_t>(count[t]);
+  }
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<double>(particles.MassTable[t]);
+  }
+  header.Put<double>(particles.Time);
+  header.Put<double>(particles.Redshift);
+  header.Put<std::int32_t>(0); // flag_sfr
+  header.Put<std::int32_t>(0); // flag_feedback
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<std::uint32_t>(static_cast<std::uint32_t>(particles.Counts[t]));
+  }
+  header.Put<std::int32_t>(o.Cooling || o.CoolingFlagOnly ? 1 : 0);
+  header.Put<std::int32_t>(o.Files);
+  header.Put<double>(particles.BoxSize);
+  header.Put<double>(0.3);     // Omega0
+  header.Put<double>(0.7);     // OmegaLambda
+  header.Put<double>(0.68);    // HubbleParam
+  header.Put<std::int32_t>(0); // flag_stellarage
+  header.Put<std::int32_t>(0); // flag_metals
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<std::uint32_t>(0); // npartTotalHighWord
+  }
+  header.Put<std::int32_t>(0); // flag_entropy_instead_u
+  header.Data.resize(256, '\0');
+  return header;
+}
+
+// GADGET-4's own header (snap_io.h without GADGET2_HEADER): 64-bit counts and totals, masses,
+// time, redshift, box size, number of files, then Ntrees and TotNtrees after 4 bytes of
+// alignment: 192 bytes.
+Bytes Gadget4Header(
+  const Particles& particles, const WriteOptions& o, const std::array<int, 6>& count)
+{
+  Bytes header(o.BigEndian);
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<std::int64_t>(count[t]);
+  }
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<std::int64_t>(particles.Counts[t]);
+  }
+  for (int t = 0; t < 6; ++t)
+  {
+    header.Put<double>(particles.MassTable[t]);
+  }
+  header.Put<double>(particles.Time);
+  header.Put<double>(particles.Redshift);
+  header.Put<double>(particles.BoxSize);
+  header.Put<std::int32_t>(o.Files);
+  header.Put<std::int32_t>(0); // (alignment)
+  header.Put<std::int64_t>(0); // Ntrees
+  header.Put<std::int64_t>(0); // TotNtrees
+  return header;
+}
+
 // Writes the snapshot to `path` (files path.0, path.1, ... when split).
 void WriteGadget(const std::string& path, const Particles& particles, const WriteOptions& o)
 {
@@ -136,41 +205,11 @@ void WriteGadget(const std::string& path, const Particles& particles, const Writ
       first[t] = FirstOf(particles.Counts[t], p, o.Files);
       count[t] = FirstOf(particles.Counts[t], p + 1, o.Files) - first[t];
     }
-    // GADGET-2's io_header, field by field, padded to 256 bytes.
-    Bytes header(o.BigEndian);
-    for (int t = 0; t < 6; ++t)
-    {
-      header.Put<std::int32_t>(count[t]);
-    }
-    for (int t = 0; t < 6; ++t)
-    {
-      header.Put<double>(particles.MassTable[t]);
-    }
-    header.Put<double>(particles.Time);
-    header.Put<double>(particles.Redshift);
-    header.Put<std::int32_t>(0); // flag_sfr
-    header.Put<std::int32_t>(0); // flag_feedback
-    for (int t = 0; t < 6; ++t)
-    {
-      header.Put<std::uint32_t>(static_cast<std::uint32_t>(particles.Counts[t]));
-    }
-    header.Put<std::int32_t>(o.Cooling || o.CoolingFlagOnly ? 1 : 0);
-    header.Put<std::int32_t>(o.Files);
-    header.Put<double>(particles.BoxSize);
-    header.Put<double>(0.3);     // Omega0
-    header.Put<double>(0.7);     // OmegaLambda
-    header.Put<double>(0.68);    // HubbleParam
-    header.Put<std::int32_t>(0); // flag_stellarage
-    header.Put<std::int32_t>(0); // flag_metals
-    for (int t = 0; t < 6; ++t)
-    {
-      header.Put<std::uint32_t>(0); // npartTotalHighWord
-    }
-    header.Put<std::int32_t>(0); // flag_entropy_instead_u
-    header.Data.resize(256, '\0');
+    const Bytes header =
+      o.Gadget4 ? Gadget4Header(particles, o, count) : Gadget2Header(particles, o, count);
     if (o.Format == 2)
     {
-      Label(out, "HEAD", 256, o.BigEndian);
+      Label(out, "HEAD", header.Data.size(), o.BigEndian);
     }
     Record(out, header, o.BigEndian);
     auto block = [&](const std::string& label, std::function<bool(int)> covers,
@@ -394,10 +433,11 @@ void TestKnownParticles(const WriteOptions& o, bool doubles, bool ids64)
     (o.BigEndian ? ", big-endian" : ", little-endian") + (doubles ? ", double" : ", float") +
     (ids64 ? ", 64-bit ids" : "") + (o.Cooling ? ", cooling" : "") +
     (o.CoolingFlagOnly ? ", cooling flag without its blocks" : "") +
+    (o.Gadget4 ? ", GADGET-4's header" : "") +
     (o.Files > 1 ? ", " + std::to_string(o.Files) + " files" : "");
   const std::string base = "gadget_test_" + std::to_string(o.Format) + (o.BigEndian ? "b" : "l") +
     (doubles ? "d" : "f") + (ids64 ? "8" : "4") + (o.Cooling ? "c" : "") +
-    (o.CoolingFlagOnly ? "k" : "") + std::to_string(o.Files);
+    (o.CoolingFlagOnly ? "k" : "") + (o.Gadget4 ? "g" : "") + std::to_string(o.Files);
   const Particles particles = KnownParticles(doubles, ids64, extra);
   WriteGadget(base, particles, o);
   // (A snapshot in files is opened from any of them: the last.)
@@ -435,9 +475,12 @@ void TestKnownParticles(const WriteOptions& o, bool doubles, bool ids64)
     what + ": the header's time");
   Check(Field(gas, "BoxSize") == "100" && Field(gas, "Redshift") == "0.6" &&
       Field(gas, "NumPart_Total", 4) == "3" && Field(gas, "MassTable", 1) == "0.5" &&
-      Field(gas, "HubbleParam") == "0.68" &&
+      Field(gas, "HubbleParam") == (o.Gadget4 ? "(none)" : "0.68") &&
       Field(gas, "NumFilesPerSnapshot") == std::to_string(o.Files) &&
-      Field(gas, "Flag_Cooling") == (o.Cooling || o.CoolingFlagOnly ? "1" : "0"),
+      Field(gas, "Flag_Cooling") ==
+        (o.Gadget4                           ? "(none)"
+            : o.Cooling || o.CoolingFlagOnly ? "1"
+                                             : "0"),
     what + ": the header as field data (BoxSize " + Field(gas, "BoxSize") + ", NumPart_Total[4] " +
       Field(gas, "NumPart_Total", 4) + ")");
   const int precision = gas->GetPoints()->GetDataType() == VTK_DOUBLE ? 8 : 4;
@@ -540,14 +583,14 @@ void TestBadFiles()
           putInt(b, 4 + 256, 255); // the header's closing length
         }),
       "does not end with its length" },
-    { "GADGET-4's header",
+    { "a 200-byte header",
       variant("gadget_bad_header",
         [&](std::vector<char>& b) {
           b.erase(b.begin() + 4 + 200, b.begin() + 4 + 256); // a 200-byte header record
           putInt(b, 0, 200);
           putInt(b, 4 + 200, 200);
         }),
-      "GADGET-4" },
+      "GADGET-4's 192" },
     { "negative count",
       variant("gadget_bad_count", [&](std::vector<char>& b) { putInt(b, 4, -7); }),
       "-7 particles" },
@@ -759,6 +802,15 @@ int main(int argc, char* argv[])
   WriteOptions flagOnly; // format 1: the header says cooling, the blocks go U, RHO, HSML
   flagOnly.CoolingFlagOnly = true;
   TestKnownParticles(flagOnly, false, false);
+  for (int format : { 1, 2 }) // GADGET-4's own header, its snapshot in three files
+  {
+    WriteOptions gadget4;
+    gadget4.Gadget4 = true;
+    gadget4.Format = format;
+    gadget4.BigEndian = format == 2;
+    gadget4.Files = 3;
+    TestKnownParticles(gadget4, format == 2, format == 2);
+  }
   TestBadFiles();
   TestLeftOutBlock();
   TestInfoBlock();
