@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
-#include <regex>
 
 vtkStandardNewMacro(vtkGadgetBinaryReader);
 
@@ -38,23 +37,6 @@ struct vtkGadgetBinaryReader::Internals
 
 namespace
 {
-// The files of a snapshot in `parts` files, from the name of one: NAME.K -> NAME.0 ... (empty
-// if the name does not end in .K).
-std::vector<std::string> PartFileNames(const std::string& file, long long parts)
-{
-  static const std::regex numbered(R"((.*)\.([0-9]+)$)");
-  std::smatch match;
-  std::vector<std::string> names;
-  if (std::regex_match(file, match, numbered))
-  {
-    for (long long p = 0; p < parts; ++p)
-    {
-      names.push_back(match[1].str() + "." + std::to_string(p));
-    }
-  }
-  return names;
-}
-
 bool ReadLayoutOf(const std::string& name, gadget::FileLayout& layout, std::string& problem)
 {
   std::ifstream file(name, std::ios::binary);

@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <set>
 
 vtkStandardNewMacro(vtkHDF5SnapshotReader);
@@ -226,23 +225,6 @@ bool AsCount(double value, long long& count)
   }
   count = static_cast<long long>(value);
   return true;
-}
-
-// The files of a snapshot in `parts` files: name.0.hdf5 ... name.(parts-1).hdf5, found from any
-// of them. Empty if `file` is not named that way.
-std::vector<std::string> PartFileNames(const std::string& file, long long parts)
-{
-  static const std::regex numbered(R"((.*)\.([0-9]+)\.(hdf5|h5|HDF5)$)");
-  std::smatch match;
-  std::vector<std::string> names;
-  if (std::regex_match(file, match, numbered))
-  {
-    for (long long p = 0; p < parts; ++p)
-    {
-      names.push_back(match[1].str() + "." + std::to_string(p) + "." + match[3].str());
-    }
-  }
-  return names;
 }
 
 // The VTK array type for a dataset's type (the same class, size and sign), or -1 for types we do

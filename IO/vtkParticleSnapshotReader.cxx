@@ -18,6 +18,7 @@
 #include "vtkStringArray.h"
 
 #include <numeric>
+#include <regex>
 #include <utility>
 
 vtkParticleSnapshotReader::vtkParticleSnapshotReader()
@@ -67,6 +68,22 @@ std::string vtkParticleSnapshotReader::PartTypeName(int number)
   const std::string part = "PartType" + std::to_string(number);
   return number >= 0 && number < 6 && names[number] ? std::string(names[number]) + " (" + part + ")"
                                                     : part;
+}
+
+std::vector<std::string> vtkParticleSnapshotReader::PartFileNames(
+  const std::string& file, long long parts)
+{
+  static const std::regex numbered(R"((.*)\.([0-9]+)(\.[A-Za-z0-9]+)?$)");
+  std::smatch match;
+  std::vector<std::string> names;
+  if (std::regex_match(file, match, numbered))
+  {
+    for (long long p = 0; p < parts; ++p)
+    {
+      names.push_back(match[1].str() + "." + std::to_string(p) + match[3].str());
+    }
+  }
+  return names;
 }
 
 bool vtkParticleSnapshotReader::ListPartTypes(const std::vector<long long>& totals,

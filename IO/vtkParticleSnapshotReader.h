@@ -90,6 +90,13 @@ protected:
     std::string& problem) = 0;
 
   /**
+   * The files of a snapshot split over `parts` files, from the name of any one of them:
+   * NAME.K or NAME.K.EXT gives NAME.0[.EXT], NAME.1[.EXT], ...; empty if the name has no such
+   * number.
+   */
+  static std::vector<std::string> PartFileNames(const std::string& file, long long parts);
+
+  /**
    * The GADGET family's types (GADGET, GIZMO, AREPO, SWIFT): those of `totals` (particles of each
    * type number over the snapshot) that hold particles, named by PartTypeName, gas selected by
    * default or else the first type listed. `numbers` receives each listed type's number. False
