@@ -18,6 +18,14 @@ constexpr std::uint32_t HeaderBytes = 256;        // GADGET-1/2/3's io_header
 constexpr std::uint32_t Gadget4HeaderBytes = 192; // GADGET-4's own, for 6 types
 constexpr std::uint32_t LabelBytes = 8; // format 2: 4 characters and the next record's length
 
+// Whether a file's first record length (read in some byte order) starts a snapshot: a header
+// of format 1 or the label of format 2.
+bool StartsSnapshot(std::uint32_t firstLength)
+{
+  return firstLength == HeaderBytes || firstLength == Gadget4HeaderBytes ||
+    firstLength == LabelBytes;
+}
+
 // Which types a block covers, by what the block holds.
 enum class Coverage
 {
@@ -203,7 +211,7 @@ bool ParseGadget2Header(const char* b, bool big, Header& head, std::string& prob
     if (thisFile < 0)
     {
       problem = "the header counts " + std::to_string(thisFile) + " particles of type " +
-        std::to_string(t) + " (not a GADGET-1/2/3 binary snapshot, or damaged)";
+        std::to_string(t) + " (not a GADGET binary snapshot, or damaged)";
       return false;
     }
     head.ThisFile[t] = thisFile;
@@ -263,7 +271,7 @@ bool ParseHeader(const char* b, std::uint32_t length, bool big, Header& head, st
   }
   if (!std::isfinite(head.Time) || !std::isfinite(head.BoxSize))
   {
-    problem = "the header's time or box size is not a finite number (not a GADGET-1/2/3 binary "
+    problem = "the header's time or box size is not a finite number (not a GADGET binary "
               "snapshot, or damaged)";
     return false;
   }
@@ -272,7 +280,7 @@ bool ParseHeader(const char* b, std::uint32_t length, bool big, Header& head, st
     if (!(m >= 0.0) || !std::isfinite(m))
     {
       problem = "the header's mass table holds " + std::to_string(m) +
-        " (not a GADGET-1/2/3 binary snapshot, or damaged)";
+        " (not a GADGET binary snapshot, or damaged)";
       return false;
     }
   }
@@ -408,9 +416,8 @@ bool DescribeFromInfo(const Header& head, const std::vector<InfoEntry>& info,
     {
       block.Covers[t] = entry.Present[t] && head.ThisFile[t] > 0;
     }
-    const std::uint64_t expected = static_cast<std::uint64_t>(CountCovered(head, block.Covers)) *
-      static_cast<std::uint64_t>(entry.Components) * static_cast<std::uint64_t>(entry.ValueBytes);
-    return expected == bytes && expected > 0;
+    return ValueBytesFor(bytes, CountCovered(head, block.Covers), entry.Components) ==
+      entry.ValueBytes;
   }
   return false;
 }
@@ -517,39 +524,21 @@ const Block* FileLayout::Find(const std::string& name, int type) const
   return nullptr;
 }
 
-bool LooksLikeGadget(const char* firstBytes, std::size_t size)
-{
-  if (size < 4)
-  {
-    return false;
-  }
-  for (bool big : { false, true })
-  {
-    const std::uint32_t first = FromBytes<std::uint32_t>(firstBytes, big);
-    if (first == HeaderBytes || first == Gadget4HeaderBytes || first == LabelBytes)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::string& problem)
 {
   layout = FileLayout();
   char first[4];
-  if (size < 4 || !in.seekg(0) || !in.read(first, 4) || !LooksLikeGadget(first, 4))
+  if (size < 4 || !in.seekg(0) || !in.read(first, 4) ||
+    !(StartsSnapshot(FromBytes<std::uint32_t>(first, false)) ||
+      StartsSnapshot(FromBytes<std::uint32_t>(first, true))))
   {
     problem = "not a GADGET binary snapshot (its first record is neither a header of format 1, "
               "256 bytes or GADGET-4's 192, nor the 8-byte label of format 2)";
     return false;
   }
-  std::uint32_t length = FromBytes<std::uint32_t>(first, false);
-  // (Read as little-endian: a length other than these is big-endian.)
-  layout.BigEndian =
-    !(length == HeaderBytes || length == Gadget4HeaderBytes || length == LabelBytes);
+  layout.BigEndian = !StartsSnapshot(FromBytes<std::uint32_t>(first, false));
   const bool big = layout.BigEndian;
-  length = FromBytes<std::uint32_t>(first, big);
+  std::uint32_t length = FromBytes<std::uint32_t>(first, big);
   layout.Format2 = length == LabelBytes;
   std::uint64_t at = 0;
   // Format 2: the label of the next block, and where that block's record starts.

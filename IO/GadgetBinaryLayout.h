@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The layout of one file of a GADGET-1/2/3 binary snapshot (SnapFormat 1 or 2), as the GADGET-2
+// The layout of one file of a GADGET binary snapshot (SnapFormat 1 or 2), as the GADGET-2
 // user guide describes it: Fortran-style records (a 4-byte length before and after each), the
 // first the header (GADGET-2's 256 bytes, or GADGET-4's own 192), then one record per block
 // (positions, velocities, ids, masses, then the gas's internal energy, density, smoothing length,
@@ -66,12 +66,9 @@ struct FileLayout
   const Block* Find(const std::string& name, int type) const;
 };
 
-/// Whether the first bytes of a file (at least 4) start a GADGET binary snapshot: a first
-/// record of 256 or 192 bytes (format 1) or 8 (format 2), in either byte order.
-bool LooksLikeGadget(const char* firstBytes, std::size_t size);
-
 /// Reads the header and the blocks' places of the file `in`, `size` bytes long. False with
-/// `problem` set (in words, without the file's name) when it is not such a file, or damaged.
+/// `problem` set (in words, without the file's name) when it is not such a file (a first record
+/// of neither 256 or 192 bytes, format 1, nor 8, format 2, in either byte order), or damaged.
 bool ReadLayout(std::istream& in, std::uint64_t size, FileLayout& layout, std::string& problem);
 
 /// The byte offset of particle `index` of `type` (counted within this file) in `block`.

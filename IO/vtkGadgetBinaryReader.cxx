@@ -189,19 +189,9 @@ vtkGadgetBinaryReader::~vtkGadgetBinaryReader() = default;
 
 bool vtkGadgetBinaryReader::CanReadFile(const char* name)
 {
-  if (!name)
-  {
-    return false;
-  }
-  std::ifstream file(name, std::ios::binary);
-  char first[4];
-  if (!file || !file.read(first, 4) || !gadget::LooksLikeGadget(first, 4))
-  {
-    return false;
-  }
   gadget::FileLayout layout;
   std::string problem;
-  return ReadLayoutOf(name, layout, problem);
+  return name && ReadLayoutOf(name, layout, problem);
 }
 
 bool vtkGadgetBinaryReader::ReadMetaData(
@@ -381,11 +371,7 @@ bool vtkGadgetBinaryReader::ReadParticles(
   output->SetPoints(points);
   if (!haveMasses)
   {
-    vtkNew<vtkDoubleArray> masses; // equal masses: the header's mass table entry
-    masses->SetName("Masses");
-    masses->SetNumberOfValues(count);
-    masses->Fill(firstLayout->Head.MassTable[number]);
-    pointData->AddArray(masses);
+    AddTableMasses(pointData, count, firstLayout->Head.MassTable[number]);
   }
   markers.Mass = "Masses";
   MarkSPHArrays(output, markers);

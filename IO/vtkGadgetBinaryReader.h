@@ -45,7 +45,7 @@ public:
   vtkTypeMacro(vtkGadgetBinaryReader, vtkParticleSnapshotReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Whether the file is a GADGET-1/2/3 binary snapshot (a consistent header record). */
+  /** Whether the file is a GADGET binary snapshot (a consistent header and records). */
   static bool CanReadFile(const char* name);
 
 protected:

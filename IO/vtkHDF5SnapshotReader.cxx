@@ -667,11 +667,7 @@ bool vtkHDF5SnapshotReader::ReadParticles(
   output->SetPoints(points);
   if (!haveMasses && number < static_cast<int>(this->MassTable.size()))
   {
-    vtkNew<vtkDoubleArray> masses; // equal masses: the Header's MassTable entry
-    masses->SetName("Masses");
-    masses->SetNumberOfValues(count);
-    masses->Fill(this->MassTable[number]);
-    pointData->AddArray(masses);
+    AddTableMasses(pointData, count, this->MassTable[number]);
     haveMasses = true;
   }
   markers.Mass = haveMasses ? "Masses" : "";

@@ -112,6 +112,16 @@ bool vtkParticleSnapshotReader::ListPartTypes(const std::vector<long long>& tota
   return true;
 }
 
+void vtkParticleSnapshotReader::AddTableMasses(
+  vtkPointData* pointData, vtkIdType count, double mass)
+{
+  vtkNew<vtkDoubleArray> masses;
+  masses->SetName("Masses");
+  masses->SetNumberOfValues(count);
+  masses->Fill(mass);
+  pointData->AddArray(masses);
+}
+
 vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
 {
   vtkNew<vtkIdTypeArray> ids;

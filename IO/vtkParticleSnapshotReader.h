@@ -27,6 +27,7 @@
 class vtkCellArray;
 class vtkDataArraySelection;
 class vtkFieldData;
+class vtkPointData;
 class vtkPolyData;
 
 class LEVELSETISOSURFACEIO_EXPORT vtkParticleSnapshotReader : public vtkDataObjectAlgorithm
@@ -58,6 +59,12 @@ public:
    * GADGET-family readers give it: "Gas (PartType0)", "DarkMatter (PartType1)", "PartType2", ...
    */
   static std::string PartTypeName(int number);
+
+  /**
+   * Adds "Masses", `count` equal values `mass`: a type whose masses the header's mass table
+   * gives (GADGET, GIZMO, AREPO) instead of a per-particle array.
+   */
+  static void AddTableMasses(vtkPointData* pointData, vtkIdType count, double mass);
 
   /** One vertex cell per point 0 .. count-1. */
   static vtkNew<vtkCellArray> VertexCells(vtkIdType count);
