@@ -65,6 +65,25 @@ std::string BlocksOf(const gadget::FileLayout& layout, int type)
   return list;
 }
 
+// The point arrays the reader gives for particles of `type`: its blocks' names but the
+// positions', and Masses (from the block or the mass table).
+std::vector<std::string> PointArrayNames(const gadget::FileLayout& layout, int type)
+{
+  std::vector<std::string> arrays;
+  for (const gadget::Block& block : layout.Blocks)
+  {
+    if (block.Covers[type] && block.Name != "Coordinates")
+    {
+      arrays.push_back(block.Name);
+    }
+  }
+  if (std::find(arrays.begin(), arrays.end(), "Masses") == arrays.end())
+  {
+    arrays.push_back("Masses");
+  }
+  return arrays;
+}
+
 void AddField(vtkFieldData* fields, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> array;
@@ -263,6 +282,7 @@ bool vtkGadgetBinaryReader::ReadMetaData(
     internal.Warned = warning;
   }
   std::vector<long long> totals(gadget::NumberOfTypes, 0);
+  std::vector<std::vector<std::string>> arraysOf(gadget::NumberOfTypes);
   for (int t = 0; t < gadget::NumberOfTypes; ++t)
   {
     const Internals::Part* first = nullptr; // the first part with particles of this type
@@ -285,8 +305,20 @@ bool vtkGadgetBinaryReader::ReadMetaData(
         return false;
       }
     }
+    if (first)
+    {
+      arraysOf[t] = PointArrayNames(first->Layout, t);
+    }
   }
-  return ListPartTypes(totals, types, internal.TypeNumbers, problem);
+  if (!ListPartTypes(totals, types, internal.TypeNumbers, problem))
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < types.size(); ++k)
+  {
+    types[k].Arrays = arraysOf[internal.TypeNumbers[k]];
+  }
+  return true;
 }
 
 bool vtkGadgetBinaryReader::ReadParticles(
@@ -311,12 +343,15 @@ bool vtkGadgetBinaryReader::ReadParticles(
     }
     if (!firstLayout)
     {
+      // One array per block of this type (every part holds the same), none for the blocks the
+      // user left unread (PointArraySelection); the positions are always read.
       firstLayout = &layout;
       for (const gadget::Block& block : layout.Blocks)
       {
         if (block.Covers[number])
         {
-          arrays.push_back(NewArray(block, count));
+          const bool read = block.Name == "Coordinates" || this->ReadsArray(block.Name);
+          arrays.push_back(read ? NewArray(block, count) : nullptr);
         }
       }
     }
@@ -328,11 +363,16 @@ bool vtkGadgetBinaryReader::ReadParticles(
       {
         continue;
       }
+      vtkDataArray* array = arrays[a++];
+      if (!array)
+      {
+        continue; // left unread
+      }
       const std::uint64_t offset =
         gadget::ValueOffset(layout, block, number, from - (partStart - inPart));
       if (!file ||
-        !ReadValues(file, block, layout.BigEndian, offset, static_cast<vtkIdType>(to - from),
-          arrays[a++], static_cast<vtkIdType>(filled)))
+        !ReadValues(file, block, layout.BigEndian, offset, static_cast<vtkIdType>(to - from), array,
+          static_cast<vtkIdType>(filled)))
       {
         problem = "cannot read block " + block.Name + " of " + part.File + " (truncated file?)";
         return false;
@@ -347,6 +387,10 @@ bool vtkGadgetBinaryReader::ReadParticles(
   SPHMarkers markers; // GADGET's cubic spline, whose support radius is its smoothing length
   for (vtkDataArray* array : arrays)
   {
+    if (!array)
+    {
+      continue;
+    }
     const std::string name = array->GetName();
     if (name == "Coordinates")
     {
@@ -369,7 +413,7 @@ bool vtkGadgetBinaryReader::ReadParticles(
     return false;
   }
   output->SetPoints(points);
-  if (!haveMasses)
+  if (!haveMasses && this->ReadsArray("Masses"))
   {
     AddTableMasses(pointData, count, firstLayout->Head.MassTable[number]);
   }

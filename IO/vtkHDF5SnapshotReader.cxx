@@ -285,6 +285,23 @@ hid_t MemoryTypeFor(int arrayType)
   }
 }
 
+// The VTK array type of `dataset` read as a per-particle array (one row per particle, one or
+// more numeric columns), with its rank and shape; -1 for a dataset that is not one (scalars,
+// higher ranks, no columns, compound or string types).
+int PerParticleArrayType(hid_t dataset, int& rank, hsize_t (&dims)[2])
+{
+  Handle space(H5Dget_space(dataset), H5Sclose);
+  Handle fileType(H5Dget_type(dataset), H5Tclose);
+  rank = H5Sget_simple_extent_ndims(space);
+  dims[0] = 0;
+  dims[1] = 1;
+  if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0 || dims[1] == 0)
+  {
+    return -1;
+  }
+  return ArrayTypeFor(fileType);
+}
+
 // The names of the datasets directly in `group`.
 std::vector<std::string> DatasetNames(hid_t group)
 {
@@ -310,6 +327,29 @@ std::vector<std::string> DatasetNames(hid_t group)
     }
   }
   return names;
+}
+
+// The point arrays a reader gives for the particles of `group` in `file`: its per-particle
+// numeric datasets but the positions (Coordinates), in the file's order.
+std::vector<std::string> PointArrayNames(hid_t file, const std::string& group)
+{
+  std::vector<std::string> arrays;
+  Handle particles(H5Gopen2(file, group.c_str(), H5P_DEFAULT), H5Gclose);
+  if (!particles.Valid())
+  {
+    return arrays;
+  }
+  for (const std::string& name : DatasetNames(particles))
+  {
+    Handle dataset(H5Dopen2(particles, name.c_str(), H5P_DEFAULT), H5Dclose);
+    int rank = 0;
+    hsize_t dims[2];
+    if (name != "Coordinates" && dataset.Valid() && PerParticleArrayType(dataset, rank, dims) >= 0)
+    {
+      arrays.push_back(name);
+    }
+  }
+  return arrays;
 }
 
 const char* const DensityNames[] = { "Density", "Densities" };
@@ -428,7 +468,9 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
   }
 
   // The particle count of every type in every part (NumPart_ThisFile, or the groups' lengths).
-  std::vector<std::vector<long long>> counts; // [part][PartType number]
+  std::vector<std::vector<long long>> counts;         // [part][PartType number]
+  std::vector<std::vector<std::string>> arraysOf(64); // [PartType number]: its point arrays
+  std::vector<char> listedArrays(64, 0);
   int numberOfTypes = 0;
   for (const std::string& name : this->Parts)
   {
@@ -475,6 +517,11 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
           " in " + name + ", which has no such group";
         return false;
       }
+      if (count > 0 && !listedArrays[t])
+      {
+        arraysOf[t] = PointArrayNames(part, group);
+        listedArrays[t] = 1;
+      }
       partCounts.push_back(count);
       if (count > 0 || Exists(part, group))
       {
@@ -494,6 +541,17 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
   if (!ListPartTypes(totals, types, this->TypeNumbers, problem))
   {
     return false;
+  }
+  for (std::size_t k = 0; k < types.size(); ++k)
+  {
+    const int t = this->TypeNumbers[k];
+    types[k].Arrays = arraysOf[t];
+    const bool massDataset =
+      std::find(arraysOf[t].begin(), arraysOf[t].end(), "Masses") != arraysOf[t].end();
+    if (!massDataset && t < static_cast<int>(this->MassTable.size()))
+    {
+      types[k].Arrays.push_back("Masses"); // from the MassTable
+    }
   }
   for (const auto& partCounts : counts)
   {
@@ -549,12 +607,19 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     leftOut.resize(names.size(), 0);
     for (std::size_t d = 0; d < names.size(); ++d)
     {
+      if (names[d] != "Coordinates" && !this->ReadsArray(names[d]))
+      {
+        continue; // left unread by the user (PointArraySelection)
+      }
       Handle dataset(H5Dopen2(particles, names[d].c_str(), H5P_DEFAULT), H5Dclose);
       Handle space(H5Dget_space(dataset), H5Sclose);
-      Handle fileType(H5Dget_type(dataset), H5Tclose);
+      int rank = 0;
+      hsize_t dims[2];
+      const int arrayType = PerParticleArrayType(dataset, rank, dims);
       // A dataset that is not a per-particle numeric array is left out, in every part alike:
       // read from some parts only, the other parts' rows of its array would stay unset.
-      auto leaveOut = [&]() {
+      if (arrayType < 0)
+      {
         if (arrays[d])
         {
           problem = "dataset " + group + "/" + names[d] + " in " + this->Parts[p] +
@@ -562,18 +627,7 @@ bool vtkHDF5SnapshotReader::ReadParticles(
           return false;
         }
         leftOut[d] = 1;
-        return true;
-      };
-      const int rank = H5Sget_simple_extent_ndims(space);
-      hsize_t dims[2] = { 0, 1 };
-      if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0 ||
-        dims[1] == 0)
-      {
-        if (!leaveOut())
-        {
-          return false;
-        }
-        continue; // scalars, higher ranks or no columns are not per-particle arrays
+        continue;
       }
       if (arrays[d] && static_cast<hsize_t>(arrays[d]->GetNumberOfComponents()) != dims[1])
       {
@@ -588,15 +642,6 @@ bool vtkHDF5SnapshotReader::ReadParticles(
           std::to_string(dims[0]) + " entries, but the file counts " + std::to_string(inPart) +
           " particles of this type";
         return false;
-      }
-      const int arrayType = ArrayTypeFor(fileType);
-      if (arrayType < 0)
-      {
-        if (!leaveOut())
-        {
-          return false;
-        }
-        continue; // compound or other types: not a numeric array
       }
       if (leftOut[d])
       {
@@ -665,7 +710,8 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     return false;
   }
   output->SetPoints(points);
-  if (!haveMasses && number < static_cast<int>(this->MassTable.size()))
+  if (!haveMasses && number < static_cast<int>(this->MassTable.size()) &&
+    this->ReadsArray("Masses"))
   {
     AddTableMasses(pointData, count, this->MassTable[number]);
     haveMasses = true;

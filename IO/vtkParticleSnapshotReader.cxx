@@ -25,8 +25,11 @@ vtkParticleSnapshotReader::vtkParticleSnapshotReader()
 {
   this->SetNumberOfInputPorts(0);
   // A changed selection changes the output: re-execute.
-  this->ParticleTypeSelection->AddObserver(
-    vtkCommand::ModifiedEvent, this, &vtkParticleSnapshotReader::Modified);
+  for (vtkDataArraySelection* selection :
+    { this->ParticleTypeSelection.Get(), this->PointArraySelection.Get() })
+  {
+    selection->AddObserver(vtkCommand::ModifiedEvent, this, &vtkParticleSnapshotReader::Modified);
+  }
 }
 
 vtkParticleSnapshotReader::~vtkParticleSnapshotReader() = default;
@@ -59,6 +62,32 @@ int vtkParticleSnapshotReader::GetParticleTypeArrayStatus(const char* name)
 void vtkParticleSnapshotReader::SetParticleTypeStatus(const char* name, int status)
 {
   this->ParticleTypeSelection->SetArraySetting(name, status);
+}
+
+int vtkParticleSnapshotReader::GetNumberOfPointArrays()
+{
+  return this->PointArraySelection->GetNumberOfArrays();
+}
+
+const char* vtkParticleSnapshotReader::GetPointArrayName(int index)
+{
+  return this->PointArraySelection->GetArrayName(index);
+}
+
+int vtkParticleSnapshotReader::GetPointArrayStatus(const char* name)
+{
+  return this->PointArraySelection->ArrayIsEnabled(name);
+}
+
+void vtkParticleSnapshotReader::SetPointArrayStatus(const char* name, int status)
+{
+  this->PointArraySelection->SetArraySetting(name, status);
+}
+
+bool vtkParticleSnapshotReader::ReadsArray(const std::string& name)
+{
+  return !this->PointArraySelection->ArrayExists(name.c_str()) ||
+    this->PointArraySelection->ArrayIsEnabled(name.c_str());
 }
 
 std::string vtkParticleSnapshotReader::PartTypeName(int number)
@@ -135,10 +164,15 @@ vtkNew<vtkCellArray> vtkParticleSnapshotReader::VertexCells(vtkIdType count)
 void vtkParticleSnapshotReader::MarkSPHArrays(vtkPolyData* particles, const SPHMarkers& markers)
 {
   vtkFieldData* fields = particles->GetFieldData();
-  const bool smoothed = !markers.SmoothingLength.empty();
-  for (const auto& marker : { std::make_pair("DensityArray", markers.Density),
-         std::make_pair("SmoothingLengthArray", markers.SmoothingLength),
-         std::make_pair("MassArray", markers.Mass),
+  // An array left unread (PointArraySelection) is not marked.
+  auto read = [particles](const std::string& name) {
+    return particles->GetPointData()->GetArray(name.c_str()) ? name : std::string();
+  };
+  const std::string density = read(markers.Density);
+  const bool smoothed = !read(markers.SmoothingLength).empty();
+  for (const auto& marker : { std::make_pair("DensityArray", density),
+         std::make_pair("SmoothingLengthArray", read(markers.SmoothingLength)),
+         std::make_pair("MassArray", read(markers.Mass)),
          std::make_pair("SPHKernel", smoothed ? markers.Kernel : std::string()) })
   {
     if (!marker.second.empty())
@@ -156,9 +190,9 @@ void vtkParticleSnapshotReader::MarkSPHArrays(vtkPolyData* particles, const SPHM
     support->InsertNextValue(markers.SupportPerSmoothingLength);
     fields->AddArray(support);
   }
-  if (!markers.Density.empty())
+  if (!density.empty())
   {
-    particles->GetPointData()->SetActiveScalars(markers.Density.c_str());
+    particles->GetPointData()->SetActiveScalars(density.c_str());
   }
 }
 
@@ -186,12 +220,20 @@ bool vtkParticleSnapshotReader::UpdateMetaData(bool force)
   }
   this->MetaDataFileName = this->FileName;
   this->MetaDataRead = true;
-  // New types appear with their default; types the user already set keep their setting.
+  // New types and arrays appear with their default (arrays: read); those the user already set
+  // keep their setting.
   for (const ParticleType& type : this->Types)
   {
     if (!this->ParticleTypeSelection->ArrayExists(type.Name.c_str()))
     {
       this->ParticleTypeSelection->AddArray(type.Name.c_str(), type.SelectedByDefault);
+    }
+    for (const std::string& array : type.Arrays)
+    {
+      if (!this->PointArraySelection->ArrayExists(array.c_str()))
+      {
+        this->PointArraySelection->AddArray(array.c_str());
+      }
     }
   }
   return this->MetaDataProblem.empty();
@@ -327,5 +369,10 @@ void vtkParticleSnapshotReader::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "ParticleType " << this->ParticleTypeSelection->GetArrayName(i) << ": "
        << (this->ParticleTypeSelection->GetArraySetting(i) ? "on" : "off") << "\n";
+  }
+  for (int i = 0; i < this->PointArraySelection->GetNumberOfArrays(); ++i)
+  {
+    os << indent << "PointArray " << this->PointArraySelection->GetArrayName(i) << ": "
+       << (this->PointArraySelection->GetArraySetting(i) ? "on" : "off") << "\n";
   }
 }

@@ -8,6 +8,9 @@
  * subclass lists the types a file holds and reads a range of one type's particles; this class
  * does the rest, the same way for every format:
  * - the particle type selection (ParticleTypeSelection; gas on, the others off by default);
+ * - the point array selection (PointArraySelection; all on by default): a snapshot of a large
+ *   run holds tens of arrays per particle, and a surface needs three (density, smoothing length,
+ *   mass), so the others can be left unread. The positions are always read;
  * - the output: vtkPolyData (one vertex cell per particle) when one type is selected, a
  *   vtkMultiBlockDataSet with one named block per selected type otherwise;
  * - pieces: under MPI each rank reads its own contiguous share of every selected type;
@@ -54,6 +57,21 @@ public:
   void SetParticleTypeStatus(const char* name, int status);
   ///@}
 
+  ///@{
+  /**
+   * Which point arrays to read, by name (for example "Density", "Velocities"; the ids' array,
+   * "ParticleIDs", gives the global ids). The names, of every type the file holds, are known
+   * after UpdateInformation(); all are selected by default. An array left unread costs neither
+   * time nor memory. The SPH field needs the density, smoothing-length and mass arrays: without
+   * them vtkLevelSetIsosurface falls back to the MLS fit (and says so).
+   */
+  vtkDataArraySelection* GetPointArraySelection() { return this->PointArraySelection; }
+  int GetNumberOfPointArrays();
+  const char* GetPointArrayName(int index);
+  int GetPointArrayStatus(const char* name);
+  void SetPointArrayStatus(const char* name, int status);
+  ///@}
+
   /**
    * The name of GADGET's particle type `number` (PartType<number>) in the selection, as the
    * GADGET-family readers give it: "Gas (PartType0)", "DarkMatter (PartType1)", "PartType2", ...
@@ -73,12 +91,16 @@ protected:
   vtkParticleSnapshotReader();
   ~vtkParticleSnapshotReader() override;
 
-  /** A particle type of the file: its name in the selection and how many particles it has. */
+  /**
+   * A particle type of the file: its name in the selection, how many particles it has, and the
+   * names of its point arrays (the positions not among them) as ReadParticles names them.
+   */
   struct ParticleType
   {
     std::string Name;
     long long Count = 0;
     bool SelectedByDefault = false;
+    std::vector<std::string> Arrays;
   };
 
   /**
@@ -91,10 +113,16 @@ protected:
 
   /**
    * Reads particles [begin, end) of type `type` (an index into ReadMetaData's list) into
-   * `output`: points and point arrays (no cells). Returns false with `problem` set.
+   * `output`: points and the point arrays for which ReadsArray holds (no cells). Returns false
+   * with `problem` set.
    */
   virtual bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
     std::string& problem) = 0;
+
+  /**
+   * Whether the point array `name` is to be read: selected, or not listed by ReadMetaData.
+   */
+  bool ReadsArray(const std::string& name);
 
   /**
    * The files of a snapshot split over `parts` files, from the name of any one of them:
@@ -128,8 +156,8 @@ protected:
    * Marks the SPH arrays of `particles`: the density becomes the active scalars, and field data
    * "DensityArray", "SmoothingLengthArray", "MassArray", "SPHKernel" and
    * "SupportPerSmoothingLength" say what they are, so that filters (vtkLevelSetIsosurface's SPH
-   * field) find them without the user naming them. The kernel is only marked with a smoothing
-   * length.
+   * field) find them without the user naming them. Only arrays `particles` has are marked (an
+   * array may be left unread), and the kernel only with a smoothing length.
    */
   static void MarkSPHArrays(vtkPolyData* particles, const SPHMarkers& markers);
 
@@ -151,6 +179,7 @@ private:
   std::vector<std::size_t> SelectedTypes();
 
   vtkNew<vtkDataArraySelection> ParticleTypeSelection;
+  vtkNew<vtkDataArraySelection> PointArraySelection;
   std::vector<ParticleType> Types;
   double Time = 0.0;
   vtkNew<vtkFieldData> Fields;

@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <cstdint>
 #include <cstring>
@@ -129,6 +130,11 @@ bool vtkTipsyParticleReader::ReadMetaData(
       type.Name = Layouts[k].TypeName;
       type.Count = counts[k];
       type.SelectedByDefault = types.empty(); // gas, or the first type there is
+      for (const auto& scalar : Layouts[k].Scalars)
+      {
+        type.Arrays.push_back(scalar.first);
+      }
+      type.Arrays.push_back("velocity");
       types.push_back(type);
       this->TypeKinds.push_back(k);
       this->TypeOffsets.push_back(offset);
@@ -164,17 +170,26 @@ bool vtkTipsyParticleReader::ReadParticles(
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(n);
-  const std::size_t columns = layout.Scalars.size();
-  std::vector<vtkNew<vtkFloatArray>> scalars(columns);
-  for (std::size_t a = 0; a < columns; ++a)
+  // The columns the user reads (PointArraySelection), with the float each comes from.
+  std::vector<std::pair<vtkSmartPointer<vtkFloatArray>, int>> scalars;
+  for (const auto& scalar : layout.Scalars)
   {
-    scalars[a]->SetName(layout.Scalars[a].first);
-    scalars[a]->SetNumberOfValues(n);
+    if (this->ReadsArray(scalar.first))
+    {
+      auto array = vtkSmartPointer<vtkFloatArray>::New();
+      array->SetName(scalar.first);
+      array->SetNumberOfValues(n);
+      scalars.emplace_back(array, scalar.second);
+    }
   }
-  vtkNew<vtkFloatArray> velocity;
-  velocity->SetName("velocity");
-  velocity->SetNumberOfComponents(3);
-  velocity->SetNumberOfTuples(n);
+  vtkSmartPointer<vtkFloatArray> velocity;
+  if (this->ReadsArray("velocity"))
+  {
+    velocity = vtkSmartPointer<vtkFloatArray>::New();
+    velocity->SetName("velocity");
+    velocity->SetNumberOfComponents(3);
+    velocity->SetNumberOfTuples(n);
+  }
   std::vector<float> v(layout.Floats);
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -183,19 +198,25 @@ bool vtkTipsyParticleReader::ReadParticles(
       v[c] = FromBytes<float>(&bytes[record * i + 4 * c], this->BigEndian);
     }
     points->SetPoint(i, v[1], v[2], v[3]);
-    velocity->SetTypedTuple(i, &v[4]);
-    for (std::size_t a = 0; a < columns; ++a)
+    if (velocity)
     {
-      scalars[a]->SetValue(i, v[layout.Scalars[a].second]);
+      velocity->SetTypedTuple(i, &v[4]);
+    }
+    for (auto& scalar : scalars)
+    {
+      scalar.first->SetValue(i, v[scalar.second]);
     }
   }
   output->SetPoints(points);
-  for (auto& array : scalars)
+  for (auto& scalar : scalars)
   {
-    output->GetPointData()->AddArray(array);
+    output->GetPointData()->AddArray(scalar.first);
   }
-  output->GetPointData()->AddArray(velocity);
-  if (output->GetPointData()->GetArray("rho")) // gas
+  if (velocity)
+  {
+    output->GetPointData()->AddArray(velocity);
+  }
+  if (this->TypeKinds[type] == 0) // gas
   {
     SPHMarkers markers; // Gasoline and ChaNGa: the cubic spline's support is 2 hsmooth
     markers.Density = "rho";

@@ -15,6 +15,7 @@
 #include "GadgetWriter.h"
 #include "MessageCounter.h"
 #include "OrderedBytes.h"
+#include "PointArraySelection.h"
 #include "RefusedFile.h"
 #include "TestCheck.h"
 
@@ -43,6 +44,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -429,6 +431,40 @@ void TestInfoBlock()
   std::remove("gadget_info");
 }
 
+// The point array selection on a snapshot in three files (format 2, big-endian, cooling): every
+// block listed under its name, the blocks chosen read alone (the others skipped in every part),
+// with the values of a full read; dark matter's table masses can be left unread too.
+void TestPointArraySelection()
+{
+  WriteOptions o;
+  o.Format = 2;
+  o.BigEndian = true;
+  o.Cooling = true;
+  o.Files = 3;
+  WriteGadget("gadget_arrays", KnownParticles(false, false, false), o);
+  vtkNew<vtkGadgetBinaryReader> reader;
+  reader->SetFileName("gadget_arrays.1");
+  const std::set<std::string> gas = { "Density", "ElectronAbundance", "InternalEnergy", "Masses",
+    "NeutralHydrogenAbundance", "ParticleIDs", "SmoothingLength", "Velocities" };
+  lsi::test::CheckPointArraySelection(reader.Get(), gas, { "Density", "Masses", "SmoothingLength" },
+    "three files, gas, the SPH field's arrays");
+  lsi::test::CheckPointArraySelection(reader.Get(), gas,
+    { "NeutralHydrogenAbundance", "ParticleIDs" }, "three files, gas, no SPH array");
+  reader->SetParticleTypeStatus("Gas (PartType0)", 0);
+  reader->SetParticleTypeStatus("DarkMatter (PartType1)", 1);
+  reader->SetPointArrayStatus("Masses", 0);
+  reader->Update();
+  auto* dark = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(dark && dark->GetNumberOfPoints() == 4 &&
+      lsi::test::PointArrayNames(dark) == std::set<std::string>{ "ParticleIDs", "Velocities" } &&
+      lsi::test::MarkersNameReadArrays(dark),
+    "three files, dark matter without Masses: the mass table's left unread, no MassArray marker");
+  for (int part = 0; part < 3; ++part)
+  {
+    std::remove(("gadget_arrays." + std::to_string(part)).c_str());
+  }
+}
+
 // A real GADGET snapshot (HDF5) written again as format 1: the same particles, arrays and
 // markers, so the filter's SPH surface is the same to the bit.
 void TestSameSurfaceAsHDF5(const std::string& hdf5)
@@ -558,6 +594,7 @@ int main(int argc, char* argv[])
   TestBadFiles();
   TestLeftOutBlock();
   TestInfoBlock();
+  TestPointArraySelection();
   if (argc > 1)
   {
     TestSameSurfaceAsHDF5(argv[1]);

@@ -7,6 +7,7 @@
 #include "vtkHDF5SnapshotReader.h"
 
 #include "MessageCounter.h"
+#include "PointArraySelection.h"
 #include "RefusedFile.h"
 #include "TestCheck.h"
 
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <set>
 #include <string>
 
 namespace
@@ -231,6 +233,50 @@ void TestBadFiles(const std::string& dir)
   }
 }
 
+// The point array selection: every per-particle dataset listed (Masses also where the MassTable
+// gives it), and the arrays chosen read alone, with the values of a full read.
+void TestPointArraySelection(const std::string& dir)
+{
+  const std::string path = dir + "/gadget4_multi.1.hdf5";
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  const std::set<std::string> gas = { "Density", "InternalEnergy", "Masses", "ParticleIDs",
+    "SmoothingLength", "Velocities" };
+  lsi::test::CheckPointArraySelection(reader.Get(), gas, { "Density", "Masses", "SmoothingLength" },
+    path + ", gas, the SPH field's arrays");
+  lsi::test::CheckPointArraySelection(
+    reader.Get(), gas, { "ParticleIDs", "Velocities" }, path + ", gas, no SPH array");
+  reader->SetParticleTypeStatus("Gas (PartType0)", 0);
+  reader->SetParticleTypeStatus("DarkMatter (PartType1)", 1);
+  // The list holds every type's arrays; dark matter has three of them.
+  reader->Update();
+  auto* dark = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(dark &&
+      lsi::test::PointArrayNames(dark) ==
+        std::set<std::string>{ "Masses", "ParticleIDs", "Velocities" },
+    path + ": dark matter's arrays, Masses from the MassTable");
+  reader->SetPointArrayStatus("Masses", 0);
+  reader->Update();
+  dark = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(dark && dark->GetNumberOfPoints() == 40 && !dark->GetPointData()->GetArray("Masses") &&
+      lsi::test::MarkersNameReadArrays(dark),
+    path + ": dark matter without Masses: the MassTable's left unread, no MassArray marker");
+
+  // A dataset the reader must refuse can be left unread: the rest of the snapshot reads.
+  vtkNew<vtkHDF5SnapshotReader> damaged;
+  damaged->SetFileName((dir + "/bad_columns.0.hdf5").c_str());
+  damaged->UpdateInformation();
+  damaged->SetPointArrayStatus("Velocities", 0);
+  vtkNew<MessageCounter> errors;
+  damaged->AddObserver(vtkCommand::ErrorEvent, errors);
+  damaged->Update();
+  auto* rest = vtkPolyData::SafeDownCast(damaged->GetOutput());
+  Check(errors->Count == 0 && rest && rest->GetNumberOfPoints() == 20 &&
+      !rest->GetPointData()->GetArray("Velocities") && rest->GetPointData()->GetArray("Density"),
+    "bad_columns.0.hdf5 without its Velocities (5 columns in one part, 3 in the other): the "
+    "20 particles read, no error");
+}
+
 // Header attributes that are arrays of strings keep every value (the reader used to read them
 // into a buffer for one string, which overflowed).
 void TestStringArrays(const std::string& dir)
@@ -291,6 +337,7 @@ int main(int argc, char* argv[])
   TestArepoLike(argv[1]);
   TestBadFiles(argv[1]);
   TestStringArrays(argv[1]);
+  TestPointArraySelection(argv[1]);
   TestSwift(argv[2]);
   std::cout << (lsi::test::Failures() ? "HDF5 reader tests FAILED\n"
                                       : "HDF5 reader tests passed\n");

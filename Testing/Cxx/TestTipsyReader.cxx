@@ -8,6 +8,7 @@
 
 #include "MessageCounter.h"
 #include "OrderedBytes.h"
+#include "PointArraySelection.h"
 #include "RefusedFile.h"
 #include "TestCheck.h"
 
@@ -32,6 +33,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -308,6 +310,19 @@ void TestGalaxy(const std::string& path)
     path + ": 3627 dark and 5321 star particles, stars with tform");
   std::cout << path << ": " << (blocks ? blocks->GetNumberOfPoints() : 0) << " particles\n";
 }
+
+// The point array selection on the shock tube's gas (real values): its columns listed, the SPH
+// field's three read alone, then the velocities alone, with the values of a full read.
+void TestPointArraySelection(const std::string& path)
+{
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  const std::set<std::string> gas = { "hsmooth", "mass", "metals", "phi", "rho", "temp",
+    "velocity" };
+  lsi::test::CheckPointArraySelection(
+    reader.Get(), gas, { "hsmooth", "mass", "rho" }, path + ", the SPH field's arrays");
+  lsi::test::CheckPointArraySelection(reader.Get(), gas, { "velocity" }, path + ", no SPH array");
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -325,6 +340,7 @@ int main(int argc, char* argv[])
   TestRealFile(argv[1], 28721, 1.0 + 1e-6);
   TestRealFile(argv[2], 20000, 1.0 + 1e-6);
   TestGalaxy(argv[3]);
+  TestPointArraySelection(argv[2]);
   std::cout << (lsi::test::Failures() ? "Tipsy reader tests FAILED\n"
                                       : "Tipsy reader tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;

@@ -11,7 +11,8 @@ lengths, masses, Time and BoxSize:
   files and 2);
 - SHARED_DATA_DIR (optional, ../shared/data when it is beside the clone): every HDF5 and Tipsy
   file there, the GADGET-4 gas sphere as a time series of four snapshots.
-Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
+The point array selection by keyword: the SPH field's three arrays alone give the same surface
+as all of them. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
 Isosurface on a snapshot's own density."""
 import os
 import sys
@@ -96,6 +97,35 @@ _, swift = open_file(os.path.join(data_dir, "SWIFT", "swift_robertsflow_g32.hdf5
 check_points(swift, "SWIFT Roberts flow", 32768,
              ["Densities", "SmoothingLengths", "Masses", "Velocities", "InternalEnergies"],
              masses=(0.00756989, 0.00756989), time=0.0, box=6.2831853071)
+
+# PointArrays as a keyword: the arrays to read (all by default). SWIFT's 22 arrays or the SPH
+# field's three alone give the same surface (its 99th-percentile density), to the bit, on the
+# SPH field in both runs.
+swift_path = os.path.join(data_dir, "SWIFT", "swift_robertsflow_g32.hdf5")
+rho = swift.GetPointData().GetArray("Densities") if swift is not None else None
+level = sorted(rho.GetValue(i) for i in range(rho.GetNumberOfTuples()))[
+    rho.GetNumberOfTuples() * 99 // 100] if rho is not None else 1.0
+surfaces = []
+for arrays in (None, ["Densities", "SmoothingLengths", "Masses"]):
+    snapshot = HDF5ParticleSnapshotReader(
+        FileNames=[swift_path], **({} if arrays is None else {"PointArrays": arrays}))
+    snapshot.UpdatePipeline()
+    read = servermanager.Fetch(snapshot).GetPointData()
+    names = sorted(read.GetArrayName(i) for i in range(read.GetNumberOfArrays()))
+    check(len(names) == 22 if arrays is None else names == sorted(arrays),
+          "SWIFT, PointArrays=%s: %d arrays read (%s)" % (arrays, len(names), names[:4]))
+    level_set = LevelSetIsosurface(Input=snapshot, IsoValue=level, SeedRadius=0)
+    level_set.UpdatePipeline()
+    level_set.UpdatePropertyInformation()
+    surfaces.append((servermanager.Fetch(level_set),
+                     level_set.GetProperty("UsedSPHField").GetData()))
+(full, full_sph), (three, three_sph) = surfaces
+same = (full.GetNumberOfPoints() == three.GetNumberOfPoints() > 0 and
+        all(full.GetPoint(k) == three.GetPoint(k) for k in range(full.GetNumberOfPoints())))
+check(same and full_sph == 1 and three_sph == 1,
+      "SWIFT: the surface from the SPH field's three arrays alone is the full read's (%d and %d "
+      "points, SPH field %s / %s)" % (full.GetNumberOfPoints(), three.GetNumberOfPoints(),
+                                      full_sph, three_sph))
 
 # Snapshots the tests wrote.
 _, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),
