@@ -19,7 +19,9 @@
  *   Time as the output's time;
  * - a snapshot split over files name.0.hdf5, name.1.hdf5, ... (NumFilesPerSnapshot > 1) read
  *   as one from any of its files;
- * - under MPI, each rank its own contiguous share of every selected type, read as hyperslabs.
+ * - under MPI, each rank its own contiguous share of every selected type, read as hyperslabs;
+ * - with a region (ReadRegion), from a SWIFT snapshot only its cells that overlap the region
+ *   (its Cells group: counts, offsets and each cell's extent).
  * Particle types: see vtkParticleSnapshotReader (gas on by default). Problems (a file that is
  * not HDF5 or not a snapshot, a missing part, datasets of inconsistent lengths) give an error
  * naming the file and an empty output.
@@ -55,6 +57,9 @@ protected:
     std::string& problem) override;
   bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
     std::string& problem) override;
+  // A SWIFT snapshot's cell table gives the parts of the file a region needs.
+  bool RegionCandidates(std::size_t type, const double bounds[6],
+    std::vector<std::pair<long long, long long>>& ranges, std::string& problem) override;
 
 private:
   vtkHDF5SnapshotReader(const vtkHDF5SnapshotReader&) = delete;

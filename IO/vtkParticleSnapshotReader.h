@@ -13,7 +13,11 @@
  *   mass), so the others can be left unread. The positions are always read;
  * - the output: vtkPolyData (one vertex cell per particle) when one type is selected, a
  *   vtkMultiBlockDataSet with one named block per selected type otherwise;
- * - pieces: under MPI each rank reads its own contiguous share of every selected type;
+ * - a region (ReadRegion, RegionBounds): only the particles inside a box are kept, read a chunk
+ *   at a time so that the read's memory stays bounded; a format that knows where its particles
+ *   lie (SWIFT's cell table) reads only the parts of the file that may hold them;
+ * - pieces: under MPI each rank reads its own contiguous share of every selected type (with a
+ *   region, of the particles that may lie inside it);
  * - the snapshot's time (DATA_TIME_STEP, and one TIME_STEPS entry), errors naming the file, an
  *   empty output on any problem.
  */
@@ -24,8 +28,9 @@
 #include "vtkDataObjectAlgorithm.h"
 #include "vtkNew.h" // for vtkNew
 
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <string>  // for std::string
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkCellArray;
 class vtkDataArraySelection;
@@ -71,6 +76,44 @@ public:
   int GetPointArrayStatus(const char* name);
   void SetPointArrayStatus(const char* name, int status);
   ///@}
+
+  ///@{
+  /**
+   * Whether to keep only the particles inside RegionBounds (off by default): the surface of one
+   * halo or star in a large run's snapshot without holding the whole box in memory. Give the
+   * region a margin of a few smoothing lengths around what you want to see: the field near
+   * its faces misses the particles beyond them.
+   */
+  vtkSetMacro(ReadRegion, vtkTypeBool);
+  vtkGetMacro(ReadRegion, vtkTypeBool);
+  vtkBooleanMacro(ReadRegion, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * The region's box (xmin, xmax, ymin, ymax, zmin, zmax) in the snapshot's own coordinates
+   * and units; a particle on a face is inside. Used when ReadRegion is on.
+   */
+  vtkSetVector6Macro(RegionBounds, double);
+  vtkGetVector6Macro(RegionBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * How many particles a region's read takes at a time (default 4,194,304): its memory beyond
+   * the particles kept.
+   */
+  vtkSetClampMacro(RegionChunkParticles, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(RegionChunkParticles, vtkIdType);
+  ///@}
+
+  /**
+   * How many particles the last update read from the file, over the selected types: this
+   * rank's share of every particle without a region; with one, before the test of the box,
+   * those the format could not rule out (all of them, or a SWIFT snapshot's particles of the
+   * cells that overlap the region).
+   */
+  vtkGetMacro(ParticlesScanned, long long);
 
   /**
    * The name of GADGET's particle type `number` (PartType<number>) in the selection, as the
@@ -118,6 +161,14 @@ protected:
    */
   virtual bool ReadParticles(std::size_t type, long long begin, long long end, vtkPolyData* output,
     std::string& problem) = 0;
+
+  /**
+   * The ranges [begin, end) of particles of type `type` that may lie inside `bounds` (xmin,
+   * xmax, ...), in any order: the whole type, unless the format knows where its particles lie
+   * (SWIFT's cell table). Returns false with `problem` set.
+   */
+  virtual bool RegionCandidates(std::size_t type, const double bounds[6],
+    std::vector<std::pair<long long, long long>>& ranges, std::string& problem);
 
   /**
    * Whether the point array `name` is to be read: selected, or not listed by ReadMetaData.
@@ -177,6 +228,14 @@ private:
   bool UpdateMetaData(bool force);
   // The indices of the selected types that the file has.
   std::vector<std::size_t> SelectedTypes();
+  // Reads this piece's particles of the selected type `type` into `particles` (all of its share,
+  // or those inside the region); false with `problem` set.
+  bool ReadShare(
+    std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem);
+  // "(xmin, xmax, ymin, ymax, zmin, zmax)" for messages.
+  std::string RegionBoundsText() const;
+  bool ReadShareInRegion(
+    std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem);
 
   vtkNew<vtkDataArraySelection> ParticleTypeSelection;
   vtkNew<vtkDataArraySelection> PointArraySelection;
@@ -186,6 +245,10 @@ private:
   std::string MetaDataProblem;
   std::string MetaDataFileName;
   bool MetaDataRead = false;
+  vtkTypeBool ReadRegion = 0;
+  double RegionBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  vtkIdType RegionChunkParticles = 4194304;
+  long long ParticlesScanned = 0;
 };
 
 #endif

@@ -12,7 +12,7 @@ lengths, masses, Time and BoxSize:
 - SHARED_DATA_DIR (optional, ../shared/data when it is beside the clone): every HDF5 and Tipsy
   file there, the GADGET-4 gas sphere as a time series of four snapshots.
 The point array selection by keyword: the SPH field's three arrays alone give the same surface
-as all of them. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
+as all of them; a region by keyword. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
 Isosurface on a snapshot's own density."""
 import os
 import sys
@@ -126,6 +126,19 @@ check(same and full_sph == 1 and three_sph == 1,
       "SWIFT: the surface from the SPH field's three arrays alone is the full read's (%d and %d "
       "points, SPH field %s / %s)" % (full.GetNumberOfPoints(), three.GetNumberOfPoints(),
                                       full_sph, three_sph))
+
+# ReadRegion and RegionBounds as keywords: the particles inside the box alone.
+box = [1.0, 2.5, 1.0, 2.5, 1.0, 2.5]
+cut = HDF5ParticleSnapshotReader(FileNames=[swift_path], ReadRegion=1, RegionBounds=box)
+cut.UpdatePipeline()
+cut_data = servermanager.Fetch(cut)
+inside = sum(1 for i in range(swift.GetNumberOfPoints()) if all(
+    box[2 * a] <= swift.GetPoint(i)[a] <= box[2 * a + 1] for a in range(3))) if swift else -1
+check(cut_data.GetNumberOfPoints() == inside > 0 and all(
+    box[2 * a] <= cut_data.GetPoint(i)[a] <= box[2 * a + 1]
+    for i in range(cut_data.GetNumberOfPoints()) for a in range(3)),
+    "SWIFT, ReadRegion=1, RegionBounds=%s: the %d particles inside (got %d)"
+    % (box, inside, cut_data.GetNumberOfPoints()))
 
 # Snapshots the tests wrote.
 _, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),

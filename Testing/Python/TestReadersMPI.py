@@ -6,6 +6,7 @@ Under MPI each rank reads its own share of a snapshot: the GADGET-4 snapshot in 
 particles as a GADGET-2 binary snapshot in two files, the SWIFT snapshot and the Tipsy glass, each read with the ranks' process ids attached and
 gathered on rank 0. Checks that every rank read a part (none the whole), and that together they
 read exactly the particles one rank reads: the same ids (or coordinates) once each.
+Then a region of the SWIFT snapshot: together exactly its particles inside, each once.
 Then Particle Density on the glass as read (each rank holding an interleaved share): every
 particle's density must be the SPH summation over its 64 nearest among all the particles
 (cubic spline, support out to the 64th), computed here with scipy."""
@@ -52,6 +53,28 @@ for path, count in [(snapshots + "/gadget4_multi.0.hdf5", 50), (snapshots + "/sn
           "%s: every rank reads a part, none the whole" % name)
     check(len(all_keys) == count and len(set(all_keys)) == count,
           "%s: together the %d particles, each once" % (name, count))
+
+# A region (ReadRegion, RegionBounds): each rank reads a share of the particles of the SWIFT
+# snapshot's cells that overlap it; together exactly the particles inside, each once.
+region = [1.0, 2.5, 1.0, 2.5, 1.0, 2.5]
+reader = OpenDataFile(swift)
+reader.ReadRegion = 1
+reader.RegionBounds = region
+with_ranks = ProcessIdScalars(Input=reader)
+with_ranks.UpdatePipeline()
+data = servermanager.Fetch(with_ranks)
+owner = data.GetPointData().GetArray("ProcessId")
+per_rank = [sum(1 for i in range(owner.GetNumberOfTuples()) if int(owner.GetValue(i)) == r)
+            for r in range(ranks)]
+whole = servermanager.Fetch(OpenDataFile(swift))
+expected = set(k for k, p in zip(keys(whole), (whole.GetPoint(i)
+                                                 for i in range(whole.GetNumberOfPoints())))
+               if all(region[2 * a] <= p[a] <= region[2 * a + 1] for a in range(3)))
+got = keys(data)
+print("SWIFT region: %d ranks read %s particles, %d inside" % (ranks, per_rank, len(expected)))
+check(len(expected) > 0 and len(got) == len(expected) and set(got) == expected and
+      all(n > 0 for n in per_rank),
+      "SWIFT region: every rank reads a part, together the particles inside, each once")
 
 # Particle Density on the ranks' interleaved shares of the glass, against the summation density
 # over all the particles.

@@ -25,6 +25,13 @@ tests can check each one.
   alone, SnapFormat 2, big-endian, double precision, 8-byte ids (both read by
   vtkGadgetBinaryReader; the header packed here with numpy's structured dtype, GADGET-2's
   io_header).
+- swift_cells.0.hdf5, swift_cells.1.hdf5: a SWIFT-style snapshot of 1,000 gas particles in
+  [0, 1)^3 in two files, sorted by top-level cell (4 x 4 x 4 cells, the first 32 in the first
+  file), then moved by up to a tenth of a cell (as particles drift between SWIFT's tree
+  rebuilds), with SWIFT's cell table (Cells/Counts, OffsetsInFile, Files, Centres, Meta-data
+  size); swift_old_cells.hdf5: the same particles in one file with older SWIFT's global
+  Offsets and each cell's MinPositions / MaxPositions; swift_bad_cells.hdf5: the same with an
+  offset beyond the file (the reader reads every particle then).
 """
 import os
 import sys
@@ -114,6 +121,59 @@ def gadget_blocks(g0, gn, d0, dn, real, ids):
     return [(label, data) for label, data in blocks if len(data)]
 
 
+def swift_cell_snapshots(path):
+    """SWIFT-style snapshots with a table of top-level cells (see the module's text)."""
+    rng = np.random.default_rng(7)
+    cells_per_side, n = 4, 1000
+    x = rng.random((n, 3))
+    cell = np.floor(x * cells_per_side).astype(int) @ [16, 4, 1]
+    order = np.argsort(cell, kind="stable")
+    cell = cell[order]
+    x = x[order] + rng.uniform(-0.025, 0.025, (n, 3))  # drift: a tenth of a cell at most
+    counts = np.bincount(cell, minlength=64)
+    offsets = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    index = np.stack(np.unravel_index(np.arange(64), (4, 4, 4)), axis=1)
+    centres = (index + 0.5) / cells_per_side
+    low = np.array([x[cell == c].min(axis=0) if counts[c] else [np.inf] * 3 for c in range(64)])
+    high = np.array([x[cell == c].max(axis=0) if counts[c] else [-np.inf] * 3 for c in range(64)])
+
+    def particles(f, first, count):
+        i = np.arange(first, first + count)
+        g = f.create_group("PartType0")
+        g["Coordinates"] = x[first:first + count]
+        g["Densities"] = (1.0 + i).astype(np.float32)
+        g["SmoothingLengths"] = np.full(count, 0.1, dtype=np.float32)
+        g["Masses"] = np.full(count, 1e-3, dtype=np.float32)
+        g["ParticleIDs"] = (7000 + i).astype(np.uint64)
+
+    def table(f, counts_, offsets_name, offsets_, files=None, extent=False):
+        cells = f.create_group("Cells")
+        cells.create_group("Meta-data").attrs["size"] = np.full(3, 1.0 / cells_per_side)
+        cells["Centres"] = centres
+        cells.create_group("Counts")["PartType0"] = counts_.astype(np.int64)
+        cells.create_group(offsets_name)["PartType0"] = offsets_.astype(np.int64)
+        if files is not None:
+            cells.create_group("Files")["PartType0"] = files.astype(np.int32)
+        if extent:
+            cells.create_group("MinPositions")["PartType0"] = low
+            cells.create_group("MaxPositions")["PartType0"] = high
+
+    split = offsets[32]  # the first 32 cells' particles in the first file
+    files = np.repeat([0, 1], 32)
+    for part, (first, count) in enumerate([(0, split), (split, n - split)]):
+        with h5py.File(path("swift_cells.%d.hdf5" % part), "w") as f:
+            header(f, [count, 0, 0, 0, 0, 0], [n, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0),
+                   files=2)
+            particles(f, first, count)
+            table(f, counts, "OffsetsInFile", offsets - np.where(files == 1, split, 0), files)
+    for name, shift in (("swift_old_cells.hdf5", 0), ("swift_bad_cells.hdf5", 600)):
+        with h5py.File(path(name), "w") as f:
+            header(f, [n, 0, 0, 0, 0, 0], [n, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+            particles(f, 0, n)
+            table(f, counts, "Offsets", offsets + np.where(np.arange(64) == 63, shift, 0),
+                  extent=True)
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     path = lambda name: os.path.join(out, name)
@@ -201,6 +261,7 @@ def main(out):
                      gadget_blocks(g0, gn, d0, dn, np.float32, np.uint32), 1, "<")
     write_gadget(path("snapshot_format2_big"), [50, 0, 0, 0, 0, 0], [50, 0, 0, 0, 0, 0],
                  [0] * 6, 0.75, 0.0, 1, gadget_blocks(0, 50, 0, 0, np.float64, np.uint64), 2, ">")
+    swift_cell_snapshots(path)
     print("wrote the test snapshots to", out)
 
 

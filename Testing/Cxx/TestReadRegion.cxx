@@ -1,0 +1,286 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The readers' regions (ReadRegion, RegionBounds): a region's read gives exactly the particles
+// of a full read that lie inside the box, in order, with every array, for any chunk size and
+// over 3 pieces; a SWIFT snapshot's cell table lets the HDF5 reader read fewer particles
+// (ParticlesScanned), and a damaged table is not trusted. First the ranges' arithmetic
+// (ParticleRanges.h), then each reader: the HDF5 reader on SWIFT-style snapshots of
+// make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global offsets
+// with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary reader
+// on a snapshot in two files, the Tipsy reader on the real shock tube. Then bad bounds.
+//   TestReadRegion TEST_SNAPSHOT_DIR SWIFT_FILE SHOCK_TUBE_FILE
+#include "ParticleRanges.h"
+#include "vtkGadgetBinaryReader.h"
+#include "vtkHDF5SnapshotReader.h"
+#include "vtkTipsyParticleReader.h"
+
+#include "MessageCounter.h"
+#include "TestCheck.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using lsi::io::Range;
+using lsi::test::Check;
+using lsi::test::MessageCounter;
+
+std::string Text(const std::vector<Range>& ranges)
+{
+  std::string text;
+  for (const Range& r : ranges)
+  {
+    text += "[" + std::to_string(r.first) + "," + std::to_string(r.second) + ")";
+  }
+  return text;
+}
+
+void TestRanges()
+{
+  const std::vector<Range> merged =
+    lsi::io::MergedRanges({ { 5, 9 }, { 0, 3 }, { 3, 4 }, { 8, 12 }, { 20, 20 }, { 30, 25 } });
+  Check(merged == std::vector<Range>{ { 0, 4 }, { 5, 12 } },
+    "MergedRanges: sorted, touching and overlapping joined, empty dropped (got " + Text(merged) +
+      ")");
+  // Three pieces of [0, 4) + [5, 12) + [20, 23): 14 indices as 4, 5 and 5, in order.
+  const std::vector<Range> ranges = { { 0, 4 }, { 5, 12 }, { 20, 23 } };
+  const std::vector<std::vector<Range>> expected = { { { 0, 4 } }, { { 5, 10 } },
+    { { 10, 12 }, { 20, 23 } } };
+  for (int piece = 0; piece < 3; ++piece)
+  {
+    const std::vector<Range> share = lsi::io::ShareOfRanges(ranges, piece, 3);
+    Check(share == expected[piece],
+      "ShareOfRanges: piece " + std::to_string(piece) + " of 3 is " + Text(expected[piece]) +
+        " (got " + Text(share) + ")");
+  }
+  long long total = 0;
+  for (int piece = 0; piece < 20; ++piece)
+  {
+    total += lsi::io::CountOf(lsi::io::ShareOfRanges(ranges, piece, 20));
+  }
+  Check(lsi::io::ShareOfRanges(ranges, 0, 20).empty() && total == 14,
+    "ShareOfRanges: 20 pieces of 14 indices, some empty, each index once");
+}
+
+bool Inside(const double x[3], const double bounds[6])
+{
+  return x[0] >= bounds[0] && x[0] <= bounds[1] && x[1] >= bounds[2] && x[1] <= bounds[3] &&
+    x[2] >= bounds[4] && x[2] <= bounds[5];
+}
+
+// Whether `part` holds particles [first, first + n) of `subset` (ids into `all`): the same
+// positions, and the same arrays with the same values.
+bool SameParticles(
+  vtkPolyData* all, const std::vector<vtkIdType>& subset, vtkIdType first, vtkPolyData* part)
+{
+  if (!part ||
+    part->GetPointData()->GetNumberOfArrays() != all->GetPointData()->GetNumberOfArrays())
+  {
+    return false;
+  }
+  for (vtkIdType k = 0; k < part->GetNumberOfPoints(); ++k)
+  {
+    const vtkIdType i = subset[first + k];
+    double p[3], q[3];
+    all->GetPoint(i, p);
+    part->GetPoint(k, q);
+    if (!std::equal(p, p + 3, q))
+    {
+      return false;
+    }
+    for (int a = 0; a < part->GetPointData()->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* mine = part->GetPointData()->GetArray(a);
+      vtkDataArray* theirs = all->GetPointData()->GetArray(mine->GetName());
+      if (!theirs || theirs->GetNumberOfComponents() != mine->GetNumberOfComponents())
+      {
+        return false;
+      }
+      for (int c = 0; c < mine->GetNumberOfComponents(); ++c)
+      {
+        if (mine->GetComponent(k, c) != theirs->GetComponent(i, c))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// The same roles as a full read: global ids, active scalars and SPH markers.
+bool SameRoles(vtkPolyData* all, vtkPolyData* part)
+{
+  auto name = [](vtkDataArray* array) { return array ? std::string(array->GetName()) : ""; };
+  vtkPointData* a = all->GetPointData();
+  vtkPointData* b = part->GetPointData();
+  return name(a->GetGlobalIds()) == name(b->GetGlobalIds()) &&
+    name(a->GetScalars()) == name(b->GetScalars()) &&
+    all->GetFieldData()->GetNumberOfArrays() == part->GetFieldData()->GetNumberOfArrays();
+}
+
+// Reads `path` whole, then the region `bounds` with 3 chunk sizes and in 3 pieces, and checks
+// each against the full read's particles inside. Returns the particles the region's serial read
+// scanned (or -1 where the reads failed).
+template <typename Reader>
+long long CheckRegion(const std::string& path, const double bounds[6], const std::string& what)
+{
+  vtkNew<Reader> full;
+  full->SetFileName(path.c_str());
+  full->Update();
+  vtkNew<vtkPolyData> all;
+  if (auto* output = vtkPolyData::SafeDownCast(full->GetOutput()))
+  {
+    all->DeepCopy(output);
+  }
+  std::vector<vtkIdType> inside;
+  for (vtkIdType i = 0; i < all->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    all->GetPoint(i, x);
+    if (Inside(x, bounds))
+    {
+      inside.push_back(i);
+    }
+  }
+  Check(all->GetNumberOfPoints() > 0 && !inside.empty() &&
+      static_cast<vtkIdType>(inside.size()) < all->GetNumberOfPoints(),
+    what + ": the region holds some of the particles, not all (" + std::to_string(inside.size()) +
+      " of " + std::to_string(all->GetNumberOfPoints()) + ")");
+  Check(full->GetParticlesScanned() == all->GetNumberOfPoints(),
+    what + ": a full read scans every particle");
+
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetReadRegion(true);
+  reader->SetRegionBounds(const_cast<double*>(bounds));
+  long long scanned = -1;
+  for (vtkIdType chunk : { vtkIdType(4194304), vtkIdType(7), vtkIdType(1) })
+  {
+    reader->SetRegionChunkParticles(chunk);
+    reader->Update();
+    auto* region = vtkPolyData::SafeDownCast(reader->GetOutput());
+    Check(region && region->GetNumberOfPoints() == static_cast<vtkIdType>(inside.size()) &&
+        region->GetNumberOfVerts() == region->GetNumberOfPoints() &&
+        SameParticles(all, inside, 0, region) && SameRoles(all, region),
+      what + ", chunks of " + std::to_string(chunk) +
+        ": the full read's particles inside, in order, with every array and role (got " +
+        std::to_string(region ? region->GetNumberOfPoints() : -1) + ")");
+    scanned = region ? reader->GetParticlesScanned() : -1;
+  }
+  // Three pieces, as MPI ranks ask for them: together the serial region, in order.
+  vtkIdType first = 0;
+  bool pieces = true;
+  for (int piece = 0; piece < 3; ++piece)
+  {
+    reader->UpdatePiece(piece, 3, 0);
+    auto* part = vtkPolyData::SafeDownCast(reader->GetOutput());
+    pieces = pieces && part && first + part->GetNumberOfPoints() <= vtkIdType(inside.size()) &&
+      (part->GetNumberOfPoints() == 0 || SameParticles(all, inside, first, part));
+    first += part ? part->GetNumberOfPoints() : 0;
+  }
+  Check(pieces && first == static_cast<vtkIdType>(inside.size()),
+    what + ": 3 pieces hold the region's particles once each, in order (got " +
+      std::to_string(first) + ")");
+  std::cout << what << ": " << inside.size() << " of " << all->GetNumberOfPoints()
+            << " particles inside, " << scanned << " scanned\n";
+  return scanned;
+}
+
+void TestSwiftCellTables(const std::string& dir)
+{
+  const double box[6] = { 0.3, 0.6, 0.1, 0.45, 0.55, 0.95 };
+  // Two files, the table's OffsetsInFile and Files, cells by their centres and size.
+  const long long byCentres = CheckRegion<vtkHDF5SnapshotReader>(
+    dir + "/swift_cells.1.hdf5", box, "SWIFT-style cells in two files (centres)");
+  Check(byCentres > 0 && byCentres < 1000,
+    "SWIFT-style cells in two files: fewer particles scanned than the 1,000 (got " +
+      std::to_string(byCentres) + ")");
+  // A slab just past a cell face: it holds particles that drifted out of the cells before it.
+  const double slab[6] = { 0.505, 0.6, 0.0, 1.0, 0.0, 1.0 };
+  CheckRegion<vtkHDF5SnapshotReader>(
+    dir + "/swift_cells.0.hdf5", slab, "SWIFT-style cells in two files, a slab past a cell face");
+  // One file, older SWIFT's global Offsets, each cell's own extent: fewer still.
+  const long long byExtent = CheckRegion<vtkHDF5SnapshotReader>(
+    dir + "/swift_old_cells.hdf5", box, "SWIFT-style cells, global offsets (extents)");
+  Check(byExtent > 0 && byExtent < byCentres,
+    "cells' extents: fewer particles scanned than by centres (got " + std::to_string(byExtent) +
+      " against " + std::to_string(byCentres) + ")");
+  // A table whose last cell lies beyond the file: not trusted, every particle read.
+  const long long damaged =
+    CheckRegion<vtkHDF5SnapshotReader>(dir + "/swift_bad_cells.hdf5", box, "a damaged cell table");
+  Check(damaged == 1000,
+    "a damaged cell table: every particle scanned (got " + std::to_string(damaged) + ")");
+}
+
+void TestRealSwift(const std::string& path)
+{
+  const double box[6] = { 1.0, 2.5, 1.0, 2.5, 1.0, 2.5 }; // in a periodic box of side 2 pi
+  const long long scanned = CheckRegion<vtkHDF5SnapshotReader>(path, box, path);
+  Check(scanned > 0 && scanned < 32768 / 4,
+    path + ": its cell table keeps the read under a quarter of the 32,768 particles (got " +
+      std::to_string(scanned) + ")");
+}
+
+void TestGadgetAndTipsy(const std::string& dir, const std::string& shockTube)
+{
+  // Gas particle i of the test snapshot lies at x = 1 + 0.01 i, over two files.
+  const double slab[6] = { 1.1, 1.3, -100.0, 100.0, -100.0, 100.0 };
+  const long long gadget =
+    CheckRegion<vtkGadgetBinaryReader>(dir + "/snap_format1.0", slab, "GADGET binary, two files");
+  Check(gadget == 50, "GADGET binary: every gas particle scanned (no table)");
+  const double tube[6] = { -1.0, 1.0, -1.0, 1.0, -0.2, 0.3 };
+  CheckRegion<vtkTipsyParticleReader>(shockTube, tube, "the shock tube, z in [-0.2, 0.3]");
+}
+
+void TestBadBounds(const std::string& dir)
+{
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName((dir + "/swift_old_cells.hdf5").c_str());
+  reader->ReadRegionOn();
+  reader->SetRegionBounds(0.5, 0.4, 0.0, 1.0, 0.0, 1.0);
+  vtkNew<MessageCounter> errors, warnings;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->Update();
+  auto* out = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(errors->Count == 1 && errors->Last.find("RegionBounds (0.5, 0.4") != std::string::npos &&
+      (!out || out->GetNumberOfPoints() == 0),
+    "xmin > xmax: an error naming RegionBounds, an empty output (got: " + errors->Last + ")");
+  reader->SetRegionBounds(5.0, 6.0, 5.0, 6.0, 5.0, 6.0);
+  reader->Update();
+  out = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(errors->Count == 1 && warnings->Count == 1 &&
+      warnings->Last.find("no particle inside RegionBounds") != std::string::npos && out &&
+      out->GetNumberOfPoints() == 0,
+    "a region beyond every particle: a warning, an empty output (got: " + warnings->Last + ")");
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc != 4)
+  {
+    std::cerr << "usage: TestReadRegion TEST_SNAPSHOT_DIR SWIFT_FILE SHOCK_TUBE_FILE\n";
+    return EXIT_FAILURE;
+  }
+  TestRanges();
+  TestSwiftCellTables(argv[1]);
+  TestRealSwift(argv[2]);
+  TestGadgetAndTipsy(argv[1], argv[3]);
+  TestBadBounds(argv[1]);
+  std::cout << (lsi::test::Failures() ? "region tests FAILED\n" : "region tests passed\n");
+  return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
