@@ -2,13 +2,16 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """pvpython Scripts/reader_benchmark.py PLUGIN [PARTICLES [DIR]]
 
-What the readers' point array selection (PointArrays) saves on a wide snapshot. Writes an HDF5
-snapshot of PARTICLES gas particles (default 2,000,000) in DIR (default /tmp) with the arrays an
-IllustrisTNG-style run keeps per gas particle (16 datasets, 34 values per particle, GADGET's
-names for the SPH field's three), then reads it through ParaView's reader proxy, in turn, with
-every array and with the SPH field's three alone (Density, SmoothingLength, Masses): the fastest
-of 3 reads each (the file in the page cache, so this is the reader's own cost, not the disk's),
-and the output's memory (ParaView's data information). Prints both and their ratios."""
+What the readers' point array selection (PointArrays) and regions (ReadRegion) save on a wide
+snapshot. Writes an HDF5 snapshot of PARTICLES gas particles (default 2,000,000) in DIR (default
+/tmp), uniform in the unit cube and stored by top-level cell (16^3 cells) as SWIFT stores them,
+with SWIFT's cell table, and the arrays an IllustrisTNG-style run keeps per gas particle (16
+datasets, 34 values per particle, GADGET's names for the SPH field's three). Then reads it
+through ParaView's reader proxy, in turn: every array; the SPH field's three alone (Density,
+SmoothingLength, Masses); the region [0.4, 0.6]^3 (0.8% of the volume) with every array; the
+region with the three. The fastest of 3 reads each (the file in the page cache, so this is the
+reader's own cost, not the disk's), the output's memory (ParaView's data information) and the
+particles the reader scanned. Prints each against the read of every array."""
 import os
 import sys
 import time
@@ -33,6 +36,12 @@ COLUMNS = [("Coordinates", 3, np.float64), ("Velocities", 3, np.float32),
            ("Potential", 1, np.float32), ("GFM_CoolingRate", 1, np.float32),
            ("CenterOfMass", 3, np.float32)]
 rng = np.random.default_rng(1)
+side = 16  # top-level cells per side
+position = rng.random((count, 3))
+cell = (np.floor(position * side).astype(np.int64) * [side * side, side, 1]).sum(axis=1)
+order = np.argsort(cell, kind="stable")
+position, cell = position[order], cell[order]
+cells = np.bincount(cell, minlength=side ** 3)
 with h5py.File(path, "w") as f:
     header = f.create_group("Header")
     header.attrs["NumPart_ThisFile"] = np.array([count, 0, 0, 0, 0, 0], dtype=np.uint32)
@@ -43,34 +52,54 @@ with h5py.File(path, "w") as f:
     gas = f.create_group("PartType0")
     for name, width, kind in COLUMNS:
         shape = (count,) if width == 1 else (count, width)
-        values = np.arange(count, dtype=kind) if name == "ParticleIDs" else \
-            rng.random(shape).astype(kind)
+        if name == "Coordinates":
+            values = position
+        elif name == "ParticleIDs":
+            values = np.arange(count, dtype=kind)
+        else:
+            values = rng.random(shape, dtype=np.float32).astype(kind)
         gas.create_dataset(name, data=values)
-print("%s: %d gas particles, %d datasets, %.0f MB" %
-      (path, count, len(COLUMNS), os.path.getsize(path) / 1e6))
+    table = f.create_group("Cells")
+    table.create_group("Meta-data").attrs["size"] = np.full(3, 1.0 / side)
+    index = np.stack(np.unravel_index(np.arange(side ** 3), (side,) * 3), axis=1)
+    table["Centres"] = (index + 0.5) / side
+    table.create_group("Counts")["PartType0"] = cells
+    table.create_group("OffsetsInFile")["PartType0"] = np.concatenate([[0], np.cumsum(cells)[:-1]])
+    table.create_group("Files")["PartType0"] = np.zeros(side ** 3, dtype=np.int32)
+print("%s: %d gas particles, %d datasets, %d cells, %.0f MB" %
+      (path, count, len(COLUMNS), side ** 3, os.path.getsize(path) / 1e6))
+
+THREE = ["Density", "SmoothingLength", "Masses"]
+REGION = [0.4, 0.6] * 3
+CASES = [("every array", {}), ("the three arrays", {"PointArrays": THREE}),
+         ("the region, every array", {"ReadRegion": 1, "RegionBounds": REGION}),
+         ("the region, the three arrays",
+          {"ReadRegion": 1, "RegionBounds": REGION, "PointArrays": THREE})]
 
 
-def read(arrays):
-    """The fastest of 3 reads (s) and the output's memory (MB)."""
-    best, memory = float("inf"), 0.0
+def read(keywords):
+    """The fastest of 3 reads (s), the output's memory (MB), its particles and those scanned."""
+    best = float("inf")
     for _ in range(3):
-        keywords = {} if arrays is None else {"PointArrays": arrays}
         reader = HDF5ParticleSnapshotReader(FileNames=[path], **keywords)
         reader.UpdatePipelineInformation()
         start = time.perf_counter()
         reader.UpdatePipeline()
         best = min(best, time.perf_counter() - start)
         memory = reader.GetDataInformation().GetMemorySize() / 1024.0
+        points = reader.GetDataInformation().GetNumberOfPoints()
+        reader.UpdatePropertyInformation()
+        scanned = reader.GetProperty("ParticlesScanned").GetData()
         Delete(reader)
-    return best, memory
+    return best, memory, points, scanned
 
 
-rows = []
-for _ in range(2):  # in turn, twice: this machine's speed drifts over minutes
-    rows.append((read(None), read(["Density", "SmoothingLength", "Masses"])))
-for (all_time, all_memory), (three_time, three_memory) in rows:
-    print("every array: %.3f s, %.0f MB; Density, SmoothingLength, Masses alone: %.3f s, %.0f MB;"
-          " %.2fx faster, %.2fx less memory"
-          % (all_time, all_memory, three_time, three_memory, all_time / three_time,
-             all_memory / three_memory))
+for run in range(2):  # in turn, twice: this machine's speed drifts over minutes
+    results = [(name, read(keywords)) for name, keywords in CASES]
+    every_time, every_memory = results[0][1][0], results[0][1][1]
+    print("run %d" % (run + 1))
+    for name, (seconds, memory, points, scanned) in results:
+        print("  %-30s %7.3f s %6.0f MB %9d particles (%9d scanned)  %6.2fx faster, %6.2fx less "
+              "memory" % (name, seconds, memory, points, scanned, every_time / seconds,
+                          every_memory / memory))
 os.remove(path)
