@@ -100,32 +100,33 @@ check_points(swift, "SWIFT Roberts flow", 32768,
 
 # PointArrays as a keyword: the arrays to read (all by default). SWIFT's 22 arrays or the SPH
 # field's three alone give the same surface (its 99th-percentile density), to the bit, on the
-# SPH field in both runs.
+# SPH field in both runs. (The surfaces run once: in TestReaders, not again with the shared data.)
 swift_path = os.path.join(data_dir, "SWIFT", "swift_robertsflow_g32.hdf5")
 rho = swift.GetPointData().GetArray("Densities") if swift is not None else None
 level = sorted(rho.GetValue(i) for i in range(rho.GetNumberOfTuples()))[
     rho.GetNumberOfTuples() * 99 // 100] if rho is not None else 1.0
-surfaces = []
-for arrays in (None, ["Densities", "SmoothingLengths", "Masses"]):
-    snapshot = HDF5ParticleSnapshotReader(
-        FileNames=[swift_path], **({} if arrays is None else {"PointArrays": arrays}))
-    snapshot.UpdatePipeline()
-    read = servermanager.Fetch(snapshot).GetPointData()
-    names = sorted(read.GetArrayName(i) for i in range(read.GetNumberOfArrays()))
-    check(len(names) == 22 if arrays is None else names == sorted(arrays),
-          "SWIFT, PointArrays=%s: %d arrays read (%s)" % (arrays, len(names), names[:4]))
-    level_set = LevelSetIsosurface(Input=snapshot, IsoValue=level, SeedRadius=0)
-    level_set.UpdatePipeline()
-    level_set.UpdatePropertyInformation()
-    surfaces.append((servermanager.Fetch(level_set),
-                     level_set.GetProperty("UsedSPHField").GetData()))
-(full, full_sph), (three, three_sph) = surfaces
-same = (full.GetNumberOfPoints() == three.GetNumberOfPoints() > 0 and
-        all(full.GetPoint(k) == three.GetPoint(k) for k in range(full.GetNumberOfPoints())))
-check(same and full_sph == 1 and three_sph == 1,
-      "SWIFT: the surface from the SPH field's three arrays alone is the full read's (%d and %d "
-      "points, SPH field %s / %s)" % (full.GetNumberOfPoints(), three.GetNumberOfPoints(),
-                                      full_sph, three_sph))
+if shared is None:
+    surfaces = []
+    for arrays in (None, ["Densities", "SmoothingLengths", "Masses"]):
+        snapshot = HDF5ParticleSnapshotReader(
+            FileNames=[swift_path], **({} if arrays is None else {"PointArrays": arrays}))
+        snapshot.UpdatePipeline()
+        read = servermanager.Fetch(snapshot).GetPointData()
+        names = sorted(read.GetArrayName(i) for i in range(read.GetNumberOfArrays()))
+        check(len(names) == 22 if arrays is None else names == sorted(arrays),
+              "SWIFT, PointArrays=%s: %d arrays read (%s)" % (arrays, len(names), names[:4]))
+        level_set = LevelSetIsosurface(Input=snapshot, IsoValue=level, SeedRadius=0)
+        level_set.UpdatePipeline()
+        level_set.UpdatePropertyInformation()
+        surfaces.append((servermanager.Fetch(level_set),
+                         level_set.GetProperty("UsedSPHField").GetData()))
+    (full, full_sph), (three, three_sph) = surfaces
+    same = (full.GetNumberOfPoints() == three.GetNumberOfPoints() > 0 and
+            all(full.GetPoint(k) == three.GetPoint(k) for k in range(full.GetNumberOfPoints())))
+    check(same and full_sph == 1 and three_sph == 1,
+          "SWIFT: the surface from the SPH field's three arrays alone is the full read's (%d and %d "
+          "points, SPH field %s / %s)" % (full.GetNumberOfPoints(), three.GetNumberOfPoints(),
+                                          full_sph, three_sph))
 
 # ReadRegion and RegionBounds as keywords: the particles inside the box alone.
 box = [1.0, 2.5, 1.0, 2.5, 1.0, 2.5]
@@ -139,6 +140,32 @@ check(cut_data.GetNumberOfPoints() == inside > 0 and all(
     for i in range(cut_data.GetNumberOfPoints()) for a in range(3)),
     "SWIFT, ReadRegion=1, RegionBounds=%s: the %d particles inside (got %d)"
     % (box, inside, cut_data.GetNumberOfPoints()))
+
+# A region around the Evrard sphere of radius 0.4 (rho = 1 / (2 pi r); the density from the
+# masses alone, by Particle Density): about half the particles, the same surface as from all
+# of them (within 1e-4 of the radius on average), as close to the exact sphere.
+if shared is None:
+    import numpy as np  # noqa: E402
+    from scipy.spatial import cKDTree  # noqa: E402
+    from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+    glass_path = os.path.join(changa, "adiabtophat_glass_28721.bin")
+    spheres = []
+    for keywords in ({}, {"ReadRegion": 1, "RegionBounds": [-0.6, 0.6] * 3}):
+        particles = TipsyParticleReader(FileNames=[glass_path], PointArrays=["mass"], **keywords)
+        summed = ParticleDensity(Input=particles, NumberOfNeighbors=64)
+        summed.UpdatePipeline()
+        sphere = LevelSetIsosurface(Input=summed, IsoValue=1.0 / (2.0 * np.pi * 0.4))
+        sphere.SeedRadius = 0
+        sphere.UpdatePipeline()
+        points = vtk_to_numpy(servermanager.Fetch(sphere).GetPoints().GetData()).astype(float)
+        spheres.append((particles.GetDataInformation().GetNumberOfPoints(), points,
+                        np.sqrt(np.mean((np.linalg.norm(points, axis=1) - 0.4) ** 2))))
+    (n_all, all_points, all_rms), (n_box, box_points, box_rms) = spheres
+    apart = cKDTree(all_points).query(box_points)[0].mean()
+    check(n_box < 0.6 * n_all and apart < 4e-5 and box_rms < 1.01 * all_rms,
+          "Evrard sphere r = 0.4 from the region [-0.6, 0.6]^3 (%d of %d particles): %d points, "
+          "%.3g apart on average from the full read's %d, rms distance to the sphere %.5f (full "
+          "read %.5f)" % (n_box, n_all, len(box_points), apart, len(all_points), box_rms, all_rms))
 
 # Snapshots the tests wrote.
 _, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),
