@@ -6,7 +6,8 @@
 // ours) but what a file may hold: 1-3 part files, each with or without a Header, whose
 // attributes (NumPart_ThisFile, NumFilesPerSnapshot, MassTable, Time, ...) take any type, length
 // and value, NaN and 1e300 included; SWIFT's HydroScheme and GADGET-4's Config; and PartType
-// groups of datasets of any name, rank, shape and type.
+// groups of datasets of any name, rank, shape and type; SWIFT's cell table. Each snapshot is read
+// whole, then with some arrays unread and a region of any box.
 #include "vtkDataArraySelection.h"
 #include "vtkHDF5SnapshotReader.h"
 #include "vtkNew.h"
@@ -173,6 +174,41 @@ std::string NextName(FuzzedDataProvider& in, const std::vector<const char*>& usu
   return name.empty() || name.find('/') != std::string::npos || name == "." ? "x" : name;
 }
 
+// SWIFT's table of cells (Cells/Counts/PartType0, ...): its datasets of any rank, shape, type and
+// values, some missing.
+void WriteCellTable(FuzzedDataProvider& in, hid_t file)
+{
+  const hid_t cells = H5Gcreate2(file, "Cells", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (cells < 0)
+  {
+    return;
+  }
+  for (const char* table :
+    { "Counts", "OffsetsInFile", "Offsets", "Files", "MinPositions", "MaxPositions" })
+  {
+    if (in.ConsumeBool())
+    {
+      const hid_t group = H5Gcreate2(cells, table, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      if (group >= 0)
+      {
+        WriteDataset(in, group, in.ConsumeBool() ? "PartType0" : "PartType1");
+        H5Gclose(group);
+      }
+    }
+  }
+  if (in.ConsumeBool())
+  {
+    WriteDataset(in, cells, "Centres");
+  }
+  const hid_t meta = H5Gcreate2(cells, "Meta-data", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (meta >= 0)
+  {
+    WriteAttribute(in, meta, "size");
+    H5Gclose(meta);
+  }
+  H5Gclose(cells);
+}
+
 void WritePart(FuzzedDataProvider& in, const std::string& path)
 {
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -223,6 +259,10 @@ void WritePart(FuzzedDataProvider& in, const std::string& path)
     }
     H5Gclose(group);
   }
+  if (in.ConsumeBool())
+  {
+    WriteCellTable(in, file);
+  }
   H5Fclose(file);
 }
 } // namespace
@@ -244,6 +284,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   reader->SetFileName(paths[0].c_str());
   reader->UpdateInformation();
   reader->GetParticleTypeSelection()->EnableAllArrays(); // every type: a multiblock
+  reader->Update();
+  // Again with some arrays left unread, and a region of any box read in small chunks.
+  vtkDataArraySelection* arrays = reader->GetPointArraySelection();
+  for (int a = 0; a < arrays->GetNumberOfArrays(); ++a)
+  {
+    arrays->SetArraySetting(arrays->GetArrayName(a), in.ConsumeBool());
+  }
+  double bounds[6];
+  for (double& b : bounds)
+  {
+    b = NextNumber(in);
+  }
+  reader->SetReadRegion(true);
+  reader->SetRegionBounds(bounds);
+  reader->SetRegionChunkParticles(in.ConsumeIntegralInRange<vtkIdType>(1, 8));
   reader->Update();
   for (const std::string& path : paths)
   {

@@ -347,8 +347,20 @@ bool vtkParticleSnapshotReader::ReadShareInRegion(
       vtkPointData* to = particles->GetPointData();
       for (int a = 0; a < to->GetNumberOfArrays(); ++a)
       {
-        to->GetAbstractArray(a)->InsertTuplesStartingAt(
-          at, inside, from->GetAbstractArray(to->GetArrayName(a)));
+        vtkAbstractArray* source = from->GetAbstractArray(to->GetArrayName(a));
+        if (!source ||
+          source->GetNumberOfComponents() != to->GetAbstractArray(a)->GetNumberOfComponents())
+        {
+          problem = std::string("particles ") + std::to_string(begin) + " to " +
+            std::to_string(end) + " have no array " + to->GetArrayName(a) +
+            " of the shape of the particles before them";
+          return false;
+        }
+        to->GetAbstractArray(a)->InsertTuplesStartingAt(at, inside, source);
+      }
+      if (this->CheckAbort())
+      {
+        return true; // (RequestData empties the output)
       }
     }
   }
