@@ -2,21 +2,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkParticleSnapshotReader.h"
 
-#include "ParticleRanges.h"
-
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArraySelection.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
@@ -24,7 +20,6 @@
 #include <algorithm>
 #include <numeric>
 #include <regex>
-#include <sstream>
 #include <utility>
 
 vtkParticleSnapshotReader::vtkParticleSnapshotReader()
@@ -258,18 +253,6 @@ std::vector<std::size_t> vtkParticleSnapshotReader::SelectedTypes()
   return selected;
 }
 
-std::string vtkParticleSnapshotReader::RegionBoundsText() const
-{
-  std::ostringstream text;
-  text << "(";
-  for (int k = 0; k < 6; ++k)
-  {
-    text << (k ? ", " : "") << this->RegionBounds[k];
-  }
-  text << ")";
-  return text.str();
-}
-
 bool vtkParticleSnapshotReader::ReadShare(
   std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem)
 {
@@ -278,94 +261,6 @@ bool vtkParticleSnapshotReader::ReadShare(
   this->ParticlesScanned += end - begin;
   // A rank whose share is empty (more ranks than particles of a type) reads nothing.
   return begin >= end || this->ReadParticles(type, begin, end, particles, problem);
-}
-
-bool vtkParticleSnapshotReader::RegionCandidates(std::size_t type, const double*,
-  std::vector<std::pair<long long, long long>>& ranges, std::string&)
-{
-  ranges.assign(1, { 0, this->Types[type].Count });
-  return true;
-}
-
-bool vtkParticleSnapshotReader::ReadShareInRegion(
-  std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem)
-{
-  std::vector<lsi::io::Range> candidates;
-  if (!this->RegionCandidates(type, this->RegionBounds, candidates, problem))
-  {
-    return false;
-  }
-  const long long count = this->Types[type].Count;
-  for (lsi::io::Range& r : candidates) // (a damaged cell table must not send reads elsewhere)
-  {
-    r = { std::max(0LL, r.first), std::min(count, r.second) };
-  }
-  const std::vector<lsi::io::Range> share =
-    lsi::io::ShareOfRanges(lsi::io::MergedRanges(candidates), piece, pieces);
-  // Chunk by chunk: read, keep the particles inside the box, append them.
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkIdList> inside;
-  bool first = true;
-  for (const lsi::io::Range& r : share)
-  {
-    for (long long begin = r.first; begin < r.second; begin += this->RegionChunkParticles)
-    {
-      const long long end = std::min<long long>(r.second, begin + this->RegionChunkParticles);
-      vtkNew<vtkPolyData> chunk;
-      if (!this->ReadParticles(type, begin, end, chunk, problem))
-      {
-        return false;
-      }
-      this->ParticlesScanned += end - begin;
-      inside->Reset();
-      for (vtkIdType i = 0; i < chunk->GetNumberOfPoints(); ++i)
-      {
-        double x[3];
-        chunk->GetPoint(i, x);
-        if (x[0] >= this->RegionBounds[0] && x[0] <= this->RegionBounds[1] &&
-          x[1] >= this->RegionBounds[2] && x[1] <= this->RegionBounds[3] &&
-          x[2] >= this->RegionBounds[4] && x[2] <= this->RegionBounds[5])
-        {
-          inside->InsertNextId(i);
-        }
-      }
-      if (first) // the arrays, their attributes (global ids, scalars) and the SPH markers
-      {
-        points->SetDataType(chunk->GetPoints()->GetDataType());
-        particles->GetPointData()->CopyGlobalIdsOn(); // (off by default in VTK)
-        particles->GetPointData()->CopyAllocate(chunk->GetPointData(), 0);
-        particles->GetFieldData()->PassData(chunk->GetFieldData());
-        first = false;
-      }
-      if (inside->GetNumberOfIds() == 0)
-      {
-        continue; // (VTK 9.2's InsertTuplesStartingAt reads the first id of an empty list)
-      }
-      const vtkIdType at = points->GetNumberOfPoints();
-      points->GetData()->InsertTuplesStartingAt(at, inside, chunk->GetPoints()->GetData());
-      vtkPointData* from = chunk->GetPointData();
-      vtkPointData* to = particles->GetPointData();
-      for (int a = 0; a < to->GetNumberOfArrays(); ++a)
-      {
-        vtkAbstractArray* source = from->GetAbstractArray(to->GetArrayName(a));
-        if (!source ||
-          source->GetNumberOfComponents() != to->GetAbstractArray(a)->GetNumberOfComponents())
-        {
-          problem = std::string("particles ") + std::to_string(begin) + " to " +
-            std::to_string(end) + " have no array " + to->GetArrayName(a) +
-            " of the shape of the particles before them";
-          return false;
-        }
-        to->GetAbstractArray(a)->InsertTuplesStartingAt(at, inside, source);
-      }
-      if (this->CheckAbort())
-      {
-        return true; // (RequestData empties the output)
-      }
-    }
-  }
-  particles->SetPoints(points);
-  return true;
 }
 
 int vtkParticleSnapshotReader::FillOutputPortInformation(int, vtkInformation* info)

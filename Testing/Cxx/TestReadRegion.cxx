@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The readers' regions (ReadRegion, RegionBounds): a region's read gives exactly the particles
-// of a full read that lie inside the box, in order, with every array, for any chunk size and
-// over 3 pieces; a SWIFT snapshot's cell table lets the HDF5 reader read fewer particles
-// (ParticlesScanned), and a damaged table is not trusted. First the ranges' arithmetic
+// of a full read that lie inside the box, in order, with every array, for chunks down to one
+// particle and over 3 pieces; a SWIFT snapshot's cell table lets the HDF5 reader read fewer
+// particles (ParticlesScanned), and a damaged table is not trusted. First the ranges' arithmetic
 // (ParticleRanges.h), then each reader: the HDF5 reader on SWIFT-style snapshots of
 // make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global offsets
 // with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary reader
@@ -131,11 +131,12 @@ bool SameRoles(vtkPolyData* all, vtkPolyData* part)
     all->GetFieldData()->GetNumberOfArrays() == part->GetFieldData()->GetNumberOfArrays();
 }
 
-// Reads `path` whole, then the region `bounds` with 3 chunk sizes and in 3 pieces, and checks
-// each against the full read's particles inside. Returns the particles the region's serial read
-// scanned (or -1 where the reads failed).
+// Reads `path` whole, then the region `bounds` in chunks of 4M, `smallChunk` and 7 particles and
+// in 3 pieces, and checks each against the full read's particles inside. Returns the particles
+// the region's serial read scanned (or -1 where the reads failed).
 template <typename Reader>
-long long CheckRegion(const std::string& path, const double bounds[6], const std::string& what)
+long long CheckRegion(
+  const std::string& path, const double bounds[6], const std::string& what, vtkIdType smallChunk)
 {
   vtkNew<Reader> full;
   full->SetFileName(path.c_str());
@@ -167,7 +168,7 @@ long long CheckRegion(const std::string& path, const double bounds[6], const std
   reader->SetReadRegion(true);
   reader->SetRegionBounds(const_cast<double*>(bounds));
   long long scanned = -1;
-  for (vtkIdType chunk : { vtkIdType(4194304), vtkIdType(7), vtkIdType(1) })
+  for (vtkIdType chunk : { vtkIdType(4194304), smallChunk, vtkIdType(7) })
   {
     reader->SetRegionChunkParticles(chunk);
     reader->Update();
@@ -204,23 +205,23 @@ void TestSwiftCellTables(const std::string& dir)
   const double box[6] = { 0.3, 0.6, 0.1, 0.45, 0.55, 0.95 };
   // Two files, the table's OffsetsInFile and Files, cells by their centres and size.
   const long long byCentres = CheckRegion<vtkHDF5SnapshotReader>(
-    dir + "/swift_cells.1.hdf5", box, "SWIFT-style cells in two files (centres)");
+    dir + "/swift_cells.1.hdf5", box, "SWIFT-style cells in two files (centres)", 1);
   Check(byCentres > 0 && byCentres < 1000,
     "SWIFT-style cells in two files: fewer particles scanned than the 1,000 (got " +
       std::to_string(byCentres) + ")");
   // A slab just past a cell face: it holds particles that drifted out of the cells before it.
   const double slab[6] = { 0.505, 0.6, 0.0, 1.0, 0.0, 1.0 };
-  CheckRegion<vtkHDF5SnapshotReader>(
-    dir + "/swift_cells.0.hdf5", slab, "SWIFT-style cells in two files, a slab past a cell face");
+  CheckRegion<vtkHDF5SnapshotReader>(dir + "/swift_cells.0.hdf5", slab,
+    "SWIFT-style cells in two files, a slab past a cell face", 1);
   // One file, older SWIFT's global Offsets, each cell's own extent: fewer still.
   const long long byExtent = CheckRegion<vtkHDF5SnapshotReader>(
-    dir + "/swift_old_cells.hdf5", box, "SWIFT-style cells, global offsets (extents)");
+    dir + "/swift_old_cells.hdf5", box, "SWIFT-style cells, global offsets (extents)", 1);
   Check(byExtent > 0 && byExtent < byCentres,
     "cells' extents: fewer particles scanned than by centres (got " + std::to_string(byExtent) +
       " against " + std::to_string(byCentres) + ")");
   // A table whose last cell lies beyond the file: not trusted, every particle read.
-  const long long damaged =
-    CheckRegion<vtkHDF5SnapshotReader>(dir + "/swift_bad_cells.hdf5", box, "a damaged cell table");
+  const long long damaged = CheckRegion<vtkHDF5SnapshotReader>(
+    dir + "/swift_bad_cells.hdf5", box, "a damaged cell table", 1);
   Check(damaged == 1000,
     "a damaged cell table: every particle scanned (got " + std::to_string(damaged) + ")");
 }
@@ -228,7 +229,7 @@ void TestSwiftCellTables(const std::string& dir)
 void TestRealSwift(const std::string& path)
 {
   const double box[6] = { 1.0, 2.5, 1.0, 2.5, 1.0, 2.5 }; // in a periodic box of side 2 pi
-  const long long scanned = CheckRegion<vtkHDF5SnapshotReader>(path, box, path);
+  const long long scanned = CheckRegion<vtkHDF5SnapshotReader>(path, box, path, 97);
   Check(scanned > 0 && scanned < 32768 / 4,
     path + ": its cell table keeps the read under a quarter of the 32,768 particles (got " +
       std::to_string(scanned) + ")");
@@ -238,11 +239,11 @@ void TestGadgetAndTipsy(const std::string& dir, const std::string& shockTube)
 {
   // Gas particle i of the test snapshot lies at x = 1 + 0.01 i, over two files.
   const double slab[6] = { 1.1, 1.3, -100.0, 100.0, -100.0, 100.0 };
-  const long long gadget =
-    CheckRegion<vtkGadgetBinaryReader>(dir + "/snap_format1.0", slab, "GADGET binary, two files");
+  const long long gadget = CheckRegion<vtkGadgetBinaryReader>(
+    dir + "/snap_format1.0", slab, "GADGET binary, two files", 1);
   Check(gadget == 50, "GADGET binary: every gas particle scanned (no table)");
   const double tube[6] = { -1.0, 1.0, -1.0, 1.0, -0.2, 0.3 };
-  CheckRegion<vtkTipsyParticleReader>(shockTube, tube, "the shock tube, z in [-0.2, 0.3]");
+  CheckRegion<vtkTipsyParticleReader>(shockTube, tube, "the shock tube, z in [-0.2, 0.3]", 997);
 }
 
 void TestBadBounds(const std::string& dir)

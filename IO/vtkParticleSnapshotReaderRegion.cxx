@@ -1,0 +1,126 @@
+// SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkParticleSnapshotReader's regions (ReadRegion, RegionBounds): the candidates a format can
+// name, this rank's share of them, read a chunk at a time and cut to the box.
+#include "vtkParticleSnapshotReader.h"
+
+#include "ParticleRanges.h"
+
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace
+{
+// Appends the particles of `chunk` inside `bounds` to `points` and `pointData` (allocated with
+// the chunk's arrays). False if the chunk lacks one of them or has it in another shape.
+bool AppendInside(
+  vtkPolyData* chunk, const double bounds[6], vtkPoints* points, vtkPointData* pointData)
+{
+  vtkNew<vtkIdList> inside;
+  for (vtkIdType i = 0; i < chunk->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    chunk->GetPoint(i, x);
+    if (x[0] >= bounds[0] && x[0] <= bounds[1] && x[1] >= bounds[2] && x[1] <= bounds[3] &&
+      x[2] >= bounds[4] && x[2] <= bounds[5])
+    {
+      inside->InsertNextId(i);
+    }
+  }
+  if (inside->GetNumberOfIds() == 0)
+  {
+    return true; // (VTK 9.2's InsertTuplesStartingAt reads the first id of an empty list)
+  }
+  const vtkIdType at = points->GetNumberOfPoints();
+  points->GetData()->InsertTuplesStartingAt(at, inside, chunk->GetPoints()->GetData());
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* target = pointData->GetAbstractArray(a);
+    vtkAbstractArray* source = chunk->GetPointData()->GetAbstractArray(target->GetName());
+    if (!source || source->GetNumberOfComponents() != target->GetNumberOfComponents())
+    {
+      return false;
+    }
+    target->InsertTuplesStartingAt(at, inside, source);
+  }
+  return true;
+}
+} // namespace
+
+std::string vtkParticleSnapshotReader::RegionBoundsText() const
+{
+  std::ostringstream text;
+  text << "(";
+  for (int k = 0; k < 6; ++k)
+  {
+    text << (k ? ", " : "") << this->RegionBounds[k];
+  }
+  text << ")";
+  return text.str();
+}
+
+bool vtkParticleSnapshotReader::RegionCandidates(std::size_t type, const double*,
+  std::vector<std::pair<long long, long long>>& ranges, std::string&)
+{
+  ranges.assign(1, { 0, this->Types[type].Count });
+  return true;
+}
+
+bool vtkParticleSnapshotReader::ReadShareInRegion(
+  std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem)
+{
+  std::vector<lsi::io::Range> candidates;
+  if (!this->RegionCandidates(type, this->RegionBounds, candidates, problem))
+  {
+    return false;
+  }
+  const long long count = this->Types[type].Count;
+  for (lsi::io::Range& r : candidates) // (a damaged cell table must not send reads elsewhere)
+  {
+    r = { std::max(0LL, r.first), std::min(count, r.second) };
+  }
+  const std::vector<lsi::io::Range> share =
+    lsi::io::ShareOfRanges(lsi::io::MergedRanges(candidates), piece, pieces);
+  // Chunk by chunk: read, keep the particles inside the box, append them.
+  vtkNew<vtkPoints> points;
+  bool first = true;
+  for (const lsi::io::Range& r : share)
+  {
+    for (long long begin = r.first; begin < r.second; begin += this->RegionChunkParticles)
+    {
+      const long long end = std::min<long long>(r.second, begin + this->RegionChunkParticles);
+      vtkNew<vtkPolyData> chunk;
+      if (!this->ReadParticles(type, begin, end, chunk, problem))
+      {
+        return false;
+      }
+      this->ParticlesScanned += end - begin;
+      if (first) // the arrays, their attributes (global ids, scalars) and the SPH markers
+      {
+        points->SetDataType(chunk->GetPoints()->GetDataType());
+        particles->GetPointData()->CopyGlobalIdsOn(); // (off by default in VTK)
+        particles->GetPointData()->CopyAllocate(chunk->GetPointData(), 0);
+        particles->GetFieldData()->PassData(chunk->GetFieldData());
+        first = false;
+      }
+      if (!AppendInside(chunk, this->RegionBounds, points, particles->GetPointData()))
+      {
+        problem = "particles " + std::to_string(begin) + " to " + std::to_string(end) +
+          " do not have the arrays of the particles before them";
+        return false;
+      }
+      if (this->CheckAbort())
+      {
+        return true; // (RequestData empties the output)
+      }
+    }
+  }
+  particles->SetPoints(points);
+  return true;
+}
