@@ -232,10 +232,10 @@ private:
   // or those inside the region); false with `problem` set.
   bool ReadShare(
     std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem);
-  // "(xmin, xmax, ymin, ymax, zmin, zmax)" for messages.
-  std::string RegionBoundsText() const;
   bool ReadShareInRegion(
     std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem);
+  // "(xmin, xmax, ymin, ymax, zmin, zmax)" for messages.
+  std::string RegionBoundsText() const;
 
   vtkNew<vtkDataArraySelection> ParticleTypeSelection;
   vtkNew<vtkDataArraySelection> PointArraySelection;
