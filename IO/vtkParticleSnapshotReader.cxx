@@ -349,6 +349,8 @@ int vtkParticleSnapshotReader::RequestData(
     const ParticleType& type = this->Types[selected[k]];
     vtkNew<vtkPolyData> particles;
     std::string problem;
+    this->ProgressFrom = static_cast<double>(k) / selected.size();
+    this->ProgressTo = static_cast<double>(k + 1) / selected.size();
     const bool read = this->ReadRegion
       ? this->ReadShareInRegion(selected[k], piece, pieces, particles, problem)
       : this->ReadShare(selected[k], piece, pieces, particles, problem);

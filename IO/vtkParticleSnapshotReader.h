@@ -249,6 +249,7 @@ private:
   double RegionBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   vtkIdType RegionChunkParticles = 4194304;
   long long ParticlesScanned = 0;
+  double ProgressFrom = 0.0, ProgressTo = 1.0; // the progress of the type being read
 };
 
 #endif

@@ -87,7 +87,10 @@ bool vtkParticleSnapshotReader::ReadShareInRegion(
   }
   const std::vector<lsi::io::Range> share =
     lsi::io::ShareOfRanges(lsi::io::MergedRanges(candidates), piece, pieces);
-  // Chunk by chunk: read, keep the particles inside the box, append them.
+  // Chunk by chunk: read, keep the particles inside the box, append them; progress and abort
+  // after each chunk.
+  const double shareCount = static_cast<double>(lsi::io::CountOf(share));
+  long long done = 0;
   vtkNew<vtkPoints> points;
   bool first = true;
   for (const lsi::io::Range& r : share)
@@ -115,6 +118,9 @@ bool vtkParticleSnapshotReader::ReadShareInRegion(
           " do not have the arrays of the particles before them";
         return false;
       }
+      done += end - begin;
+      this->UpdateProgress(
+        this->ProgressFrom + (this->ProgressTo - this->ProgressFrom) * done / shareCount);
       if (this->CheckAbort())
       {
         return true; // (RequestData empties the output)

@@ -7,7 +7,8 @@
 // (ParticleRanges.h), then each reader: the HDF5 reader on SWIFT-style snapshots of
 // make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global offsets
 // with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary reader
-// on a snapshot in two files, the Tipsy reader on the real shock tube. Then bad bounds.
+// on a snapshot in two files, the Tipsy reader on the real shock tube. Then progress and abort,
+// and bad bounds.
 //   TestReadRegion TEST_SNAPSHOT_DIR SWIFT_FILE SHOCK_TUBE_FILE
 #include "ParticleRanges.h"
 #include "vtkGadgetBinaryReader.h"
@@ -17,6 +18,7 @@
 #include "MessageCounter.h"
 #include "TestCheck.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -246,6 +248,42 @@ void TestGadgetAndTipsy(const std::string& dir, const std::string& shockTube)
   CheckRegion<vtkTipsyParticleReader>(shockTube, tube, "the shock tube, z in [-0.2, 0.3]", 997);
 }
 
+// A region's read reports progress after each chunk and stops when aborted there: an empty
+// output, the file left after the first chunk.
+void TestProgressAndAbort(const std::string& shockTube)
+{
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(shockTube.c_str());
+  reader->ReadRegionOn();
+  reader->SetRegionBounds(-1.0, 1.0, -1.0, 1.0, -0.2, 0.3);
+  reader->SetRegionChunkParticles(1000);
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> record;
+  record->SetClientData(&progress);
+  record->SetCallback([](vtkObject*, unsigned long, void* data, void* call) {
+    static_cast<std::vector<double>*>(data)->push_back(*static_cast<double*>(call));
+  });
+  reader->AddObserver(vtkCommand::ProgressEvent, record);
+  reader->Update();
+  const bool rising = std::is_sorted(progress.begin(), progress.end());
+  Check(progress.size() >= 20 && rising && progress.back() == 1.0,
+    "the shock tube's region in chunks of 1,000: progress after each of its 20 chunks, rising "
+    "to 1 (got " +
+      std::to_string(progress.size()) + " reports)");
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetClientData(reader.Get());
+  abort->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    static_cast<vtkAlgorithm*>(data)->AbortExecuteOn();
+  });
+  reader->AddObserver(vtkCommand::ProgressEvent, abort);
+  reader->Modified();
+  reader->Update();
+  auto* out = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check((!out || out->GetNumberOfPoints() == 0) && reader->GetParticlesScanned() == 1000,
+    "aborted at the first progress report: an empty output, one chunk read (got " +
+      std::to_string(reader->GetParticlesScanned()) + " particles scanned)");
+}
+
 void TestBadBounds(const std::string& dir)
 {
   vtkNew<vtkHDF5SnapshotReader> reader;
@@ -281,6 +319,7 @@ int main(int argc, char* argv[])
   TestSwiftCellTables(argv[1]);
   TestRealSwift(argv[2]);
   TestGadgetAndTipsy(argv[1], argv[3]);
+  TestProgressAndAbort(argv[3]);
   TestBadBounds(argv[1]);
   std::cout << (lsi::test::Failures() ? "region tests FAILED\n" : "region tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
