@@ -110,6 +110,10 @@ bool SwiftCellRanges(hid_t file, int number, const double bounds[6],
     {
       continue;
     }
+    if (counts[c] < 0 || offsets[c] < 0)
+    {
+      return false;
+    }
     long long first = offsets[c], limit = total; // where the cell's particles may lie
     if (inFile)
     {
@@ -118,19 +122,27 @@ bool SwiftCellRanges(hid_t file, int number, const double bounds[6],
       {
         return false; // (a virtual file's table points into files this reader does not read)
       }
+      if (offsets[c] > partCounts[f])
+      {
+        return false;
+      }
       first += partStarts[f];
       limit = partStarts[f] + partCounts[f];
     }
-    if (counts[c] < 0 || offsets[c] < 0 || counts[c] > limit - first)
+    if (counts[c] > limit - first)
     {
       return false;
     }
     counted += counts[c];
     bool overlaps = true;
-    for (int axis = 0; axis < 3 && overlaps; ++axis)
+    for (int axis = 0; axis < 3; ++axis)
     {
-      overlaps =
-        high[3 * c + axis] >= bounds[2 * axis] && low[3 * c + axis] <= bounds[2 * axis + 1];
+      const double lo = low[3 * c + axis], hi = high[3 * c + axis];
+      if (!(lo <= hi))
+      {
+        return false; // a cell with particles has an extent (not NaN, not inverted)
+      }
+      overlaps = overlaps && hi >= bounds[2 * axis] && lo <= bounds[2 * axis + 1];
     }
     if (overlaps)
     {

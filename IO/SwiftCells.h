@@ -26,7 +26,8 @@ namespace io
  * centre plus or minus a whole cell size (particles drift out of their cell between SWIFT's
  * tree rebuilds, by less than that). Returns false, with `ranges` untouched, where the file has
  * no usable table for this type (none, other lengths, a cell in a file not among the parts, an
- * offset beyond its part): every particle is then a candidate.
+ * offset or count beyond its part, a cell with particles and no extent, cells that do not add
+ * up to the type's particles): every particle is then a candidate.
  */
 bool SwiftCellRanges(hid_t file, int number, const double bounds[6],
   const std::vector<long long>& partStarts, const std::vector<long long>& partCounts,
