@@ -66,9 +66,10 @@ public:
   /**
    * Which point arrays to read, by name (for example "Density", "Velocities"; the ids' array,
    * "ParticleIDs", gives the global ids). The names, of every type the file holds, are known
-   * after UpdateInformation(); all are selected by default. An array left unread costs neither
-   * time nor memory. The SPH field needs the density, smoothing-length and mass arrays: without
-   * them vtkLevelSetIsosurface falls back to the MLS fit (and says so).
+   * after UpdateInformation(); all are selected by default. An array left unread takes no
+   * memory, and a format that stores arrays apart (HDF5, GADGET) does not read it. The SPH field
+   * needs the density, smoothing-length and mass arrays: without them vtkLevelSetIsosurface
+   * falls back to the MLS fit (and says so).
    */
   vtkDataArraySelection* GetPointArraySelection() { return this->PointArraySelection; }
   int GetNumberOfPointArrays();
