@@ -310,15 +310,7 @@ bool vtkGadgetBinaryReader::ReadMetaData(
       arraysOf[t] = PointArrayNames(first->Layout, t);
     }
   }
-  if (!ListPartTypes(totals, types, internal.TypeNumbers, problem))
-  {
-    return false;
-  }
-  for (std::size_t k = 0; k < types.size(); ++k)
-  {
-    types[k].Arrays = arraysOf[internal.TypeNumbers[k]];
-  }
-  return true;
+  return ListPartTypes(totals, arraysOf, types, internal.TypeNumbers, problem);
 }
 
 bool vtkGadgetBinaryReader::ReadParticles(

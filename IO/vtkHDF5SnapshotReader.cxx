@@ -455,6 +455,12 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
       if (count > 0 && !listedArrays[t])
       {
         arraysOf[t] = PointArrayNames(part, group);
+        const bool massDataset =
+          std::find(arraysOf[t].begin(), arraysOf[t].end(), "Masses") != arraysOf[t].end();
+        if (!massDataset && t < static_cast<int>(this->MassTable.size()))
+        {
+          arraysOf[t].push_back("Masses"); // from the MassTable
+        }
         listedArrays[t] = 1;
       }
       partCounts.push_back(count);
@@ -473,20 +479,9 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
       totals[t] += partCounts[t];
     }
   }
-  if (!ListPartTypes(totals, types, this->TypeNumbers, problem))
+  if (!ListPartTypes(totals, arraysOf, types, this->TypeNumbers, problem))
   {
     return false;
-  }
-  for (std::size_t k = 0; k < types.size(); ++k)
-  {
-    const int t = this->TypeNumbers[k];
-    types[k].Arrays = arraysOf[t];
-    const bool massDataset =
-      std::find(arraysOf[t].begin(), arraysOf[t].end(), "Masses") != arraysOf[t].end();
-    if (!massDataset && t < static_cast<int>(this->MassTable.size()))
-    {
-      types[k].Arrays.push_back("Masses"); // from the MassTable
-    }
   }
   for (const auto& partCounts : counts)
   {

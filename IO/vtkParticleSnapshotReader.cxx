@@ -117,7 +117,8 @@ std::vector<std::string> vtkParticleSnapshotReader::PartFileNames(
 }
 
 bool vtkParticleSnapshotReader::ListPartTypes(const std::vector<long long>& totals,
-  std::vector<ParticleType>& types, std::vector<int>& numbers, std::string& problem)
+  const std::vector<std::vector<std::string>>& arrays, std::vector<ParticleType>& types,
+  std::vector<int>& numbers, std::string& problem)
 {
   types.clear();
   numbers.clear();
@@ -128,6 +129,7 @@ bool vtkParticleSnapshotReader::ListPartTypes(const std::vector<long long>& tota
       ParticleType type;
       type.Name = PartTypeName(static_cast<int>(t));
       type.Count = totals[t];
+      type.Arrays = t < arrays.size() ? arrays[t] : std::vector<std::string>();
       types.push_back(type);
       numbers.push_back(static_cast<int>(t));
     }

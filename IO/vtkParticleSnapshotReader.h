@@ -185,11 +185,13 @@ protected:
 
   /**
    * The GADGET family's types (GADGET, GIZMO, AREPO, SWIFT): those of `totals` (particles of each
-   * type number over the snapshot) that hold particles, named by PartTypeName, gas selected by
-   * default or else the first type listed. `numbers` receives each listed type's number. False
-   * with `problem` set when no type holds particles.
+   * type number over the snapshot) that hold particles, named by PartTypeName, with the point
+   * arrays `arrays` gives for their number, gas selected by default or else the first type
+   * listed. `numbers` receives each listed type's number. False with `problem` set when no type
+   * holds particles.
    */
-  static bool ListPartTypes(const std::vector<long long>& totals, std::vector<ParticleType>& types,
+  static bool ListPartTypes(const std::vector<long long>& totals,
+    const std::vector<std::vector<std::string>>& arrays, std::vector<ParticleType>& types,
     std::vector<int>& numbers, std::string& problem);
 
   /**
