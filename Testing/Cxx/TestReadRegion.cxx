@@ -16,6 +16,7 @@
 #include "vtkTipsyParticleReader.h"
 
 #include "MessageCounter.h"
+#include "SameParticles.h"
 #include "TestCheck.h"
 
 #include "vtkCallbackCommand.h"
@@ -83,43 +84,12 @@ bool Inside(const double x[3], const double bounds[6])
 }
 
 // Whether `part` holds particles [first, first + n) of `subset` (ids into `all`): the same
-// positions, and the same arrays with the same values.
-bool SameParticles(
+// positions, and every array of the full read with the same values.
+bool SameParticlesAndArrays(
   vtkPolyData* all, const std::vector<vtkIdType>& subset, vtkIdType first, vtkPolyData* part)
 {
-  if (!part ||
-    part->GetPointData()->GetNumberOfArrays() != all->GetPointData()->GetNumberOfArrays())
-  {
-    return false;
-  }
-  for (vtkIdType k = 0; k < part->GetNumberOfPoints(); ++k)
-  {
-    const vtkIdType i = subset[first + k];
-    double p[3], q[3];
-    all->GetPoint(i, p);
-    part->GetPoint(k, q);
-    if (!std::equal(p, p + 3, q))
-    {
-      return false;
-    }
-    for (int a = 0; a < part->GetPointData()->GetNumberOfArrays(); ++a)
-    {
-      vtkDataArray* mine = part->GetPointData()->GetArray(a);
-      vtkDataArray* theirs = all->GetPointData()->GetArray(mine->GetName());
-      if (!theirs || theirs->GetNumberOfComponents() != mine->GetNumberOfComponents())
-      {
-        return false;
-      }
-      for (int c = 0; c < mine->GetNumberOfComponents(); ++c)
-      {
-        if (mine->GetComponent(k, c) != theirs->GetComponent(i, c))
-        {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
+  return part && lsi::test::PointArrayNames(part) == lsi::test::PointArrayNames(all) &&
+    lsi::test::SameParticles(all, subset, first, part);
 }
 
 // The same roles as a full read: global ids, active scalars and SPH markers.
@@ -177,7 +147,7 @@ long long CheckRegion(
     auto* region = vtkPolyData::SafeDownCast(reader->GetOutput());
     Check(region && region->GetNumberOfPoints() == static_cast<vtkIdType>(inside.size()) &&
         region->GetNumberOfVerts() == region->GetNumberOfPoints() &&
-        SameParticles(all, inside, 0, region) && SameRoles(all, region),
+        SameParticlesAndArrays(all, inside, 0, region) && SameRoles(all, region),
       what + ", chunks of " + std::to_string(chunk) +
         ": the full read's particles inside, in order, with every array and role (got " +
         std::to_string(region ? region->GetNumberOfPoints() : -1) + ")");
@@ -191,7 +161,7 @@ long long CheckRegion(
     reader->UpdatePiece(piece, 3, 0);
     auto* part = vtkPolyData::SafeDownCast(reader->GetOutput());
     pieces = pieces && part && first + part->GetNumberOfPoints() <= vtkIdType(inside.size()) &&
-      (part->GetNumberOfPoints() == 0 || SameParticles(all, inside, first, part));
+      (part->GetNumberOfPoints() == 0 || SameParticlesAndArrays(all, inside, first, part));
     first += part ? part->GetNumberOfPoints() : 0;
   }
   Check(pieces && first == static_cast<vtkIdType>(inside.size()),

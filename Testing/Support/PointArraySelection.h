@@ -5,6 +5,7 @@
 #ifndef PointArraySelection_h
 #define PointArraySelection_h
 
+#include "SameParticles.h"
 #include "TestCheck.h"
 
 #include "vtkDataArray.h"
@@ -16,7 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
-#include <algorithm>
+#include <numeric>
 #include <set>
 #include <string>
 #include <vector>
@@ -35,56 +36,12 @@ inline std::string Joined(const std::set<std::string>& names)
   return joined;
 }
 
-/// The point arrays of `data`, the global ids' array included.
-inline std::set<std::string> PointArrayNames(vtkPolyData* data)
-{
-  std::set<std::string> names;
-  vtkPointData* pointData = data->GetPointData();
-  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
-  {
-    names.insert(pointData->GetArrayName(a));
-  }
-  return names;
-}
-
 /// Whether `b` holds `a`'s positions and, for every array of `b`, `a`'s values, exactly.
 inline bool SameValues(vtkPolyData* a, vtkPolyData* b)
 {
-  if (a->GetNumberOfPoints() != b->GetNumberOfPoints())
-  {
-    return false;
-  }
-  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
-  {
-    double p[3], q[3];
-    a->GetPoint(i, p);
-    b->GetPoint(i, q);
-    if (!std::equal(p, p + 3, q))
-    {
-      return false;
-    }
-  }
-  vtkPointData* pointData = b->GetPointData();
-  for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
-  {
-    vtkDataArray* mine = pointData->GetArray(k);
-    vtkDataArray* all = a->GetPointData()->GetArray(mine->GetName());
-    if (!all || all->GetNumberOfComponents() != mine->GetNumberOfComponents())
-    {
-      return false;
-    }
-    for (vtkIdType v = 0; v < mine->GetNumberOfValues(); ++v)
-    {
-      if (mine->GetComponent(v / mine->GetNumberOfComponents(),
-            static_cast<int>(v % mine->GetNumberOfComponents())) !=
-        all->GetComponent(
-          v / all->GetNumberOfComponents(), static_cast<int>(v % all->GetNumberOfComponents())))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
+  std::vector<vtkIdType> every(static_cast<std::size_t>(a->GetNumberOfPoints()));
+  std::iota(every.begin(), every.end(), vtkIdType(0));
+  return a->GetNumberOfPoints() == b->GetNumberOfPoints() && SameParticles(a, every, 0, b);
 }
 
 /// Whether every array the SPH markers name (DensityArray, SmoothingLengthArray, MassArray) is
