@@ -403,6 +403,7 @@ void vtkParticleSnapshotReader::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "ReadRegion: " << (this->ReadRegion ? "on" : "off")
      << ", RegionBounds: " << this->RegionBoundsText()
+     << ", PeriodicRegion: " << (this->PeriodicRegion ? "on" : "off")
      << ", RegionChunkParticles: " << this->RegionChunkParticles << "\n";
   os << indent << "ParticlesScanned: " << this->ParticlesScanned << "\n";
   for (int i = 0; i < this->PointArraySelection->GetNumberOfArrays(); ++i)

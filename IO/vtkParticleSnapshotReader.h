@@ -15,7 +15,8 @@
  *   vtkMultiBlockDataSet with one named block per selected type otherwise;
  * - a region (ReadRegion, RegionBounds): only the particles inside a box are kept, read a chunk
  *   at a time so that the read's memory stays bounded; a format that knows where its particles
- *   lie (SWIFT's cell table) reads only the parts of the file that may hold them;
+ *   lie (SWIFT's cell table) reads only the parts of the file that may hold them; in a periodic
+ *   box the region wraps across its faces (PeriodicRegion);
  * - pieces: under MPI each rank reads its own contiguous share of every selected type (with a
  *   region, of the particles that may lie inside it);
  * - the snapshot's time (DATA_TIME_STEP, and one TIME_STEPS entry), errors naming the file, an
@@ -97,6 +98,21 @@ public:
    */
   vtkSetVector6Macro(RegionBounds, double);
   vtkGetVector6Macro(RegionBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether a region wraps across the faces of the snapshot's periodic box (on by default): with
+   * a box known (the Header's BoxSize, positive: GADGET, GIZMO, AREPO and SWIFT snapshots of
+   * cosmological and turbulence runs), RegionBounds may reach past its faces, and a particle is
+   * inside when one of its periodic images (its position plus or minus whole boxes) is. A halo
+   * cut by a face of the box is then read whole; its particles keep their positions in the box,
+   * and vtkLevelSetIsosurface (Periodic on) joins them across the face. Turn off for a run whose
+   * BoxSize is not periodic. No effect without a box (Tipsy files).
+   */
+  vtkSetMacro(PeriodicRegion, vtkTypeBool);
+  vtkGetMacro(PeriodicRegion, vtkTypeBool);
+  vtkBooleanMacro(PeriodicRegion, vtkTypeBool);
   ///@}
 
   ///@{
@@ -239,6 +255,9 @@ private:
     std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem);
   // "(xmin, xmax, ymin, ymax, zmin, zmax)" for messages.
   std::string RegionBoundsText() const;
+  // The period of each axis a region wraps across (PeriodicRegion and the Header's BoxSize,
+  // one value or three; 0 where none).
+  void RegionPeriod(double period[3]) const;
 
   vtkNew<vtkDataArraySelection> ParticleTypeSelection;
   vtkNew<vtkDataArraySelection> PointArraySelection;
@@ -250,6 +269,7 @@ private:
   bool MetaDataRead = false;
   vtkTypeBool ReadRegion = 0;
   double RegionBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  vtkTypeBool PeriodicRegion = 1;
   vtkIdType RegionChunkParticles = 4194304;
   long long ParticlesScanned = 0;
   double ProgressFrom = 0.0, ProgressTo = 1.0; // the progress of the type being read

@@ -5,30 +5,34 @@
 #include "vtkParticleSnapshotReader.h"
 
 #include "ParticleRanges.h"
+#include "PeriodicRegion.h"
 
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace
 {
-// Appends the particles of `chunk` inside `bounds` to `points` and `pointData` (allocated with
-// the chunk's arrays). False if the chunk lacks one of them or has it in another shape.
-bool AppendInside(
-  vtkPolyData* chunk, const double bounds[6], vtkPoints* points, vtkPointData* pointData)
+// Appends the particles of `chunk` inside `bounds` (wrapped with `period`, per axis; 0: not) to
+// `points` and `pointData` (allocated with the chunk's arrays). False if the chunk lacks one of
+// them or has it in another shape.
+bool AppendInside(vtkPolyData* chunk, const double bounds[6], const double period[3],
+  vtkPoints* points, vtkPointData* pointData)
 {
   vtkNew<vtkIdList> inside;
   for (vtkIdType i = 0; i < chunk->GetNumberOfPoints(); ++i)
   {
     double x[3];
     chunk->GetPoint(i, x);
-    if (x[0] >= bounds[0] && x[0] <= bounds[1] && x[1] >= bounds[2] && x[1] <= bounds[3] &&
-      x[2] >= bounds[4] && x[2] <= bounds[5])
+    if (lsi::io::InsidePeriodicRegion(x, bounds, period))
     {
       inside->InsertNextId(i);
     }
@@ -65,6 +69,20 @@ std::string vtkParticleSnapshotReader::RegionBoundsText() const
   return text.str();
 }
 
+void vtkParticleSnapshotReader::RegionPeriod(double period[3]) const
+{
+  period[0] = period[1] = period[2] = 0.0;
+  // One value (GADGET) or three (SWIFT, AREPO), as values of one array: as
+  // vtkLevelSetIsosurface reads it. A size not positive (GADGET's 0: no box) wraps nothing.
+  vtkDataArray* box = vtkDataArray::SafeDownCast(this->Fields->GetAbstractArray("BoxSize"));
+  const vtkIdType values = box ? box->GetNumberOfValues() : 0;
+  for (int a = 0; a < 3 && this->PeriodicRegion && values > 0; ++a)
+  {
+    const double size = box->GetVariantValue(values >= 3 ? a : 0).ToDouble();
+    period[a] = size > 0.0 && std::isfinite(size) ? size : 0.0;
+  }
+}
+
 bool vtkParticleSnapshotReader::RegionCandidates(std::size_t type, const double*,
   std::vector<std::pair<long long, long long>>& ranges, std::string&)
 {
@@ -75,10 +93,18 @@ bool vtkParticleSnapshotReader::RegionCandidates(std::size_t type, const double*
 bool vtkParticleSnapshotReader::ReadShareInRegion(
   std::size_t type, int piece, int pieces, vtkPolyData* particles, std::string& problem)
 {
+  // In a periodic box, the candidates of each of the region's shifts by whole boxes.
+  double period[3];
+  this->RegionPeriod(period);
   std::vector<lsi::io::Range> candidates;
-  if (!this->RegionCandidates(type, this->RegionBounds, candidates, problem))
+  for (const auto& box : lsi::io::PeriodicRegionBoxes(this->RegionBounds, period))
   {
-    return false;
+    std::vector<lsi::io::Range> ofBox;
+    if (!this->RegionCandidates(type, box.data(), ofBox, problem))
+    {
+      return false;
+    }
+    candidates.insert(candidates.end(), ofBox.begin(), ofBox.end());
   }
   const long long count = this->Types[type].Count;
   for (lsi::io::Range& r : candidates) // (a damaged cell table must not send reads elsewhere)
@@ -112,7 +138,7 @@ bool vtkParticleSnapshotReader::ReadShareInRegion(
         particles->GetFieldData()->PassData(chunk->GetFieldData());
         first = false;
       }
-      if (!AppendInside(chunk, this->RegionBounds, points, particles->GetPointData()))
+      if (!AppendInside(chunk, this->RegionBounds, period, points, particles->GetPointData()))
       {
         problem = "particles " + std::to_string(begin) + " to " + std::to_string(end) +
           " do not have the arrays of the particles before them";

@@ -3,14 +3,16 @@
 // The readers' regions (ReadRegion, RegionBounds): a region's read gives exactly the particles
 // of a full read that lie inside the box, in order, with every array, for chunks down to one
 // particle and over 3 pieces; a SWIFT snapshot's cell table lets the HDF5 reader read fewer
-// particles (ParticlesScanned), and a damaged table is not trusted. First the ranges' arithmetic
-// (ParticleRanges.h), then each reader: the HDF5 reader on SWIFT-style snapshots of
-// make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global offsets
-// with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary reader
-// on a snapshot in two files, the Tipsy reader on the real shock tube. Then progress and abort,
-// and bad bounds.
+// particles (ParticlesScanned), and a damaged table is not trusted; in a periodic box a region
+// wraps across the faces (PeriodicRegion). First the ranges' and the periodic region's
+// arithmetic (ParticleRanges.h, PeriodicRegion.h), then each reader: the HDF5 reader on SWIFT-style
+// snapshots of make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global
+// offsets with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary
+// reader on a snapshot in two files, the Tipsy reader on the real shock tube. Then progress and
+// abort, and bad bounds.
 //   TestReadRegion TEST_SNAPSHOT_DIR SWIFT_FILE SHOCK_TUBE_FILE
 #include "ParticleRanges.h"
+#include "PeriodicRegion.h"
 #include "vtkGadgetBinaryReader.h"
 #include "vtkHDF5SnapshotReader.h"
 #include "vtkTipsyParticleReader.h"
@@ -27,10 +29,13 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -77,10 +82,99 @@ void TestRanges()
     "ShareOfRanges: 20 pieces of 14 indices, some empty, each index once");
 }
 
-bool Inside(const double x[3], const double bounds[6])
+// Whether x lies in `bounds`, or with a period on an axis (> 0) one of its images x + n period,
+// n from -3 to 3 (the test's own, simpler than the reader's).
+bool Inside(const double x[3], const double bounds[6], const double period[3])
 {
-  return x[0] >= bounds[0] && x[0] <= bounds[1] && x[1] >= bounds[2] && x[1] <= bounds[3] &&
-    x[2] >= bounds[4] && x[2] <= bounds[5];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double low = bounds[2 * a], high = bounds[2 * a + 1];
+    bool in = x[a] >= low && x[a] <= high;
+    for (int n = -3; n <= 3 && period[a] > 0.0 && !in; ++n)
+    {
+      in = high - low >= period[a] || (x[a] + n * period[a] >= low && x[a] + n * period[a] <= high);
+    }
+    if (!in)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The region's arithmetic in a periodic box (PeriodicRegion.h): a face, a drift past it, regions
+// far from the box, long ones; the boxes that find a format's candidates hold every position
+// accepted, in [-period, 2 period) on each axis.
+void TestPeriodicRegion()
+{
+  using lsi::io::InsideOnAxis;
+  Check(InsideOnAxis(0.5, 0.4, 0.6, 0.0) && !InsideOnAxis(1.5, 0.4, 0.6, 0.0) &&
+      InsideOnAxis(0.6, 0.4, 0.6, 0.0),
+    "InsideOnAxis without a period: the range alone, a face inside");
+  Check(InsideOnAxis(0.05, 0.9, 1.1, 1.0) && InsideOnAxis(0.95, 0.9, 1.1, 1.0) &&
+      !InsideOnAxis(0.5, 0.9, 1.1, 1.0) && InsideOnAxis(-0.05, 0.9, 1.1, 1.0) &&
+      InsideOnAxis(1.05, 0.9, 1.1, 1.0) && InsideOnAxis(0.1, 0.9, 1.1, 1.0) &&
+      !InsideOnAxis(0.1000001, 0.9, 1.1, 1.0),
+    "InsideOnAxis, [0.9, 1.1] in a period of 1: both sides of the face, drifts past it, the "
+    "region's face");
+  Check(InsideOnAxis(0.95, 10.9, 11.1, 1.0) && InsideOnAxis(0.95, -9.1, -8.9, 1.0) &&
+      !InsideOnAxis(0.5, 10.9, 11.1, 1.0),
+    "InsideOnAxis: a region whole periods away from the box");
+  Check(InsideOnAxis(0.5, 0.3, 1.3, 1.0) && InsideOnAxis(123.4, -1.0, 5.0, 1.0) &&
+      !InsideOnAxis(std::nan(""), 0.3, 1.3, 1.0) && InsideOnAxis(0.7, -HUGE_VAL, HUGE_VAL, 1.0),
+    "InsideOnAxis: a range of a period or more holds every finite position");
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double period[3] = { 1.0, 2.0, 0.0 }; // z not periodic
+  std::size_t accepted = 0, covered = 0, most = 0;
+  for (int r = 0; r < 200; ++r)
+  {
+    double bounds[6];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double p = period[a] > 0.0 ? period[a] : 1.0;
+      bounds[2 * a] = (unit(random) * 6.0 - 3.0) * p;
+      bounds[2 * a + 1] = bounds[2 * a] + unit(random) * (r % 10 == 0 ? 1.5 : 0.6) * p;
+    }
+    const auto boxes = lsi::io::PeriodicRegionBoxes(bounds, period);
+    most = std::max(most, boxes.size());
+    for (int k = 0; k < 200; ++k)
+    {
+      double x[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        const double p = period[a] > 0.0 ? period[a] : 1.0;
+        x[a] = period[a] > 0.0 ? (unit(random) * 3.0 - 1.0) * p
+                               : bounds[4] + (unit(random) * 1.2 - 0.1) * (bounds[5] - bounds[4]);
+      }
+      if (!lsi::io::InsidePeriodicRegion(x, bounds, period))
+      {
+        continue;
+      }
+      ++accepted;
+      covered += std::any_of(boxes.begin(), boxes.end(), [&](const std::array<double, 6>& b) {
+        const double zero[3] = { 0.0, 0.0, 0.0 };
+        return Inside(x, b.data(), zero);
+      });
+    }
+  }
+  Check(accepted > 1000 && covered == accepted && most <= 16,
+    "PeriodicRegionBoxes: every accepted position of 200 regions lies in one of their boxes (" +
+      std::to_string(covered) + " of " + std::to_string(accepted) + ", at most " +
+      std::to_string(most) + " boxes)");
+}
+
+// The period of each axis a reader's region wraps across: its output's BoxSize (one value or
+// three), unless PeriodicRegion is off.
+void PeriodOf(vtkPolyData* particles, bool periodicRegion, double period[3])
+{
+  period[0] = period[1] = period[2] = 0.0;
+  vtkDataArray* box = particles->GetFieldData()->GetArray("BoxSize");
+  for (int a = 0; a < 3 && box && periodicRegion; ++a)
+  {
+    const double size = box->GetVariantValue(box->GetNumberOfValues() >= 3 ? a : 0).ToDouble();
+    period[a] = size > 0.0 ? size : 0.0;
+  }
 }
 
 // Whether `part` holds particles [first, first + n) of `subset` (ids into `all`): the same
@@ -107,8 +201,8 @@ bool SameRoles(vtkPolyData* all, vtkPolyData* part)
 // in 3 pieces, and checks each against the full read's particles inside. Returns the particles
 // the region's serial read scanned (or -1 where the reads failed).
 template <typename Reader>
-long long CheckRegion(
-  const std::string& path, const double bounds[6], const std::string& what, vtkIdType smallChunk)
+long long CheckRegion(const std::string& path, const double bounds[6], const std::string& what,
+  vtkIdType smallChunk, bool periodicRegion = true)
 {
   vtkNew<Reader> full;
   full->SetFileName(path.c_str());
@@ -118,12 +212,14 @@ long long CheckRegion(
   {
     all->DeepCopy(output);
   }
+  double period[3];
+  PeriodOf(all, periodicRegion, period);
   std::vector<vtkIdType> inside;
   for (vtkIdType i = 0; i < all->GetNumberOfPoints(); ++i)
   {
     double x[3];
     all->GetPoint(i, x);
-    if (Inside(x, bounds))
+    if (Inside(x, bounds, period))
     {
       inside.push_back(i);
     }
@@ -139,6 +235,7 @@ long long CheckRegion(
   reader->SetFileName(path.c_str());
   reader->SetReadRegion(true);
   reader->SetRegionBounds(const_cast<double*>(bounds));
+  reader->SetPeriodicRegion(periodicRegion);
   long long scanned = -1;
   for (vtkIdType chunk : { vtkIdType(4194304), smallChunk, vtkIdType(7) })
   {
@@ -191,6 +288,14 @@ void TestSwiftCellTables(const std::string& dir)
   Check(byExtent > 0 && byExtent < byCentres,
     "cells' extents: fewer particles scanned than by centres (got " + std::to_string(byExtent) +
       " against " + std::to_string(byCentres) + ")");
+  // A region across a corner of the box of side 1 (x past 1, y below 0): the particles on both
+  // sides of each face, those that drifted past the faces too, from the cells near them alone.
+  const double corner[6] = { 0.8, 1.2, -0.15, 0.2, 0.3, 0.6 };
+  const long long acrossFaces = CheckRegion<vtkHDF5SnapshotReader>(dir + "/swift_cells.1.hdf5",
+    corner, "SWIFT-style cells in two files, a region across a corner of the periodic box", 1);
+  Check(acrossFaces > 0 && acrossFaces < 1000,
+    "a region across a corner: fewer particles scanned than the 1,000 (got " +
+      std::to_string(acrossFaces) + ")");
   // A table whose last cell lies beyond the file: not trusted, every particle read.
   const long long damaged = CheckRegion<vtkHDF5SnapshotReader>(
     dir + "/swift_bad_cells.hdf5", box, "a damaged cell table", 1);
@@ -205,6 +310,18 @@ void TestRealSwift(const std::string& path)
   Check(scanned > 0 && scanned < 32768 / 4,
     path + ": its cell table keeps the read under a quarter of the 32,768 particles (got " +
       std::to_string(scanned) + ")");
+  // Across the face x = 2 pi: wrapped, the particles near x = 0 too; not wrapped, those inside
+  // the box alone.
+  const double across[6] = { 5.5, 7.5, 1.0, 2.5, -0.5, 0.5 };
+  const long long wrapped =
+    CheckRegion<vtkHDF5SnapshotReader>(path, across, path + ", across two faces", 997);
+  const long long cut = CheckRegion<vtkHDF5SnapshotReader>(
+    path, across, path + ", across two faces, PeriodicRegion off", 997, false);
+  Check(wrapped > cut && cut > 0 && wrapped < 32768 / 4,
+    path +
+      ": across two faces, the cell table's read grows with the wrapped parts and stays "
+      "under a quarter of the particles (got " +
+      std::to_string(wrapped) + " against " + std::to_string(cut) + " scanned)");
 }
 
 void TestGadgetAndTipsy(const std::string& dir, const std::string& shockTube)
@@ -214,6 +331,10 @@ void TestGadgetAndTipsy(const std::string& dir, const std::string& shockTube)
   const long long gadget = CheckRegion<vtkGadgetBinaryReader>(
     dir + "/snap_format1.0", slab, "GADGET binary, two files", 1);
   Check(gadget == 50, "GADGET binary: every gas particle scanned (no table)");
+  // Its BoxSize is 10: x in [10.9, 11.2] is x in [0.9, 1.2] a box away.
+  const double away[6] = { 10.9, 11.2, -100.0, 100.0, -100.0, 100.0 };
+  CheckRegion<vtkGadgetBinaryReader>(
+    dir + "/snap_format1.0", away, "GADGET binary, a region a box away", 1);
   const double tube[6] = { -1.0, 1.0, -1.0, 1.0, -0.2, 0.3 };
   CheckRegion<vtkTipsyParticleReader>(shockTube, tube, "the shock tube, z in [-0.2, 0.3]", 997);
 }
@@ -268,6 +389,8 @@ void TestBadBounds(const std::string& dir)
   Check(errors->Count == 1 && errors->Last.find("RegionBounds (0.5, 0.4") != std::string::npos &&
       (!out || out->GetNumberOfPoints() == 0),
     "xmin > xmax: an error naming RegionBounds, an empty output (got: " + errors->Last + ")");
+  // (Not wrapped: in its periodic box of side 1 this region would span the box.)
+  reader->PeriodicRegionOff();
   reader->SetRegionBounds(5.0, 6.0, 5.0, 6.0, 5.0, 6.0);
   reader->Update();
   out = vtkPolyData::SafeDownCast(reader->GetOutput());
@@ -286,6 +409,7 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   TestRanges();
+  TestPeriodicRegion();
   TestSwiftCellTables(argv[1]);
   TestRealSwift(argv[2]);
   TestGadgetAndTipsy(argv[1], argv[3]);

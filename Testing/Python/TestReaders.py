@@ -12,7 +12,7 @@ lengths, masses, Time and BoxSize:
 - SHARED_DATA_DIR (optional, ../shared/data when it is beside the clone): every HDF5 and Tipsy
   file there, the GADGET-4 gas sphere as a time series of four snapshots.
 The point array selection by keyword: the SPH field's three arrays alone give the same surface
-as all of them; a region by keyword. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
+as all of them; a region by keyword, wrapped across a periodic box's faces or not. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
 Isosurface on a snapshot's own density."""
 import os
 import sys
@@ -166,6 +166,68 @@ if shared is None:
           "Evrard sphere r = 0.4 from the region [-0.6, 0.6]^3 (%d of %d particles): %d points, "
           "%.3g apart on average from the full read's %d, rms distance to the sphere %.5f (full "
           "read %.5f)" % (n_box, n_all, len(box_points), apart, len(all_points), box_rms, all_rms))
+
+# PeriodicRegion as a keyword: a region across the faces of the SWIFT file's periodic box (side
+# 2 pi) holds the particles whose images lie inside it, wrapped or not.
+across = [5.5, 7.5, 1.0, 2.5, -0.5, 0.5]
+two_pi = 6.283185307179586
+
+
+def inside_wrapped(x, bounds, period):
+    """Whether an image x + n period of x (n from -1 to 1 on each axis) lies in `bounds`."""
+    return all(any(bounds[2 * a] <= x[a] + n * period <= bounds[2 * a + 1] for n in (-1, 0, 1))
+               for a in range(3))
+
+
+for wrap in (0, 1):
+    wrapped = HDF5ParticleSnapshotReader(FileNames=[swift_path], ReadRegion=1,
+                                         RegionBounds=across, PeriodicRegion=wrap)
+    wrapped.UpdatePipeline()
+    expected = sum(1 for i in range(swift.GetNumberOfPoints()) if inside_wrapped(
+        swift.GetPoint(i), across, two_pi if wrap else 0.0)) if swift else -1
+    got = servermanager.Fetch(wrapped).GetNumberOfPoints()
+    check(got == expected > 0,
+          "SWIFT, RegionBounds=%s, PeriodicRegion=%d: the %d particles inside%s (got %d)"
+          % (across, wrap, expected, ", wrapped" if wrap else "", got))
+
+# A blob about the corner of a periodic box (periodic_blob.hdf5: the sphere of radius 0.08 cut
+# into eight by the faces), read from the region [-0.3, 0.3]^3 across three faces: the full
+# read's surface, point for point, within 0.002 of the sphere and in all eight octants about the
+# corner; not wrapped, the region holds one octant of the particles and the surface is not the
+# sphere.
+if shared is None:
+    import numpy as np  # noqa: E402
+    from scipy.spatial import cKDTree  # noqa: E402
+    from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+    blob_path = os.path.join(snapshot_dir, "periodic_blob.hdf5")
+    blobs = []
+    for keywords in ({}, {"ReadRegion": 1, "RegionBounds": [-0.3, 0.3] * 3},
+                     {"ReadRegion": 1, "RegionBounds": [-0.3, 0.3] * 3, "PeriodicRegion": 0}):
+        particles = HDF5ParticleSnapshotReader(FileNames=[blob_path], **keywords)
+        particles.UpdatePipeline()
+        blob = LevelSetIsosurface(Input=particles, IsoValue=np.exp(-0.5),
+                                  SeedCenter=[0.01, 0.01, 0.01], SeedRadius=0.02,
+                                  OutputType="Isopoints")
+        blob.UpdatePipeline()
+        out = servermanager.Fetch(blob)
+        points = (vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+                  if out.GetNumberOfPoints() else np.zeros((0, 3)))
+        about = points - np.round(points)  # from the nearest image of the corner
+        rms = np.sqrt(np.mean((np.linalg.norm(about, axis=1) - 0.08) ** 2)) if len(points) else 1
+        octants = len(set(map(tuple, (about > 0).astype(int))))
+        blobs.append((particles.GetDataInformation().GetNumberOfPoints(), points, rms, octants))
+    (n_all, all_points, all_rms, _), (n_box, box_points, box_rms, box_octants), cut = blobs
+    apart = (cKDTree(all_points).query(box_points)[0].max()
+             if len(box_points) and len(all_points) else 1.0)
+    check(n_box < 0.3 * n_all and len(box_points) == len(all_points) > 200 and apart < 1e-9 and
+          box_rms < 0.002 and box_octants == 8,
+          "a blob across the corner of a periodic box from the region [-0.3, 0.3]^3 (%d of %d "
+          "particles): %d points (full read %d), %.3g at most from the full read's, rms distance "
+          "to the sphere %.5f, %d octants" % (n_box, n_all, len(box_points), len(all_points), apart,
+                                              box_rms, box_octants))
+    check(cut[0] < n_box / 4 and len(cut[1]) < len(all_points) / 2 and cut[2] > 2 * box_rms,
+          "the same region with PeriodicRegion=0: %d particles (one octant), %d points, rms "
+          "distance to the sphere %.5f" % (cut[0], len(cut[1]), cut[2]))
 
 # Snapshots the tests wrote.
 _, gadget = open_file(os.path.join(snapshot_dir, "gadget4_multi.1.hdf5"),

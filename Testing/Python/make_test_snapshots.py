@@ -32,6 +32,10 @@ tests can check each one.
   size); swift_old_cells.hdf5: the same particles in one file with older SWIFT's global
   Offsets and each cell's MinPositions / MaxPositions; swift_bad_cells.hdf5: the same with an
   offset beyond the file (the reader reads every particle then).
+- periodic_blob.hdf5: 40,000 gas particles uniform in a periodic box of side 1 (BoxSize 1),
+  with Density = exp(-d^2 / (2 0.08^2)), d the distance to the nearest image of the box's corner
+  (0, 0, 0), and no smoothing lengths (the filter fits the density itself): its isosurface at
+  exp(-1/2) is the sphere of radius 0.08 about the corner, cut into eight by the box's faces.
 """
 import os
 import sys
@@ -174,6 +178,20 @@ def swift_cell_snapshots(path):
                   extent=True)
 
 
+def periodic_blob(path):
+    rng = np.random.default_rng(11)
+    n = 40000
+    x = rng.random((n, 3))
+    d = np.minimum(x, 1.0 - x)  # to the nearest image of the corner, per axis
+    with h5py.File(path("periodic_blob.hdf5"), "w") as f:
+        header(f, [n, 0, 0, 0, 0, 0], [n, 0, 0, 0, 0, 0], [1.0 / n, 0, 0, 0, 0, 0], 0.0,
+               np.float64(1.0))
+        g = f.create_group("PartType0")
+        g["Coordinates"] = x
+        g["Density"] = np.exp(-np.sum(d * d, axis=1) / (2.0 * 0.08 ** 2))
+        g["ParticleIDs"] = np.arange(n, dtype=np.uint64)
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     path = lambda name: os.path.join(out, name)
@@ -262,6 +280,7 @@ def main(out):
     write_gadget(path("snapshot_format2_big"), [50, 0, 0, 0, 0, 0], [50, 0, 0, 0, 0, 0],
                  [0] * 6, 0.75, 0.0, 1, gadget_blocks(0, 50, 0, 0, np.float64, np.uint64), 2, ">")
     swift_cell_snapshots(path)
+    periodic_blob(path)
     print("wrote the test snapshots to", out)
 
 
