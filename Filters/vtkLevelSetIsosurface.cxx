@@ -19,6 +19,7 @@
 #include "LevelSetParameters.h"
 #include "LevelSetParticleOutput.h"
 #include "LevelSetPeriodicImages.h"
+#include "LevelSetRegionFaces.h"
 #include "LevelSetSPHField.h"
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetSplatOutput.h"
@@ -431,6 +432,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   this->KeepOwnedIsopoints(*geometry, isopoints);
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
+  this->WarnIfRegionCut(original, *geometry, field.get(), isopoints.Points);
   const lsi::IsopointSet& nearby = ranks.Distributed() ? allFound : isopoints;
   // One search index over those points, for the splat radii and the Enclosed table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(nearby.Points);
@@ -1327,6 +1329,27 @@ void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,
       << geometry.Stride
       << ") to be found: lower IsoValue, move or enlarge the seed, or use fewer "
          "NumberOfNeighbors.");
+  }
+}
+
+void vtkLevelSetIsosurface::WarnIfRegionCut(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+  const lsi::SPHField* field, const std::vector<double>& points)
+{
+  const lsi::RegionFaces region = lsi::FindRegionFaces(input, this->Internal->Box);
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  double counts[2] = { static_cast<double>(
+                         lsi::PointsNearRegionFaces(geometry, field, points, region)),
+    static_cast<double>(points.size() / 3) };
+  ranks.Sum(counts, 2);
+  if (counts[0] > 0.0 && this->ReportsForAll())
+  {
+    const double* b = region.Bounds;
+    vtkWarningMacro(<< counts[0] << " of the surface's " << counts[1]
+                    << " points lie nearer to a face of the region the reader read (RegionBounds "
+                    << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4] << " "
+                    << b[5] << ") than " << (field ? "a kernel support" : "two neighbourhood radii")
+                    << ": the particles beyond it were not read, so the surface there is cut or "
+                       "moved. Widen the region by a few smoothing lengths.");
   }
 }
 

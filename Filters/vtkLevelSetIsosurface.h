@@ -644,6 +644,10 @@ private:
   void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
   void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& phi, const lsi::IsopointSet& isopoints);
+  // Warns when the surface (this rank's points) comes within the field's reach of a face of the
+  // region a reader read (LevelSetRegionFaces.h), where the particles beyond were not read.
+  void WarnIfRegionCut(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    const lsi::SPHField* field, const std::vector<double>& points);
   lsi::SPHFieldRequest SPHRequest() const;
   // The input's bounds over every rank; `own` (if given) receives this rank's alone (empty:
   // +inf, -inf, ...).

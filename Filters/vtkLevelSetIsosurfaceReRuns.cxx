@@ -495,6 +495,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     shownIndex = cutIndex.get();
   }
   this->IsopointSeconds = lsi::SecondsSince(start);
+  this->WarnIfRegionCut(input, *geometry, last.Field.get(), shown->Points);
   // (Under MPI the splat radii and the Enclosed table's distances come from every point this
   // rank found, as in a full run.)
   const bool nearbyInCell = ranks.Distributed() && this->Internal->Box.Enabled;

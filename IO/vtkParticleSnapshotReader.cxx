@@ -370,6 +370,10 @@ int vtkParticleSnapshotReader::RequestData(
     }
     particles->SetVerts(VertexCells(particles->GetNumberOfPoints()));
     particles->GetFieldData()->PassData(this->Fields);
+    if (this->ReadRegion)
+    {
+      this->AddRegionFields(particles->GetFieldData());
+    }
     particles->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->Time);
     if (blocks)
     {

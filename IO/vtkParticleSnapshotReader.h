@@ -108,7 +108,9 @@ public:
    * inside when one of its periodic images (its position plus or minus whole boxes) is. A halo
    * cut by a face of the box is then read whole; its particles keep their positions in the box,
    * and vtkLevelSetIsosurface (Periodic on) joins them across the face. Turn off for a run whose
-   * BoxSize is not periodic. No effect without a box (Tipsy files).
+   * BoxSize is not periodic. No effect without a box (Tipsy files). A region's output carries
+   * field data "RegionBounds" and "RegionPeriod" (the period of each axis it wrapped across, 0
+   * for none).
    */
   vtkSetMacro(PeriodicRegion, vtkTypeBool);
   vtkGetMacro(PeriodicRegion, vtkTypeBool);
@@ -258,6 +260,10 @@ private:
   // The period of each axis a region wraps across (PeriodicRegion and the Header's BoxSize,
   // one value or three; 0 where none).
   void RegionPeriod(double period[3]) const;
+  // Field data "RegionBounds" (6 values) and "RegionPeriod" (3): the region read, so that a
+  // filter can tell the faces beyond which no particle was read (vtkLevelSetIsosurface warns
+  // when the surface comes near them).
+  void AddRegionFields(vtkFieldData* fields) const;
 
   vtkNew<vtkDataArraySelection> ParticleTypeSelection;
   vtkNew<vtkDataArraySelection> PointArraySelection;

@@ -8,6 +8,7 @@
 #include "PeriodicRegion.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkPointData.h"
@@ -81,6 +82,25 @@ void vtkParticleSnapshotReader::RegionPeriod(double period[3]) const
     const double size = box->GetVariantValue(values >= 3 ? a : 0).ToDouble();
     period[a] = size > 0.0 && std::isfinite(size) ? size : 0.0;
   }
+}
+
+void vtkParticleSnapshotReader::AddRegionFields(vtkFieldData* fields) const
+{
+  double period[3];
+  this->RegionPeriod(period);
+  vtkNew<vtkDoubleArray> bounds, periods;
+  bounds->SetName("RegionBounds");
+  periods->SetName("RegionPeriod");
+  for (double b : this->RegionBounds)
+  {
+    bounds->InsertNextValue(b);
+  }
+  for (double p : period)
+  {
+    periods->InsertNextValue(p);
+  }
+  fields->AddArray(bounds);
+  fields->AddArray(periods);
 }
 
 bool vtkParticleSnapshotReader::RegionCandidates(std::size_t type, const double*,

@@ -9,12 +9,13 @@
 // snapshots of make_test_snapshots.py (a table in two files with cell centres, older SWIFT's global
 // offsets with each cell's extent, a damaged table) and the real SWIFT file, the GADGET binary
 // reader on a snapshot in two files, the Tipsy reader on the real shock tube. Then progress and
-// abort, and bad bounds.
+// abort, bad bounds, and vtkLevelSetIsosurface's warning when a surface nears a region's faces.
 //   TestReadRegion TEST_SNAPSHOT_DIR SWIFT_FILE SHOCK_TUBE_FILE
 #include "ParticleRanges.h"
 #include "PeriodicRegion.h"
 #include "vtkGadgetBinaryReader.h"
 #include "vtkHDF5SnapshotReader.h"
+#include "vtkLevelSetIsosurface.h"
 #include "vtkTipsyParticleReader.h"
 
 #include "MessageCounter.h"
@@ -186,15 +187,29 @@ bool SameParticlesAndArrays(
     lsi::test::SameParticles(all, subset, first, part);
 }
 
-// The same roles as a full read: global ids, active scalars and SPH markers.
-bool SameRoles(vtkPolyData* all, vtkPolyData* part)
+// The same roles as a full read (global ids, active scalars, SPH markers and the other field
+// data), and the region read in field data: RegionBounds `bounds`, RegionPeriod `period`.
+bool SameRoles(vtkPolyData* all, vtkPolyData* part, const double bounds[6], const double period[3])
 {
   auto name = [](vtkDataArray* array) { return array ? std::string(array->GetName()) : ""; };
   vtkPointData* a = all->GetPointData();
   vtkPointData* b = part->GetPointData();
+  vtkDataArray* readBounds = part->GetFieldData()->GetArray("RegionBounds");
+  vtkDataArray* readPeriod = part->GetFieldData()->GetArray("RegionPeriod");
+  bool region = readBounds && readBounds->GetNumberOfValues() == 6 && readPeriod &&
+    readPeriod->GetNumberOfValues() == 3;
+  for (int k = 0; k < 6 && region; ++k)
+  {
+    region = readBounds->GetComponent(k, 0) == bounds[k]; // (one value per tuple)
+  }
+  for (int k = 0; k < 3 && region; ++k)
+  {
+    region = readPeriod->GetComponent(k, 0) == period[k];
+  }
   return name(a->GetGlobalIds()) == name(b->GetGlobalIds()) &&
     name(a->GetScalars()) == name(b->GetScalars()) &&
-    all->GetFieldData()->GetNumberOfArrays() == part->GetFieldData()->GetNumberOfArrays();
+    all->GetFieldData()->GetNumberOfArrays() + 2 == part->GetFieldData()->GetNumberOfArrays() &&
+    region;
 }
 
 // Reads `path` whole, then the region `bounds` in chunks of 4M, `smallChunk` and 7 particles and
@@ -244,7 +259,7 @@ long long CheckRegion(const std::string& path, const double bounds[6], const std
     auto* region = vtkPolyData::SafeDownCast(reader->GetOutput());
     Check(region && region->GetNumberOfPoints() == static_cast<vtkIdType>(inside.size()) &&
         region->GetNumberOfVerts() == region->GetNumberOfPoints() &&
-        SameParticlesAndArrays(all, inside, 0, region) && SameRoles(all, region),
+        SameParticlesAndArrays(all, inside, 0, region) && SameRoles(all, region, bounds, period),
       what + ", chunks of " + std::to_string(chunk) +
         ": the full read's particles inside, in order, with every array and role (got " +
         std::to_string(region ? region->GetNumberOfPoints() : -1) + ")");
@@ -399,6 +414,54 @@ void TestBadBounds(const std::string& dir)
       out->GetNumberOfPoints() == 0,
     "a region beyond every particle: a warning, an empty output (got: " + warnings->Last + ")");
 }
+// vtkLevelSetIsosurface on a region's read warns when the surface comes near the region's faces
+// (the field data RegionBounds, RegionPeriod): periodic_blob.hdf5's sphere of radius 0.08
+// about the corner of its periodic box, read from [-w, w]^3 across three faces. Half-width 0.3:
+// no warning, the full read's points; 0.1 (0.02 beyond the sphere, less than two neighbourhood
+// radii): a warning naming RegionBounds, from the full method and again from a quick isovalue
+// change; the full read (no region): none.
+void TestFilterWarnsNearFaces(const std::string& dir)
+{
+  const std::string path = dir + "/periodic_blob.hdf5";
+  auto run = [&](double halfWidth, int& warnings, std::string& text, vtkIdType& points) {
+    vtkNew<vtkHDF5SnapshotReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->SetReadRegion(halfWidth > 0.0);
+    reader->SetRegionBounds(-halfWidth, halfWidth, -halfWidth, halfWidth, -halfWidth, halfWidth);
+    vtkNew<vtkLevelSetIsosurface> filter;
+    filter->SetInputConnection(reader->GetOutputPort());
+    filter->SetIsoValue(std::exp(-0.5));
+    filter->SetSeedCenter(0.01, 0.01, 0.01);
+    filter->SetSeedRadius(0.02);
+    filter->SetOutputTypeToIsopoints();
+    filter->QuickIsoValueChangesOn();
+    vtkNew<MessageCounter> counter;
+    filter->AddObserver(vtkCommand::WarningEvent, counter);
+    filter->Update();
+    points = filter->GetOutput()->GetNumberOfPoints();
+    filter->SetIsoValue(1.01 * std::exp(-0.5)); // a quick change: the surface slides
+    filter->Update();
+    warnings = counter->Count;
+    text = counter->All;
+    return filter->GetSlidLastSurface() != 0;
+  };
+  int wide = 0, tight = 0, whole = 0;
+  std::string wideText, tightText, wholeText;
+  vtkIdType widePoints = 0, tightPoints = 0, wholePoints = 0;
+  run(0.3, wide, wideText, widePoints);
+  const bool slid = run(0.1, tight, tightText, tightPoints);
+  run(0.0, whole, wholeText, wholePoints);
+  Check(wide == 0 && whole == 0 && widePoints == wholePoints && wholePoints > 200,
+    "the blob from the region [-0.3, 0.3]^3 and from the full read: no warning, the same " +
+      std::to_string(wholePoints) + " points (got " + std::to_string(wide) + " and " +
+      std::to_string(whole) + " warnings, " + std::to_string(widePoints) + " points): " + wideText +
+      wholeText);
+  Check(slid && tight == 2 && tightText.find("RegionBounds -0.1 0.1") != std::string::npos &&
+      tightText.find("Widen the region") != std::string::npos,
+    "the blob from the region [-0.1, 0.1]^3: a warning naming the region, from the method and "
+    "from a quick change (got " +
+      std::to_string(tight) + ", slid " + std::to_string(slid) + "): " + tightText);
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -415,6 +478,7 @@ int main(int argc, char* argv[])
   TestGadgetAndTipsy(argv[1], argv[3]);
   TestProgressAndAbort(argv[3]);
   TestBadBounds(argv[1]);
+  TestFilterWarnsNearFaces(argv[1]);
   std::cout << (lsi::test::Failures() ? "region tests FAILED\n" : "region tests passed\n");
   return lsi::test::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
