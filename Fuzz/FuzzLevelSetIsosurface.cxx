@@ -133,6 +133,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     box->SetName("BoxSize");
     box->InsertNextValue(parameters[7]);
     input->GetFieldData()->AddArray(box);
+    // A reader's region about the seed (its faces, where the filter checks the surface), wrapped
+    // on two axes with the box's size.
+    vtkNew<vtkDoubleArray> region, period;
+    region->SetName("RegionBounds");
+    period->SetName("RegionPeriod");
+    for (int a = 0; a < 3; ++a)
+    {
+      region->InsertNextValue(parameters[1 + a] - parameters[4]);
+      region->InsertNextValue(parameters[1 + a] + parameters[4]);
+      period->InsertNextValue(a == 1 ? 0.0 : parameters[7]);
+    }
+    input->GetFieldData()->AddArray(region);
+    input->GetFieldData()->AddArray(period);
   }
   vtkNew<vtkLevelSetIsosurface> filter;
   filter->SetInputData(input);

@@ -6,7 +6,8 @@ Under MPI each rank reads its own share of a snapshot: the GADGET-4 snapshot in 
 particles as a GADGET-2 binary snapshot in two files, the SWIFT snapshot and the Tipsy glass, each read with the ranks' process ids attached and
 gathered on rank 0. Checks that every rank read a part (none the whole), and that together they
 read exactly the particles one rank reads: the same ids (or coordinates) once each.
-Then a region of the SWIFT snapshot: together exactly its particles inside, each once.
+Then regions of the SWIFT snapshot, one wrapped across its periodic box's faces: together
+exactly its particles inside, each once.
 Then Particle Density on the glass as read (each rank holding an interleaved share): every
 particle's density must be the SPH summation over its 64 nearest among all the particles
 (cubic spline, support out to the 64th), computed here with scipy."""
@@ -55,26 +56,34 @@ for path, count in [(snapshots + "/gadget4_multi.0.hdf5", 50), (snapshots + "/sn
           "%s: together the %d particles, each once" % (name, count))
 
 # A region (ReadRegion, RegionBounds): each rank reads a share of the particles of the SWIFT
-# snapshot's cells that overlap it; together exactly the particles inside, each once.
-region = [1.0, 2.5, 1.0, 2.5, 1.0, 2.5]
-reader = OpenDataFile(swift)
-reader.ReadRegion = 1
-reader.RegionBounds = region
-with_ranks = ProcessIdScalars(Input=reader)
-with_ranks.UpdatePipeline()
-data = servermanager.Fetch(with_ranks)
-owner = data.GetPointData().GetArray("ProcessId")
-per_rank = [sum(1 for i in range(owner.GetNumberOfTuples()) if int(owner.GetValue(i)) == r)
-            for r in range(ranks)]
+# snapshot's cells that overlap it; together exactly the particles inside, each once. Then a
+# region across the faces of its periodic box (side 2 pi), wrapped (PeriodicRegion, on by
+# default): the particles with an image inside.
 whole = servermanager.Fetch(OpenDataFile(swift))
-expected = set(k for k, p in zip(keys(whole), (whole.GetPoint(i)
-                                                 for i in range(whole.GetNumberOfPoints())))
-               if all(region[2 * a] <= p[a] <= region[2 * a + 1] for a in range(3)))
-got = keys(data)
-print("SWIFT region: %d ranks read %s particles, %d inside" % (ranks, per_rank, len(expected)))
-check(len(expected) > 0 and len(got) == len(expected) and set(got) == expected and
-      all(n > 0 for n in per_rank),
-      "SWIFT region: every rank reads a part, together the particles inside, each once")
+two_pi = 6.283185307179586
+for region, period in (([1.0, 2.5, 1.0, 2.5, 1.0, 2.5], 0.0),
+                       ([5.5, 7.5, 1.0, 2.5, -0.5, 0.5], two_pi)):
+    reader = OpenDataFile(swift)
+    reader.ReadRegion = 1
+    reader.RegionBounds = region
+    with_ranks = ProcessIdScalars(Input=reader)
+    with_ranks.UpdatePipeline()
+    data = servermanager.Fetch(with_ranks)
+    owner = data.GetPointData().GetArray("ProcessId")
+    per_rank = [sum(1 for i in range(owner.GetNumberOfTuples()) if int(owner.GetValue(i)) == r)
+                for r in range(ranks)]
+    shifts = (-1, 0, 1) if period else (0,)
+    expected = set(k for k, p in zip(keys(whole), (whole.GetPoint(i)
+                                                   for i in range(whole.GetNumberOfPoints())))
+                   if all(any(region[2 * a] <= p[a] + n * period <= region[2 * a + 1]
+                              for n in shifts) for a in range(3)))
+    got = keys(data)
+    print("SWIFT region %s: %d ranks read %s particles, %d inside"
+          % (region, ranks, per_rank, len(expected)))
+    check(len(expected) > 0 and len(got) == len(expected) and set(got) == expected and
+          all(n > 0 for n in per_rank),
+          "SWIFT region %s%s: every rank reads a part, together the particles inside, each once"
+          % (region, ", wrapped" if period else ""))
 
 # Particle Density on the ranks' interleaved shares of the glass, against the summation density
 # over all the particles.
