@@ -11,8 +11,13 @@ through ParaView's reader proxy, in turn: every array; the SPH field's three alo
 SmoothingLength, Masses); the region [0.4, 0.6]^3 (0.8% of the volume) with every array; the
 region with the three. The fastest of 3 reads each (the file in the page cache, so this is the
 reader's own cost, not the disk's), the output's memory (ParaView's data information) and the
-particles the reader scanned. Prints each against the read of every array."""
+particles the reader scanned. Prints each against the read of every array. Then each read once
+more in a pvpython process of its own, for how far it raised the process's peak resident memory
+above what it held before the read (the reader's working memory: the output and whatever the
+read held on the way)."""
 import os
+import shutil
+import subprocess
 import sys
 import time
 
@@ -23,8 +28,35 @@ from paraview.simple import Delete, LoadPlugin
 plugin = sys.argv[1]
 count = int(sys.argv[2]) if len(sys.argv) > 2 else 2000000
 folder = sys.argv[3] if len(sys.argv) > 3 else "/tmp"
+peak_case = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == "--peak" else None
 LoadPlugin(plugin, ns=globals())
 path = os.path.join(folder, "levelset_wide_snapshot_%d.hdf5" % count)
+THREE = ["Density", "SmoothingLength", "Masses"]
+REGION = [0.4, 0.6] * 3
+CASES = [("every array", {}), ("the three arrays", {"PointArrays": THREE}),
+         ("the region, every array", {"ReadRegion": 1, "RegionBounds": REGION}),
+         ("the region, the three arrays",
+          {"ReadRegion": 1, "RegionBounds": REGION, "PointArrays": THREE})]
+
+
+def memory_mb(field):
+    """This process's resident memory now (VmRSS) or at its peak (VmHWM), in MB."""
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith(field + ":"):
+                return int(line.split()[1]) / 1024.0
+    return 0.0
+
+
+if peak_case is not None:  # the child: one read, and how far it raised the peak above before
+    reader = HDF5ParticleSnapshotReader(FileNames=[path], **CASES[peak_case][1])
+    reader.UpdatePipelineInformation()
+    with open("/proc/self/clear_refs", "w") as clear:
+        clear.write("5")  # the peak (VmHWM) starts again from what the process holds now
+    before = memory_mb("VmRSS")
+    reader.UpdatePipeline()
+    print("PEAK %.1f" % (memory_mb("VmHWM") - before))
+    sys.exit(0)
 
 # name: values per particle (float32 unless said)
 COLUMNS = [("Coordinates", 3, np.float64), ("Velocities", 3, np.float32),
@@ -69,12 +101,6 @@ with h5py.File(path, "w") as f:
 print("%s: %d gas particles, %d datasets, %d cells, %.0f MB" %
       (path, count, len(COLUMNS), side ** 3, os.path.getsize(path) / 1e6))
 
-THREE = ["Density", "SmoothingLength", "Masses"]
-REGION = [0.4, 0.6] * 3
-CASES = [("every array", {}), ("the three arrays", {"PointArrays": THREE}),
-         ("the region, every array", {"ReadRegion": 1, "RegionBounds": REGION}),
-         ("the region, the three arrays",
-          {"ReadRegion": 1, "RegionBounds": REGION, "PointArrays": THREE})]
 
 
 def read(keywords):
@@ -102,4 +128,13 @@ for run in range(2):  # in turn, twice: this machine's speed drifts over minutes
         print("  %-30s %7.3f s %6.0f MB %9d particles (%9d scanned)  %6.2fx faster, %6.2fx less "
               "memory" % (name, seconds, memory, points, scanned, every_time / seconds,
                           every_memory / memory))
+
+# Peak memory: each read in a process of its own (a process's peak never falls).
+pvpython = shutil.which("pvpython") or "/usr/bin/pvpython"
+print("peak resident memory a read adds (its own pvpython process, one read each)")
+for k, (name, _) in enumerate(CASES):
+    child = subprocess.run([pvpython, os.path.abspath(__file__), plugin, str(count), folder,
+                            "--peak", str(k)], capture_output=True, text=True)
+    lines = [line for line in child.stdout.splitlines() if line.startswith("PEAK ")]
+    print("  %-30s %7s MB" % (name, lines[-1].split()[1] if lines else "failed"))
 os.remove(path)
