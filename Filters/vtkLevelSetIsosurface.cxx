@@ -28,6 +28,7 @@
 #include "LevelSetVertexCells.h"
 
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -186,6 +187,8 @@ int vtkLevelSetIsosurface::RequestData(
     return 0;
   }
   bool ok = false;
+  // (Found again on this input, if no Scalars are named: InputScalars.)
+  this->Internal->ActiveScalarsName.clear();
   // VTK's global SMP backend may be Sequential (as in ParaView 5.11): run our loops on
   // std::threads regardless, without touching the global state.
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, "STDThread", false },
@@ -638,7 +641,7 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
     return false;
   }
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  vtkDataArray* scalars = this->InputScalars(input, association);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   std::string problem;
   if (!ranks.Distributed())
@@ -674,6 +677,38 @@ bool vtkLevelSetIsosurface::ValidateInput(vtkPointSet* input, std::vector<double
   return true;
 }
 
+vtkDataArray* vtkLevelSetIsosurface::InputScalars(vtkDataObject* input, int& association)
+{
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  if (scalars)
+  {
+    return scalars;
+  }
+  // No array named (a script whose Scalars property the domain left empty, as pvbatch
+  // --symmetric leaves it): the input's active point scalars, which the readers and Particle
+  // Density set to the density; on the filter's own copies of the input (ghost images, MPI
+  // ghosts), which carry the arrays but not the attribute, the array of that name. A name that
+  // the input lacks stays an error.
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  const char* name = info && info->Has(vtkDataObject::FIELD_NAME())
+    ? info->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  vtkDataSet* set = vtkDataSet::SafeDownCast(input);
+  if ((name && *name) || !set)
+  {
+    return nullptr;
+  }
+  association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (vtkDataArray* active = set->GetPointData()->GetScalars())
+  {
+    this->Internal->ActiveScalarsName = active->GetName() ? active->GetName() : "";
+    return active;
+  }
+  return this->Internal->ActiveScalarsName.empty()
+    ? nullptr
+    : set->GetPointData()->GetArray(this->Internal->ActiveScalarsName.c_str());
+}
+
 vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::Distribute(
   vtkPointSet* input, std::vector<double>& values, bool& idle)
 {
@@ -699,7 +734,7 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::Distribute(
     vtkDebugMacro(<< (report.empty() ? std::string("the partition is kept") : report));
   }
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, piece, association);
+  vtkDataArray* scalars = this->InputScalars(piece, association);
   double range[2];
   lsi::CheckPiece(piece, scalars, association, values, range); // checked before moving
   return piece;
@@ -760,7 +795,7 @@ void vtkLevelSetIsosurface::HaloInputs(
   support.clear();
   // The SPH field at a point sums every particle whose kernel reaches it.
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
+  vtkDataArray* scalars = this->InputScalars(work, association);
   lsi::SPHFieldArrays arrays;
   std::string problem, choice;
   if (lsi::FindSPHArrays(work, scalars, this->SPHRequest(), arrays, problem, choice))
@@ -1100,7 +1135,7 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   this->UsedSPHField = false;
   const lsi::SPHFieldRequest request = this->SPHRequest();
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  vtkDataArray* scalars = this->InputScalars(input, association);
   lsi::SPHFieldArrays arrays;
   std::string problem, choice;
   const bool sph = lsi::FindSPHArrays(input, scalars, request, arrays, problem, choice);
@@ -1372,7 +1407,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
 {
   const auto start = Clock::now();
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  vtkDataArray* scalars = this->InputScalars(input, association);
   // Around the seed, the points are moved by whole boxes into the cell centred on it, but the
   // data are sampled where they were found: the images reach only PeriodicMargin past the faces.
   const Internals& internal = *this->Internal;

@@ -608,6 +608,8 @@ private:
     vtkTable* enclosed);
   // The array the scalars come from (SetInputArrayToProcess(0, ...)), or null.
   vtkDataArray* ScalarsOf(vtkPointSet* input);
+  // The array to process (Scalars), or the input's active point scalars when none is named.
+  vtkDataArray* InputScalars(vtkDataObject* input, int& association);
   // The geometry the last run searched, if still cached and of this input (no search); else
   // null. `withFlood`: also the last run's flood kept (QuickCheck, the flood start), which a seed
   // move or a slide needs and a remake of the surface output does not.

@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace lsi
@@ -48,6 +49,9 @@ struct vtkLevelSetIsosurface::Internals
   // The LevelSet array of the output before the last, for the next output to reuse its memory
   // (lsi::MakeParticleOutput) if nothing else holds it by then.
   vtkSmartPointer<vtkDoubleArray> SpareLevelSet;
+  // With no Scalars named, the name of the input's active point scalars (InputScalars): looked
+  // up by name on the filter's copies of the input, which do not mark them.
+  std::string ActiveScalarsName;
 };
 
 #endif

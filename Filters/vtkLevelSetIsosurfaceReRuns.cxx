@@ -105,7 +105,7 @@ void vtkLevelSetIsosurface::SetIsoValue(double value)
 vtkDataArray* vtkLevelSetIsosurface::ScalarsOf(vtkPointSet* input)
 {
   int association = -1;
-  return this->GetInputArrayToProcess(0, input, association);
+  return this->InputScalars(input, association);
 }
 
 void vtkLevelSetIsosurface::OutputsModified()
@@ -174,7 +174,7 @@ std::unique_ptr<lsi::SPHField> vtkLevelSetIsosurface::RebuildSPHField(
   // particles, and f as the method read it (ghosts and images carry their originals' arrays):
   // the same field, without its checks' messages (they were given).
   int association = -1;
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, work, association);
+  vtkDataArray* scalars = this->InputScalars(work, association);
   std::vector<double> values;
   double range[2];
   lsi::SPHFieldArrays arrays;

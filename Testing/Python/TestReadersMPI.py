@@ -10,7 +10,8 @@ Then regions of the SWIFT snapshot, one wrapped across its periodic box's faces:
 exactly its particles inside, each once.
 Then Particle Density on the glass as read (each rank holding an interleaved share): every
 particle's density must be the SPH summation over its 64 nearest among all the particles
-(cubic spline, support out to the 64th), computed here with scipy."""
+(cubic spline, support out to the 64th), computed here with scipy. Last, Level-Set Isosurface
+with no Scalars named (as pvbatch --symmetric leaves them) takes the snapshot's active scalars."""
 import os
 import sys
 
@@ -106,6 +107,21 @@ worst = float(np.max(np.abs(rho / expected - 1.0))) if len(x) == 28721 else floa
 print("Particle Density on %d ranks: %d particles, largest relative difference to the "
       "summation over all particles %.3g" % (ranks, len(x), worst))
 check(worst <= 1e-9, "Particle Density: every particle's density as from all the particles")
+
+# Level-Set Isosurface with no Scalars named (as pvbatch --symmetric leaves the property): the
+# snapshot's active scalars (its density), on each rank's share and its ghosts, the same surface
+# as with the density named.
+blob_points = []
+for scalars in (["POINTS", "Density"], ["POINTS", ""]):
+    blob = LevelSetIsosurface(Input=OpenDataFile(os.path.join(snapshots, "periodic_blob.hdf5")),
+                              IsoValue=float(np.exp(-0.5)), SeedCenter=[0.01, 0.01, 0.01],
+                              SeedRadius=0.02, OutputType="Isopoints")
+    blob.Scalars = scalars
+    blob.UpdatePipeline()
+    blob_points.append(servermanager.Fetch(blob).GetNumberOfPoints())
+print("periodic blob on %d ranks, Scalars named and not: %s points" % (ranks, blob_points))
+check(blob_points[0] == blob_points[1] > 200,
+      "Level-Set Isosurface with no Scalars named: the active scalars, the named run's surface")
 
 print("%d failures" % len(failures))
 # On success pvbatch must finalise MPI on every rank: no sys.exit. On failure, end the process
