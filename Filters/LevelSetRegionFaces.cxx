@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetRegionFaces.h"
 
-#include "LevelSetParallel.h"
 #include "NearestNeighbors.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkPointSet.h"
 #include "vtkSMPTools.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <atomic>
@@ -29,15 +29,12 @@ RegionFaces FindRegionFaces(vtkPointSet* input, const PeriodicBox& box)
   }
   for (int k = 0; k < 6; ++k)
   {
-    region.Bounds[k] = bounds->GetComponent(
-      k / bounds->GetNumberOfComponents(), k % bounds->GetNumberOfComponents());
+    region.Bounds[k] = bounds->GetVariantValue(k).ToDouble(); // (values of one array, as BoxSize)
   }
   for (int a = 0; a < 3; ++a)
   {
-    const double wrapped = period && period->GetNumberOfValues() == 3
-      ? period->GetComponent(
-          a / period->GetNumberOfComponents(), a % period->GetNumberOfComponents())
-      : 0.0;
+    const double wrapped =
+      period && period->GetNumberOfValues() == 3 ? period->GetVariantValue(a).ToDouble() : 0.0;
     const double p = wrapped > 0.0 ? wrapped : (box.Enabled ? box.Size[a] : 0.0);
     region.Period[a] = p > 0.0 && std::isfinite(p) ? p : 0.0;
     const double low = region.Bounds[2 * a], high = region.Bounds[2 * a + 1];
