@@ -226,6 +226,7 @@ UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhood
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
   const double size[3] = { side, side, side };
   UninitializedVector<std::uint64_t> words(n);
+  AdviseHugePages(words);
   auto makeKeys = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
@@ -246,6 +247,8 @@ UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhood
   }
   out.Order.resize(n);
   out.Positions.resize(3 * n);
+  AdviseHugePages(out.Order);
+  AdviseHugePages(out.Positions);
   auto gather = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
@@ -550,6 +553,7 @@ bool BuildTree(
   // The build moved the samples into the tree's leaf order (a spatial order, like the Morton
   // order it refines): map each back to its input point id.
   UninitializedVector<std::uint32_t> order(n);
+  AdviseHugePages(order);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {

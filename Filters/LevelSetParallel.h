@@ -101,6 +101,7 @@ bool ParallelForInBlocks(
 template <typename T>
 std::unique_ptr<std::atomic<T>[]> FilledAtomics(std::size_t count, T value) {
   std::unique_ptr<std::atomic<T>[]> marks(new std::atomic<T>[count]);
+  AdviseHugePages(marks.get(), sizeof(std::atomic<T>) * count);
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -116,6 +117,7 @@ template <typename T>
 UninitializedVector<T> FilledInParallel(std::size_t count, T value)
 {
   UninitializedVector<T> values(count);
+  AdviseHugePages(values);
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     std::fill(values.begin() + begin, values.begin() + end, value);
   });

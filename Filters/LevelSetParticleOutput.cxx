@@ -48,6 +48,7 @@ vtkSmartPointer<vtkDoubleArray> NewLevelSet(vtkIdType n, vtkSmartPointer<vtkDoub
   {
     levelSet = vtkSmartPointer<vtkDoubleArray>::New();
     levelSet->SetNumberOfValues(n);
+    AdviseHugePages(levelSet->GetPointer(0), sizeof(double) * static_cast<std::size_t>(n));
   }
   levelSet->SetName("LevelSet");
   spare = nullptr;

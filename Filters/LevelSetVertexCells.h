@@ -4,6 +4,8 @@
 #ifndef LevelSetVertexCells_h
 #define LevelSetVertexCells_h
 
+#include "UninitializedVector.h"
+
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -17,6 +19,8 @@ inline vtkNew<vtkCellArray> VertexCells(vtkIdType count)
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(count);
+  AdviseHugePages(offsets->GetPointer(0), sizeof(vtkIdType) * static_cast<std::size_t>(count + 1));
+  AdviseHugePages(connectivity->GetPointer(0), sizeof(vtkIdType) * static_cast<std::size_t>(count));
   vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {

@@ -376,6 +376,7 @@ inline void PointCloudIndex::MoveIntoLeafOrder(UninitializedVector<double>& xyz,
   std::vector<std::uint32_t>& leafOrder = this->Tree.vAcc;
   const std::size_t count = leafOrder.size();
   oldIndex.resize(count);
+  AdviseHugePages(oldIndex);
   InChunks(count, 8, run, [&](std::size_t begin, std::size_t end) {
     std::copy(leafOrder.begin() + begin, leafOrder.begin() + end, oldIndex.begin() + begin);
   });
@@ -384,6 +385,7 @@ inline void PointCloudIndex::MoveIntoLeafOrder(UninitializedVector<double>& xyz,
     return; // no median cut: the leaves are in Morton order already
   }
   UninitializedVector<double> moved(3 * count);
+  AdviseHugePages(moved);
   InChunks(count, 8, run, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {

@@ -7,6 +7,7 @@
 #define SpatialOrder_h
 
 #include "TaskRunner.h"
+#include "UninitializedVector.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -66,6 +67,8 @@ void RadixSortPacked(
 {
   constexpr std::size_t Buckets = 1 << 10;
   const std::size_t n = words.size();
+  scratch.reserve(n);
+  AdviseHugePages(scratch);
   scratch.resize(n);
   chunks = std::max<std::size_t>(1, std::min(chunks, n / 4096 + 1)); // >= 4096 words each
   auto bound = [&](std::size_t c) { return n * c / chunks; };

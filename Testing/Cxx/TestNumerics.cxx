@@ -1143,6 +1143,20 @@ void TestSampleArrays()
   lsi::MapPagesNow(written.data(), 10);
   Check(std::all_of(written.begin(), written.end(), [](char c) { return c == 'x'; }),
     "MapPagesNow leaves the contents as they are");
+  // Huge pages asked for over written memory, over ranges that start and end inside 2 MB blocks
+  // or hold none, and over a vector's capacity before it is filled: contents unchanged.
+  std::vector<double> dense(std::size_t(5) << 18, 2.5);
+  lsi::AdviseHugePages(dense.data() + 1, dense.size() * sizeof(double) - 16);
+  lsi::AdviseHugePages(dense.data(), 100);
+  lsi::AdviseHugePages(nullptr, 0);
+  Check(std::all_of(dense.begin(), dense.end(), [](double v) { return v == 2.5; }),
+    "AdviseHugePages leaves the contents as they are");
+  lsi::UninitializedVector<std::uint64_t> fresh;
+  fresh.reserve(std::size_t(1) << 20);
+  lsi::AdviseHugePages(fresh);
+  lsi::ResizeMapped(fresh, std::size_t(1) << 20, std::uint64_t(9));
+  Check(std::all_of(fresh.begin(), fresh.end(), [](std::uint64_t v) { return v == 9; }),
+    "a vector filled after AdviseHugePages holds its values");
 }
 
 int main()
