@@ -394,7 +394,9 @@ bool Neighborhoods::ComputeStencil(std::size_t i, std::vector<double>& scratch, 
     this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); }, radius,
     LinearStencilView{ scratch.data(), nullptr }); // zero when singular
   // Stored times h_i (see GradientStencil), of order one in any unit of length.
-  std::transform(scratch.begin(), scratch.end(), &this->GradientStencil[3 * i * stride],
+  const std::size_t slot = this->NextStencilSlot->fetch_add(1, std::memory_order_relaxed);
+  this->StencilSlot[i] = static_cast<std::uint32_t>(slot);
+  std::transform(scratch.begin(), scratch.end(), &this->GradientStencil[3 * slot * stride],
     [radius](double c) { return static_cast<float>(c * radius); });
   thin = ok && IsThin(ids, stride, *this);
   return ok;
@@ -595,6 +597,8 @@ bool BuildNeighborhoods(
   out.Ids.resize(n * stride); // not initialised: pages cost memory only once a list is written
   out.Radii.resize(n);
   out.Rows.reset(new Neighborhoods::RowStates(n));
+  AdviseHugePages(out.Ids);
+  AdviseHugePages(out.Radii);
 
   // The mean radius (for the checks of the data's scale) over a few thousand of a fixed sample
   // of the samples, searched here and not kept: the fixed sample's own lists are computed when
@@ -608,6 +612,9 @@ bool BuildNeighborhoods(
   out.SearchSeconds = SecondsSince(start);
 
   out.GradientStencil.reset(new float[3 * n * stride]);
+  AdviseHugePages(out.GradientStencil.get(), sizeof(float) * 3 * n * stride);
+  out.StencilSlot.resize(n);
+  out.NextStencilSlot.reset(new std::atomic<std::size_t>(0));
   out.StencilState.assign(n, 0);
   std::vector<double> sampled; // flatness too is judged on the fixed sample
   sampled.reserve(3 * sample.size());
@@ -631,8 +638,10 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
     }
     return;
   }
-  this->Radii[i] = this->SearchRow(i, nearbyRadius, &this->Ids[i * this->Stride]);
-  ++this->Rows->Computed;
+  const std::size_t slot = this->Rows->Computed.fetch_add(1, std::memory_order_relaxed);
+  this->Rows->Slot[i] = static_cast<std::uint32_t>(slot);
+  this->Radii[slot] =
+    this->SearchRow(i, nearbyRadius, &this->Ids[slot * static_cast<std::size_t>(this->Stride)]);
   state.store(2, std::memory_order_release);
 }
 

@@ -45,13 +45,19 @@ struct Neighborhoods
   UninitializedVector<double> Positions; // 3 per sample
   std::unique_ptr<PointCloudIndex> Index;
 
-  // MLS gradient stencils, 3 * Stride floats per sample, computed on demand (EnsureStencils):
-  // the evolution only ever visits a band around the front, so most samples never need one.
-  // The storage is allocated but not initialised, so untouched pages cost no memory.
+  // MLS gradient stencils, 3 * Stride floats each, computed on demand (EnsureStencils): the
+  // evolution only ever visits a band around the front, so most samples never need one. Each
+  // computed stencil takes the next free slot (StencilSlot[i]), so the written part of the
+  // storage is one dense prefix, in 2 MB pages where the kernel grants them: a few dozen page
+  // faults instead of one per 4 KB of the band's scattered samples (the slots' order depends
+  // on the threads, the stencils do not). The storage is allocated for every sample but not
+  // initialised, so its unwritten part costs no memory.
   // Each is stored times the sample's radius h_i, so its coefficients are of order one in any
   // unit of length (a stencil goes as 1 / h_i, which float would overflow or flush to zero for
   // lengths beyond about 1e+-30); GradientAt and DivergenceAt divide h_i back out in double.
   mutable std::unique_ptr<float[]> GradientStencil;
+  mutable UninitializedVector<std::uint32_t> StencilSlot;    // valid where StencilState is not 0
+  std::unique_ptr<std::atomic<std::size_t>> NextStencilSlot; // (a pointer: the struct moves)
   // 0: not computed, 1: ready, 2: singular; computed ahead (PrecomputeStencils) and not yet
   // asked for: 3 ready, 4 singular, 5 ready and thin (counted when first asked for).
   mutable std::vector<unsigned char> StencilState;
@@ -90,13 +96,13 @@ struct Neighborhoods
   const std::uint32_t* NeighborsOf(std::size_t i) const
   {
     this->EnsureRow(i);
-    return &this->Ids[i * this->Stride];
+    return &this->Ids[this->Rows->Slot[i] * static_cast<std::size_t>(this->Stride)];
   }
   /// h_i: the distance to the farthest of the neighbours.
   double RadiusOf(std::size_t i) const
   {
     this->EnsureRow(i);
-    return this->Radii[i];
+    return this->Radii[this->Rows->Slot[i]];
   }
   /// Computes the lists that `samples` (count indices) still lack, in parallel. Call from the
   /// main thread between parallel loops.
@@ -133,7 +139,7 @@ struct Neighborhoods
   template <typename ValueFn>
   Eigen::Vector3d GradientAt(std::size_t i, ValueFn&& value) const
   {
-    const double h = this->Radii[i]; // 0 only where the stencil is singular (zero)
+    const double h = this->Radii[this->Rows->Slot[i]]; // 0 only where the stencil is singular
     if (!(h > 0.0))
     {
       return Eigen::Vector3d::Zero();
@@ -145,7 +151,7 @@ struct Neighborhoods
   template <typename VectorFn>
   double DivergenceAt(std::size_t i, VectorFn&& vector) const
   {
-    const double h = this->Radii[i];
+    const double h = this->Radii[this->Rows->Slot[i]];
     if (!(h > 0.0))
     {
       return 0.0;
@@ -210,18 +216,22 @@ struct Neighborhoods
   void EnsureFixedSampleRows() const;
 
   // The lists' storage, allocated for every sample but not initialised: untouched pages cost
-  // no memory. RowState: 0 not computed, 1 being computed, 2 ready.
+  // no memory. Each computed list takes the next free slot (Slot, valid where State is 2), so
+  // the written part is one dense prefix, in 2 MB pages where the kernel grants them (as the
+  // stencils). RowState: 0 not computed, 1 being computed, 2 ready.
   struct RowStates
   {
     explicit RowStates(std::size_t n)
       : State(new std::atomic<unsigned char>[n]())
+      , Slot(new std::uint32_t[n])
     {
     }
     std::unique_ptr<std::atomic<unsigned char>[]> State;
-    std::atomic<std::size_t> Computed{ 0 };
+    std::unique_ptr<std::uint32_t[]> Slot;
+    std::atomic<std::size_t> Computed{ 0 }; // lists computed or being computed: the next slot
   };
-  mutable UninitializedVector<std::uint32_t> Ids; // Stride each
-  mutable UninitializedVector<double> Radii;
+  mutable UninitializedVector<std::uint32_t> Ids; // Stride per slot
+  mutable UninitializedVector<double> Radii;      // per slot
   std::unique_ptr<RowStates> Rows;
   // The last fixed sample RadiusSampleWhere chose, and its `every` (0: none yet).
   mutable std::vector<std::uint32_t> Sample;
@@ -238,7 +248,7 @@ struct Neighborhoods
 private:
   const float* ScaledStencilOf(std::size_t i) const
   {
-    return &this->GradientStencil[3 * i * this->Stride];
+    return &this->GradientStencil[3 * std::size_t(this->StencilSlot[i]) * this->Stride];
   }
   /// Sample i's stencil into the cache (`scratch`: 3 * Stride doubles); whether it is regular,
   /// and whether its neighbourhood is thin.
@@ -298,7 +308,7 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
         for (std::size_t k = r * Run; k < std::min(missing.size(), (r + 1) * Run); ++k)
         {
           this->EnsureRow(missing[k], nearby);
-          nearby = this->Radii[missing[k]];
+          nearby = this->Radii[this->Rows->Slot[missing[k]]];
         }
       }
     });
