@@ -7,6 +7,9 @@
 //   - touch, 2 threads:  uninitialised storage, each half zeroed by a thread of its own;
 //   - mapped, resize:    the pages mapped in one call (MapPagesNow), then resize();
 //   - mapped, 2 threads: each half mapped by a thread of its own, then resize();
+//   - huge pages:        2 MB pages asked for (AdviseHugePages), then resize(): a fault per 2 MB
+//                        where the kernel grants them (transparent huge pages, madvise mode);
+//   - ResizeMapped:      both (what the filter's per-sample arrays do);
 //   - resident:          the same writes again into the first array, whose pages are mapped.
 // Every array is kept until the end, so each one gets fresh pages. Median of REPEATS (default 9).
 // Reports numbers and asserts nothing.
@@ -52,7 +55,7 @@ int main(int argc, char* argv[])
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 9;
   std::vector<std::vector<double>> kept;
   std::vector<lsi::UninitializedVector<double>> keptUninitialized;
-  std::vector<double> resize, touch, mapped, mappedTwo, resident;
+  std::vector<double> resize, touch, mapped, mappedTwo, huge, both, resident;
   const std::size_t half = Count / 2;
   for (int r = 0; r < repeats; ++r)
   {
@@ -66,6 +69,18 @@ int main(int argc, char* argv[])
       OnTwoThreads([&](int k) { std::fill(values + k * half, values + (k + 1) * half, 0.0); });
     }));
     mapped.push_back(Seconds([&]() {
+      kept.emplace_back();
+      kept.back().reserve(Count);
+      lsi::MapPagesNow(kept.back().data(), Count * sizeof(double));
+      kept.back().resize(Count);
+    }));
+    huge.push_back(Seconds([&]() {
+      kept.emplace_back();
+      kept.back().reserve(Count);
+      lsi::AdviseHugePages(kept.back());
+      kept.back().resize(Count);
+    }));
+    both.push_back(Seconds([&]() {
       kept.emplace_back();
       lsi::ResizeMapped(kept.back(), Count);
     }));
@@ -84,6 +99,8 @@ int main(int argc, char* argv[])
   std::printf("%-20s %.4f\n", "touch, 2 threads", Median(touch));
   std::printf("%-20s %.4f\n", "mapped, resize", Median(mapped));
   std::printf("%-20s %.4f\n", "mapped, 2 threads", Median(mappedTwo));
+  std::printf("%-20s %.4f\n", "huge pages", Median(huge));
+  std::printf("%-20s %.4f\n", "ResizeMapped", Median(both));
   std::printf("%-20s %.4f\n", "resident", Median(resident));
   return EXIT_SUCCESS;
 }
