@@ -41,6 +41,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -686,9 +687,11 @@ vtkDataArray* vtkLevelSetIsosurface::InputScalars(vtkDataObject* input, int& ass
   }
   // No array named (a script whose Scalars property the domain left empty, as pvbatch
   // --symmetric leaves it): the input's active point scalars, which the readers and Particle
-  // Density set to the density; on the filter's own copies of the input (ghost images, MPI
-  // ghosts), which carry the arrays but not the attribute, the array of that name. A name that
-  // the input lacks stays an error.
+  // Density set to the density; without them (ParaView's Distribute Points drops the attribute
+  // but keeps the field data), the array the readers and Particle Density name as the density
+  // in the field data (DensityArray). On the filter's own copies of the input (ghost images,
+  // MPI ghosts), which carry the arrays but neither mark, the array of the name found first. A
+  // name that the input lacks stays an error.
   vtkInformation* info = this->GetInputArrayInformation(0);
   const char* name = info && info->Has(vtkDataObject::FIELD_NAME())
     ? info->Get(vtkDataObject::FIELD_NAME())
@@ -704,9 +707,20 @@ vtkDataArray* vtkLevelSetIsosurface::InputScalars(vtkDataObject* input, int& ass
     this->Internal->ActiveScalarsName = active->GetName() ? active->GetName() : "";
     return active;
   }
-  return this->Internal->ActiveScalarsName.empty()
-    ? nullptr
-    : set->GetPointData()->GetArray(this->Internal->ActiveScalarsName.c_str());
+  if (!this->Internal->ActiveScalarsName.empty())
+  {
+    return set->GetPointData()->GetArray(this->Internal->ActiveScalarsName.c_str());
+  }
+  vtkStringArray* marker =
+    vtkStringArray::SafeDownCast(set->GetFieldData()->GetAbstractArray("DensityArray"));
+  vtkDataArray* density = marker && marker->GetNumberOfValues() > 0
+    ? set->GetPointData()->GetArray(marker->GetValue(0).c_str())
+    : nullptr;
+  if (density)
+  {
+    this->Internal->ActiveScalarsName = marker->GetValue(0);
+  }
+  return density;
 }
 
 vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::Distribute(

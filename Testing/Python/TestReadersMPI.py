@@ -11,12 +11,13 @@ exactly its particles inside, each once.
 Then Particle Density on the glass as read (each rank holding an interleaved share): every
 particle's density must be the SPH summation over its 64 nearest among all the particles
 (cubic spline, support out to the 64th), computed here with scipy. Last, Level-Set Isosurface
-with no Scalars named (as pvbatch --symmetric leaves them) takes the snapshot's active scalars."""
+with no Scalars named (as pvbatch --symmetric leaves them) takes the snapshot's active scalars,
+and after Distribute Points (which drops them) the density the field data names."""
 import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import LoadPlugin, OpenDataFile, ProcessIdScalars
+from paraview.simple import DistributePoints, LoadPlugin, OpenDataFile, ProcessIdScalars
 
 plugin, snapshots, swift, glass = sys.argv[1:5]
 LoadPlugin(plugin, ns=globals())
@@ -110,18 +111,26 @@ check(worst <= 1e-9, "Particle Density: every particle's density as from all the
 
 # Level-Set Isosurface with no Scalars named (as pvbatch --symmetric leaves the property): the
 # snapshot's active scalars (its density), on each rank's share and its ghosts, the same surface
-# as with the density named.
+# as with the density named; after Distribute Points, which drops the active scalars but keeps
+# the field data, the density the reader names there (DensityArray).
 blob_points = []
-for scalars in (["POINTS", "Density"], ["POINTS", ""]):
-    blob = LevelSetIsosurface(Input=OpenDataFile(os.path.join(snapshots, "periodic_blob.hdf5")),
-                              IsoValue=float(np.exp(-0.5)), SeedCenter=[0.01, 0.01, 0.01],
-                              SeedRadius=0.02, OutputType="Isopoints")
+for scalars, distribute in ((["POINTS", "Density"], False), (["POINTS", ""], False),
+                            (["POINTS", ""], True)):
+    source = OpenDataFile(os.path.join(snapshots, "periodic_blob.hdf5"))
+    if distribute:
+        source = DistributePoints(Input=source)
+    blob = LevelSetIsosurface(Input=source, IsoValue=float(np.exp(-0.5)),
+                              SeedCenter=[0.01, 0.01, 0.01], SeedRadius=0.02,
+                              OutputType="Isopoints")
     blob.Scalars = scalars
     blob.UpdatePipeline()
     blob_points.append(servermanager.Fetch(blob).GetNumberOfPoints())
-print("periodic blob on %d ranks, Scalars named and not: %s points" % (ranks, blob_points))
+print("periodic blob on %d ranks, Scalars named, not, not after Distribute Points: %s points"
+      % (ranks, blob_points))
 check(blob_points[0] == blob_points[1] > 200,
       "Level-Set Isosurface with no Scalars named: the active scalars, the named run's surface")
+check(blob_points[2] == blob_points[0],
+      "no Scalars named after Distribute Points: the field data's DensityArray, the same surface")
 
 print("%d failures" % len(failures))
 # On success pvbatch must finalise MPI on every rank: no sys.exit. On failure, end the process
