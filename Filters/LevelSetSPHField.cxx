@@ -22,19 +22,12 @@ namespace lsi
 {
 namespace
 {
-// The array a reader's field data marker (a one-string array) names, or "".
-std::string Marker(vtkPointSet* input, const char* marker)
-{
-  auto* names = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray(marker));
-  return names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : std::string();
-}
-
 // The array named by the user, else by the marker, else by one of the usual names.
 vtkDataArray* FindArray(vtkPointSet* input, const std::string& requested, const char* marker,
   std::initializer_list<const char*> usual, std::string& name)
 {
   vtkPointData* data = input->GetPointData();
-  name = !requested.empty() ? requested : Marker(input, marker);
+  name = !requested.empty() ? requested : MarkedArrayName(input, marker);
   if (!name.empty() || !requested.empty())
   {
     return data->GetArray(name.c_str());
@@ -72,6 +65,13 @@ const char* KernelName(SPHKernel kernel)
   }
 }
 } // namespace
+
+std::string MarkedArrayName(vtkDataObject* data, const char* marker)
+{
+  vtkFieldData* fields = data ? data->GetFieldData() : nullptr;
+  auto* names = vtkStringArray::SafeDownCast(fields ? fields->GetAbstractArray(marker) : nullptr);
+  return names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : std::string();
+}
 
 vtkDataArray* MarkedMassArray(vtkPointSet* input, const std::string& requested)
 {
@@ -136,7 +136,7 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   arrays.ValuesAreDensity = arrays.Density &&
     (scalars == arrays.Density || (scalars && scalars->GetName() && rhoName == scalars->GetName()));
   arrays.Kernel = request.Kernel > 0 ? static_cast<SPHKernel>(request.Kernel - 1)
-                                     : KernelFromMarker(Marker(input, "SPHKernel"));
+                                     : KernelFromMarker(MarkedArrayName(input, "SPHKernel"));
   arrays.SupportPerSmoothingLength = request.SupportPerSmoothingLength;
   if (!(arrays.SupportPerSmoothingLength > 0.0))
   {

@@ -21,6 +21,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkDataObject;
 class vtkPointSet;
 
 namespace lsi
@@ -47,6 +48,10 @@ struct SPHFieldArrays
   SPHKernel Kernel = SPHKernel::CubicSpline;
   double SupportPerSmoothingLength = 1.0;
 };
+
+/// The array name a reader's (or Particle Density's) field data marker names: a one-string
+/// array such as DensityArray or SPHKernel; "" without one.
+std::string MarkedArrayName(vtkDataObject* data, const char* marker);
 
 /// The mass and density arrays as FindSPHArrays finds them (the request's name, else the marked
 /// one, else the usual names), or null; for uses that need no smoothing length.

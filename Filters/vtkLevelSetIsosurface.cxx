@@ -41,7 +41,6 @@
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkStringArray.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -711,14 +710,11 @@ vtkDataArray* vtkLevelSetIsosurface::InputScalars(vtkDataObject* input, int& ass
   {
     return set->GetPointData()->GetArray(this->Internal->ActiveScalarsName.c_str());
   }
-  vtkStringArray* marker =
-    vtkStringArray::SafeDownCast(set->GetFieldData()->GetAbstractArray("DensityArray"));
-  vtkDataArray* density = marker && marker->GetNumberOfValues() > 0
-    ? set->GetPointData()->GetArray(marker->GetValue(0).c_str())
-    : nullptr;
+  const std::string marked = lsi::MarkedArrayName(set, "DensityArray");
+  vtkDataArray* density = marked.empty() ? nullptr : set->GetPointData()->GetArray(marked.c_str());
   if (density)
   {
-    this->Internal->ActiveScalarsName = marker->GetValue(0);
+    this->Internal->ActiveScalarsName = marked;
   }
   return density;
 }
