@@ -136,6 +136,13 @@ struct LastOutputs
   // point may have slid from the surface the method last made in full).
   bool SlideReady = false;
   std::vector<double> Values; // f in storage order: Values - IsoValue are the data offsets
+  // Whether Values are exactly the Work's scalars array (one component; not on the SPH field,
+  // nor averaged over merged duplicates): its interpolation onto the surface then reads them.
+  bool ValuesAreScalars = false;
+  const std::vector<double>* ScalarsInStorageOrder() const
+  {
+    return this->SlideReady && this->ValuesAreScalars ? &this->Values : nullptr;
+  }
   double IsoValue = 0.0;
   std::vector<double> Phi;
   IsopointSet Isopoints;          // in a periodic box all of them, before the periodic cell is cut

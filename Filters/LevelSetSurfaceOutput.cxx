@@ -17,9 +17,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 
@@ -65,16 +67,20 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
 namespace
 {
 // A source array's values for reading in a tight loop: straight from memory when they are
-// doubles or floats (most arrays), else through the virtual GetComponent.
+// doubles or floats (most arrays), else through the virtual GetComponent; or, for a
+// one-component array given in storage order too (`stored`), from there: the samples near a
+// point lie near each other in storage order, and scattered in input order.
 struct ValuesOf
 {
   vtkDataArray* Array = nullptr;
   const double* Doubles = nullptr;
   const float* Floats = nullptr;
+  const double* Stored = nullptr;
   int Components = 1;
 
-  explicit ValuesOf(vtkDataArray* array)
+  explicit ValuesOf(vtkDataArray* array, const double* stored = nullptr)
     : Array(array)
+    , Stored(array->GetNumberOfComponents() == 1 ? stored : nullptr)
     , Components(array->GetNumberOfComponents())
   {
     if (auto* d = vtkDoubleArray::FastDownCast(array))
@@ -93,19 +99,24 @@ struct ValuesOf
       : this->Floats     ? this->Floats[k]
                          : this->Array->GetComponent(tuple, c);
   }
+  // Component c at `sample` (storage order).
+  double AtSample(const Neighborhoods& geometry, std::uint32_t sample, int c) const
+  {
+    return this->Stored ? this->Stored[sample] : (*this)(geometry.Order[sample], c);
+  }
 };
 } // namespace
 
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
-  const std::uint32_t* nearest)
+  const std::uint32_t* nearest, const std::vector<const double*>* inStorageOrder)
 {
   const std::size_t count = points.size() / 3;
   std::vector<ValuesOf> values;
-  for (vtkDataArray* source : sources)
+  for (std::size_t a = 0; a < sources.size(); ++a)
   {
-    values.emplace_back(source);
+    values.emplace_back(sources[a], inStorageOrder ? (*inStorageOrder)[a] : nullptr);
   }
   struct Scratch
   {
@@ -177,14 +188,14 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
             double value = 0.0;
             if (!fitted)
             {
-              value = found ? source(geometry.Order[ids[closest]], c) : 0.0;
+              value = found ? source.AtSample(geometry, ids[closest], c) : 0.0;
             }
             for (std::size_t j = 0; fitted && j < found; ++j)
             {
               const double w = s.Weights[j];
               if (w != 0.0)
               {
-                value += w * source(geometry.Order[ids[j]], c);
+                value += w * source.AtSample(geometry, ids[j], c);
               }
             }
             targets[a]->SetComponent(static_cast<vtkIdType>(i), c, value);
@@ -193,6 +204,30 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
       }
     },
     aborted, 8192);
+}
+
+bool SameValuesInStorageOrder(
+  vtkDataArray* array, const Neighborhoods& geometry, const std::vector<double>& values)
+{
+  if (!array || array->GetNumberOfComponents() != 1 ||
+    array->GetNumberOfTuples() != static_cast<vtkIdType>(geometry.NumberOfSamples) ||
+    values.size() != geometry.NumberOfSamples ||
+    !(vtkDoubleArray::FastDownCast(array) || vtkFloatArray::FastDownCast(array)))
+  {
+    return false;
+  }
+  const ValuesOf source(array);
+  std::atomic<bool> same(true);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end && same.load(std::memory_order_relaxed); ++i)
+    {
+      if (!(values[i] == source(geometry.Order[i], 0)))
+      {
+        same = false;
+      }
+    }
+  });
+  return same;
 }
 
 bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& field,
@@ -235,7 +270,8 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
-  const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt)
+  const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt,
+  const std::vector<double>* scalarsInStorageOrder)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -273,6 +309,8 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   }
   // Every numeric point array of the input, except names the filter itself produces.
   std::vector<vtkSmartPointer<vtkDataArray>> sources, targets;
+  std::vector<const double*> inStorageOrder; // per source: the scalars' values, else null
+  vtkDataArray* scalars = activeScalars ? inputData->GetArray(activeScalars) : nullptr;
   for (int a = 0; a < inputData->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = inputData->GetArray(a);
@@ -303,6 +341,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     target->SetNumberOfTuples(m);
     sources.push_back(source);
     targets.push_back(target);
+    inStorageOrder.push_back(array == scalars && scalarsInStorageOrder &&
+          scalarsInStorageOrder->size() == geometry.NumberOfSamples
+        ? scalarsInStorageOrder->data()
+        : nullptr);
   }
   std::vector<vtkDataArray*> sourceList(sources.begin(), sources.end());
   std::vector<vtkDataArray*> targetList(targets.begin(), targets.end());
@@ -314,7 +356,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const std::vector<double>& at = sampledAt ? *sampledAt : isopoints.Points;
   if (field ? !InterpolatePointArraysSPH(geometry, *field, at, sourceList, targetList, aborted)
             : !InterpolatePointArrays(geometry, at, fitCount, sourceList, targetList, aborted,
-                kept ? isopoints.FitSamples.data() : nullptr))
+                kept ? isopoints.FitSamples.data() : nullptr, &inStorageOrder))
   {
     return false;
   }

@@ -33,10 +33,14 @@ class SPHField;
 /// `sampledAt`, if given (3 doubles per point), is where the arrays are interpolated instead of
 /// the points themselves: a periodic box's points moved by whole boxes are sampled where the
 /// particles are (their fits' samples, if kept, are those nearest to `sampledAt`).
+/// `scalarsInStorageOrder`, if given, holds the values of the array named `activeScalars` (one
+/// component) per sample in storage order, exactly: read from there instead (the same numbers;
+/// in input order the samples near a point are scattered over memory).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
-  const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr);
+  const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr,
+  const std::vector<double>* scalarsInStorageOrder = nullptr);
 
 /// Splat radius of each point (3 doubles per point): `factor` times the distance to its
 /// `neighbors`-th nearest other point, searched in `index` if given (over `points`), else in
@@ -49,12 +53,21 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
 /// writes the fit's value at the point into the matching array of `targets` (same components,
 /// one tuple per point, already sized). A linear field is reproduced exactly. Where the fit is
 /// singular the nearest sample's value is copied. `nearest`, if not null, holds each point's
-/// fitCount nearest samples (IsopointSet::FitSamples), which spares their search. Returns false
-/// only when aborted.
+/// fitCount nearest samples (IsopointSet::FitSamples), which spares their search.
+/// `inStorageOrder`, if given, holds per source null or, for a one-component source, its values
+/// per sample in storage order (read instead: the same numbers, near each other in memory).
+/// Returns false only when aborted.
 bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<double>& points,
   std::size_t fitCount, const std::vector<vtkDataArray*>& sources,
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
-  const std::uint32_t* nearest = nullptr);
+  const std::uint32_t* nearest = nullptr,
+  const std::vector<const double*>* inStorageOrder = nullptr);
+
+/// Whether `values` (per sample, storage order) are exactly `array`'s (one component, a value
+/// per sample, input order): MakeSurfacePoints may then read them instead of it. Checked for
+/// double and float arrays (others: false).
+bool SameValuesInStorageOrder(
+  vtkDataArray* array, const Neighborhoods& geometry, const std::vector<double>& values);
 
 /// Like InterpolatePointArrays, with the SPH field's interpolant: A(x) = sum_j (m_j / rho_j)
 /// A_j W(|x - x_j|, H_j) (LevelSetSPHField.h). Returns false only when aborted.

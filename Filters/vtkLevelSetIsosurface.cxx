@@ -492,6 +492,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.DeepInside = lsi::EnclosedDeepInside();
   }
   last.Values.clear();
+  last.ValuesAreScalars = false;
   last.Phi.clear();
   last.Field.reset();
   last.Isopoints = lsi::IsopointSet();
@@ -509,6 +510,12 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
           last.Values[i] = onField ? dataOffsets[i] + isoValue : values[geometry->Order[i]];
         }
       });
+    // (Read by the interpolation of a later slide or output change: the same numbers.)
+    int association = -1;
+    vtkDataArray* scalars = this->InputScalars(input, association);
+    last.ValuesAreScalars = !onField && scalars && scalars->GetName() &&
+      lsi::SameValuesInStorageOrder(
+        input->GetPointData()->GetArray(scalars->GetName()), *geometry, last.Values);
     last.Field = std::move(field);
     last.IsoValue = this->IsoValue;
     last.Phi = std::move(phi);
@@ -1413,7 +1420,8 @@ lsi::SPHFieldRequest vtkLevelSetIsosurface::SPHRequest() const
 bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
   const std::vector<double>& nearbyPoints, const lsi::SPHField* field,
-  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output)
+  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
+  const std::vector<double>* scalarsInStorageOrder)
 {
   const auto start = Clock::now();
   int association = -1;
@@ -1437,7 +1445,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, aroundSeed ? moved : isopoints,
         this->SplatScale, this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field,
         surface, this->Stage(SurfaceStage), aroundSeed ? movedIndex.get() : surfaceIndex,
-        aroundSeed ? &isopoints.Points : nullptr))
+        aroundSeed ? &isopoints.Points : nullptr, scalarsInStorageOrder))
   {
     return false;
   }

@@ -678,7 +678,8 @@ private:
   // there are none.)
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const lsi::IsopointSet& isopoints, const std::vector<double>& nearbyPoints,
-    const lsi::SPHField* field, const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output);
+    const lsi::SPHField* field, const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
+    const std::vector<double>* scalarsInStorageOrder = nullptr);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
   // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to

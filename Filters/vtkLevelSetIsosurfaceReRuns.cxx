@@ -146,8 +146,8 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   const std::vector<double>& nearby = last.NearbyPoints(ranks.Distributed());
   const std::unique_ptr<lsi::PointCloudIndex> nearbyIndex = lsi::IndexOfPoints(nearby);
   last.Valid = false; // until the surface is made
-  if (!ranks.All(this->MakeSurfaceOutput(
-        work, *geometry, last.ShownPoints(), nearby, field, nearbyIndex.get(), surfaceOutput)))
+  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, last.ShownPoints(), nearby, field,
+        nearbyIndex.get(), surfaceOutput, last.ScalarsInStorageOrder())))
   {
     return false;
   }
@@ -503,8 +503,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     nearbyInCell ? inCell : (ranks.Distributed() ? isopoints : *shown);
   const lsi::PointCloudIndex* nearbyIndex =
     nearbyInCell ? inCellIndex.get() : (ranks.Distributed() ? surfaceIndex.get() : shownIndex);
-  if (!ranks.All(this->MakeSurfaceOutput(
-        work, *geometry, *shown, nearby.Points, last.Field.get(), nearbyIndex, surfaceOutput)))
+  if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, *shown, nearby.Points, last.Field.get(),
+        nearbyIndex, surfaceOutput, last.ScalarsInStorageOrder())))
   {
     return false;
   }

@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the surface output carries and how it follows time:
 // - every input point array interpolated onto the isopoints reproduces a linear field exactly;
+// - the scalars read in storage order (as a slide reads them) interpolate to the same numbers;
 // - the splat polygons lie in the tangent planes, one per isopoint, with the splat radius;
 // - on a time series the filter runs per time step, and each step keeps its neighbourhoods.
 #include "vtkLevelSetIsosurface.h"
 
+#include "LevelSetNeighborhoods.h"
+#include "LevelSetSurfaceOutput.h"
 #include "TestCheck.h"
 
 #include "vtkCellArray.h"
@@ -27,6 +30,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -130,6 +134,93 @@ void TestInterpolatedArrays()
   Check(!filter->GetOutput(0)->GetPointData()->GetArray("linear") &&
       filter->GetOutput(0)->GetPointData()->GetArray("SplatRadius"),
     "InterpolateArrays off: no input arrays, still normals and splat radius");
+}
+
+// InterpolatePointArrays reading a one-component array from a copy in storage order (what a
+// quick isovalue change passes for the scalars: LastOutputs::Values) gives the same numbers, to
+// the bit, as reading the array itself; SameValuesInStorageOrder tells when such a copy holds
+// exactly the array's values.
+void TestScalarsInStorageOrder()
+{
+  vtkSmartPointer<vtkPolyData> data = Ball(20000, 18.0, 5);
+  lsi::Neighborhoods geometry;
+  lsi::BuildNeighborhoods(data->GetPoints(), 16, geometry, lsi::AbortCheck());
+  vtkDataArray* f = data->GetPointData()->GetArray("f");
+  vtkDataArray* temperature = data->GetPointData()->GetArray("temperature");
+  vtkDataArray* velocity = data->GetPointData()->GetArray("velocity");
+  auto inStorageOrder = [&](vtkDataArray* array) {
+    std::vector<double> values(geometry.NumberOfSamples);
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+      values[i] = array->GetComponent(geometry.Order[i], 0);
+    }
+    return values;
+  };
+  std::vector<double> fStored = inStorageOrder(f);
+  const std::vector<double> temperatureStored = inStorageOrder(temperature);
+  Check(lsi::SameValuesInStorageOrder(f, geometry, fStored), "a double array's copy matches");
+  Check(lsi::SameValuesInStorageOrder(temperature, geometry, temperatureStored),
+    "a float array's copy matches");
+  Check(!lsi::SameValuesInStorageOrder(velocity, geometry, inStorageOrder(velocity)),
+    "a vector array is not read from a copy");
+  Check(!lsi::SameValuesInStorageOrder(f, geometry, temperatureStored),
+    "another array's values do not match");
+  std::vector<double> changed = fStored;
+  changed[changed.size() / 2] += 1e-12;
+  Check(!lsi::SameValuesInStorageOrder(f, geometry, changed), "one changed value is seen");
+  changed.pop_back();
+  Check(!lsi::SameValuesInStorageOrder(f, geometry, changed), "a short copy does not match");
+
+  // Points scattered through the cloud, each array interpolated both ways.
+  std::vector<double> points;
+  for (int k = 0; k < 500; ++k)
+  {
+    const double t = k / 500.0;
+    points.insert(points.end(),
+      { 5.0 + 50.0 * t, 30.0 + 20.0 * std::sin(7.0 * t), 30.0 + 20.0 * std::cos(11.0 * t) });
+  }
+  const std::vector<vtkDataArray*> sources = { f, velocity, temperature };
+  auto interpolate = [&](const std::vector<const double*>* stored) {
+    std::vector<vtkSmartPointer<vtkDataArray>> targets;
+    std::vector<vtkDataArray*> targetList;
+    for (vtkDataArray* source : sources)
+    {
+      vtkSmartPointer<vtkDataArray> target = vtkSmartPointer<vtkDoubleArray>::New();
+      target->SetNumberOfComponents(source->GetNumberOfComponents());
+      target->SetNumberOfTuples(static_cast<vtkIdType>(points.size() / 3));
+      targets.push_back(target);
+      targetList.push_back(target);
+    }
+    lsi::InterpolatePointArrays(geometry, points, 2 * static_cast<std::size_t>(geometry.Stride),
+      sources, targetList, lsi::AbortCheck(), nullptr, stored);
+    return targets;
+  };
+  const auto direct = interpolate(nullptr);
+  // (The vector array's copy is ignored: only one-component arrays are read from one.)
+  const std::vector<double> velocityStored = inStorageOrder(velocity);
+  const std::vector<const double*> stored = { fStored.data(), velocityStored.data(),
+    temperatureStored.data() };
+  const auto fromCopies = interpolate(&stored);
+  bool same = true;
+  for (std::size_t a = 0; a < sources.size(); ++a)
+  {
+    for (vtkIdType i = 0; i < direct[a]->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < direct[a]->GetNumberOfComponents(); ++c)
+      {
+        same = same && direct[a]->GetComponent(i, c) == fromCopies[a]->GetComponent(i, c);
+      }
+    }
+  }
+  Check(same, "arrays read in storage order interpolate to the same numbers");
+  // And the copies are read: a copy with other values gives other numbers.
+  for (double& v : fStored)
+  {
+    v += 1.0;
+  }
+  const auto shifted = interpolate(&stored);
+  Check(std::abs(shifted[0]->GetComponent(0, 0) - direct[0]->GetComponent(0, 0) - 1.0) < 1e-9,
+    "the scalars are read from the copy (a copy one higher interpolates one higher)");
 }
 
 void TestSplats()
@@ -294,6 +385,7 @@ void TestTimeSeries()
 int main()
 {
   TestInterpolatedArrays();
+  TestScalarsInStorageOrder();
   TestSplats();
   TestTimeSeries();
   std::cout << (lsi::test::Failures() ? "surface output tests FAILED\n"
