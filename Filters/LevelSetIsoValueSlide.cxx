@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 
@@ -581,13 +582,15 @@ bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double
 
 std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
   const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
-  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates)
+  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates,
+  std::vector<double>* candidateGradients)
 {
   auto inBand = [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; };
   std::vector<std::size_t> band;
+  std::vector<std::uint32_t> kept; // the band's places among the candidates
   if (candidates)
   {
-    const std::vector<std::uint32_t> kept = IndicesWhere<std::uint32_t>(
+    kept = IndicesWhere<std::uint32_t>(
       candidates->size(), [&](std::size_t k) { return inBand((*candidates)[k]); });
     band.resize(kept.size());
     for (std::size_t k = 0; k < kept.size(); ++k)
@@ -599,15 +602,51 @@ std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
   {
     band = IndicesWhere<std::size_t>(geometry.NumberOfSamples, inBand);
   }
-  geometry.EnsureStencils(band); // computed by the evolution already: a lookup
+  double* known = nullptr; // per candidate: |grad f|, NaN until computed
+  if (candidates && candidateGradients)
+  {
+    if (candidateGradients->size() != candidates->size())
+    {
+      candidateGradients->assign(candidates->size(), std::numeric_limits<double>::quiet_NaN());
+    }
+    known = candidateGradients->data();
+  }
+  const std::vector<std::size_t> unknown = known
+    ? IndicesWhere<std::size_t>(
+        band.size(), [&](std::size_t k) { return std::isnan(known[kept[k]]); })
+    : std::vector<std::size_t>();
+  if (!known || !unknown.empty())
+  {
+    std::vector<std::size_t> compute(known ? unknown.size() : 0);
+    for (std::size_t u = 0; u < compute.size(); ++u)
+    {
+      compute[u] = band[unknown[u]];
+    }
+    geometry.EnsureStencils(known ? compute : band); // computed by the evolution: a lookup
+  }
+  auto gradientAt = [&](std::size_t i) {
+    const std::uint32_t* around = geometry.NeighborsOf(i);
+    return geometry.GradientAt(i, [&](std::size_t m) { return values[around[m]]; }).norm();
+  };
   std::vector<double> shifted(band.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
       const std::size_t i = band[k];
-      const std::uint32_t* around = geometry.NeighborsOf(i);
-      const double gradient =
-        geometry.GradientAt(i, [&](std::size_t m) { return values[around[m]]; }).norm();
+      double gradient;
+      if (known)
+      {
+        double& g = known[kept[k]];
+        if (std::isnan(g))
+        {
+          g = gradientAt(i);
+        }
+        gradient = g;
+      }
+      else
+      {
+        gradient = gradientAt(i);
+      }
       shifted[k] = LevelSetAfterIsoValueChange(phi[i], valueChange, gradient, largestMove);
     }
   });

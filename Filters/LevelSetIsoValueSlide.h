@@ -153,10 +153,14 @@ bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double
 /// data's gradient there from `values` (f, or f minus any constant); phi beyond the band stays
 /// clamped. `largestMove`: see LevelSetAfterIsoValueChange. The band is looked for among
 /// `candidates` if given (storage order; they must hold every sample with |phi| < halfWidth),
-/// else among every sample. Returns the band's samples: the only ones whose phi changed.
+/// else among every sample. `candidateGradients`, if given with `candidates`, keeps the data's
+/// gradient norm per candidate across shifts of the same `values` (NaN until computed; sized
+/// here when its size is not the candidates'): a slider's shifts compute each sample's once.
+/// Returns the band's samples: the only ones whose phi changed.
 std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
   const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
-  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates = nullptr);
+  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates = nullptr,
+  std::vector<double>* candidateGradients = nullptr);
 
 } // namespace lsi
 

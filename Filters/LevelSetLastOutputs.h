@@ -151,7 +151,8 @@ struct LastOutputs
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
   BandDrift Drift;               // the band, and how far each of Isopoints may lie from its surface
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
-  FloodStart Start;              // the last flood's level set, for runs that change no input to it
+  std::vector<double> NearGradients; // |grad f| per DeepInside.Near sample (ShiftLevelSet's)
+  FloodStart Start; // the last flood's level set, for runs that change no input to it
   // What the surface output was made from, for a change of its own properties alone
   // (SurfaceReady: any run without merged duplicates, whatever its start, ranks or box; with
   // Work and Stamp): the points shown, with their fits' samples (Isopoints themselves when those

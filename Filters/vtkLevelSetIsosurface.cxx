@@ -450,6 +450,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   const double halfWidth = lsi::ReinitializationHalfWidth(settings);
   // (The deep inside of the Enclosed sums, for quick isovalue changes: see SlideReady below.)
   last.DeepInside = lsi::EnclosedDeepInside();
+  last.NearGradients.clear();
   const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, nearby,
     surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,

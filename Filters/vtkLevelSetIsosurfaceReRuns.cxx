@@ -459,7 +459,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const bool nearKept = last.DeepInside.Group.size() == geometry->NumberOfSamples;
   const std::vector<std::size_t> changedSamples =
     lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.Drift.HalfWidth,
-      largestMove, phi, nearKept ? &last.DeepInside.Near : nullptr);
+      largestMove, phi, nearKept ? &last.DeepInside.Near : nullptr, &last.NearGradients);
   ranks.RefreshGhosts(phi); // (a ghost's stencil may be cut: its owner's value is the serial one)
   // In a periodic box the outputs show the kept cell's points, with a search index of their
   // own, and the particles' arrays are the images' too.
