@@ -580,81 +580,86 @@ bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double
   return clear;
 }
 
-std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
-  const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
-  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates,
+BandGradients GradientsInBand(const Neighborhoods& geometry, const std::vector<double>& values,
+  double halfWidth, const std::vector<double>& phi, const std::vector<std::uint32_t>* candidates,
   std::vector<double>* candidateGradients)
 {
   auto inBand = [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; };
-  std::vector<std::size_t> band;
-  std::vector<std::uint32_t> kept; // the band's places among the candidates
+  BandGradients band;
+  std::vector<std::uint32_t> places; // the band's places among the candidates
   if (candidates)
   {
-    kept = IndicesWhere<std::uint32_t>(
+    places = IndicesWhere<std::uint32_t>(
       candidates->size(), [&](std::size_t k) { return inBand((*candidates)[k]); });
-    band.resize(kept.size());
-    for (std::size_t k = 0; k < kept.size(); ++k)
+    band.Samples.resize(places.size());
+    for (std::size_t k = 0; k < places.size(); ++k)
     {
-      band[k] = (*candidates)[kept[k]];
+      band.Samples[k] = (*candidates)[places[k]];
     }
   }
   else
   {
-    band = IndicesWhere<std::size_t>(geometry.NumberOfSamples, inBand);
+    band.Samples = IndicesWhere<std::size_t>(geometry.NumberOfSamples, inBand);
   }
-  double* known = nullptr; // per candidate: |grad f|, NaN until computed
+  double* kept = nullptr; // per candidate: |grad f|, NaN until computed
   if (candidates && candidateGradients)
   {
     if (candidateGradients->size() != candidates->size())
     {
       candidateGradients->assign(candidates->size(), std::numeric_limits<double>::quiet_NaN());
     }
-    known = candidateGradients->data();
+    kept = candidateGradients->data();
   }
-  const std::vector<std::size_t> unknown = known
-    ? IndicesWhere<std::size_t>(
-        band.size(), [&](std::size_t k) { return std::isnan(known[kept[k]]); })
-    : std::vector<std::size_t>();
-  if (!known || !unknown.empty())
-  {
-    std::vector<std::size_t> compute(known ? unknown.size() : 0);
-    for (std::size_t u = 0; u < compute.size(); ++u)
-    {
-      compute[u] = band[unknown[u]];
-    }
-    geometry.EnsureStencils(known ? compute : band); // computed by the evolution: a lookup
-  }
-  auto gradientAt = [&](std::size_t i) {
-    const std::uint32_t* around = geometry.NeighborsOf(i);
-    return geometry.GradientAt(i, [&](std::size_t m) { return values[around[m]]; }).norm();
+  auto keptAt = [&](std::size_t k) {
+    return kept ? kept[places[k]] : std::numeric_limits<double>::quiet_NaN();
   };
-  std::vector<double> shifted(band.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      const std::size_t i = band[k];
-      double gradient;
-      if (known)
-      {
-        double& g = known[kept[k]];
-        if (std::isnan(g))
-        {
-          g = gradientAt(i);
-        }
-        gradient = g;
-      }
-      else
-      {
-        gradient = gradientAt(i);
-      }
-      shifted[k] = LevelSetAfterIsoValueChange(phi[i], valueChange, gradient, largestMove);
-    }
-  });
-  for (std::size_t k = 0; k < band.size(); ++k)
+  // The samples without a kept gradient need their stencils (the evolution's: a lookup).
+  std::vector<std::size_t> missing = IndicesWhere<std::size_t>(
+    band.Samples.size(), [&](std::size_t k) { return std::isnan(keptAt(k)); });
+  for (std::size_t& k : missing)
   {
-    phi[band[k]] = shifted[k];
+    k = band.Samples[k];
   }
+  geometry.EnsureStencils(missing);
+  band.Norms.resize(band.Samples.size());
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(band.Samples.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        double norm = keptAt(k);
+        if (std::isnan(norm))
+        {
+          const std::size_t i = band.Samples[k];
+          const std::uint32_t* around = geometry.NeighborsOf(i);
+          norm = geometry.GradientAt(i, [&](std::size_t m) { return values[around[m]]; }).norm();
+          if (kept)
+          {
+            kept[places[k]] = norm;
+          }
+        }
+        band.Norms[k] = norm;
+      }
+    });
   return band;
+}
+
+std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
+  const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
+  std::vector<double>& phi, const std::vector<std::uint32_t>* candidates,
+  std::vector<double>* candidateGradients)
+{
+  const BandGradients band =
+    GradientsInBand(geometry, values, halfWidth, phi, candidates, candidateGradients);
+  // (Each sample's phi is read and written by its own iteration alone.)
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(band.Samples.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        double& value = phi[band.Samples[k]];
+        value = LevelSetAfterIsoValueChange(value, valueChange, band.Norms[k], largestMove);
+      }
+    });
+  return band.Samples;
 }
 
 } // namespace lsi

@@ -148,15 +148,30 @@ bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double
   double halfWidth, const std::vector<double>& points, const std::vector<char>& nearEdge,
   const std::vector<char>* kept, double margin);
 
+/// The samples of the band (|phi| < halfWidth) among `candidates` (storage order; they must
+/// hold every sample of the band), else among every sample, with the norm of the data's
+/// gradient there from `values` (f, or f minus any constant) by their MLS stencils.
+/// `candidateGradients`, if given with `candidates`, keeps those norms per candidate across
+/// calls on the same `values` (NaN until computed; sized here when its size is not the
+/// candidates'): a full run fills it for its band, so that its slides compute only the samples
+/// they bring into the band.
+struct BandGradients
+{
+  std::vector<std::size_t> Samples;
+  std::vector<double> Norms;
+};
+BandGradients GradientsInBand(const Neighborhoods& geometry, const std::vector<double>& values,
+  double halfWidth, const std::vector<double>& phi,
+  const std::vector<std::uint32_t>* candidates = nullptr,
+  std::vector<double>* candidateGradients = nullptr);
+
 /// phi after f_iso grew by `valueChange` (LevelSetAfterIsoValueChange per sample), over the
 /// samples of the band (|phi| < halfWidth, whose MLS stencils the evolution computed) with the
 /// data's gradient there from `values` (f, or f minus any constant); phi beyond the band stays
 /// clamped. `largestMove`: see LevelSetAfterIsoValueChange. The band is looked for among
 /// `candidates` if given (storage order; they must hold every sample with |phi| < halfWidth),
-/// else among every sample. `candidateGradients`, if given with `candidates`, keeps the data's
-/// gradient norm per candidate across shifts of the same `values` (NaN until computed; sized
-/// here when its size is not the candidates'): a slider's shifts compute each sample's once.
-/// Returns the band's samples: the only ones whose phi changed.
+/// else among every sample; `candidateGradients`: see GradientsInBand. Returns the band's
+/// samples: the only ones whose phi changed.
 std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
   const std::vector<double>& values, double valueChange, double halfWidth, double largestMove,
   std::vector<double>& phi, const std::vector<std::uint32_t>* candidates = nullptr,

@@ -151,7 +151,14 @@ struct LastOutputs
   std::unique_ptr<SPHField> Field; // the run's SPH field, if it used one
   BandDrift Drift;               // the band, and how far each of Isopoints may lie from its surface
   EnclosedDeepInside DeepInside; // the Enclosed sums' deep inside, which a slide leaves alone
-  std::vector<double> NearGradients; // |grad f| per DeepInside.Near sample (ShiftLevelSet's)
+  std::vector<double> NearGradients; // |grad f| per DeepInside.Near sample (GradientsInBand's)
+  /// Where a slide looks for the band (ShiftLevelSet): the deep inside's near samples, where
+  /// they were found over these samples; else null (every sample).
+  const std::vector<std::uint32_t>* BandCandidates(const Neighborhoods& geometry) const
+  {
+    return this->DeepInside.Group.size() == geometry.NumberOfSamples ? &this->DeepInside.Near
+                                                                     : nullptr;
+  }
   FloodStart Start; // the last flood's level set, for runs that change no input to it
   // What the surface output was made from, for a change of its own properties alone
   // (SurfaceReady: any run without merged duplicates, whatever its start, ranks or box; with

@@ -13,6 +13,7 @@
 #include "LevelSetFloodAcross.h"
 #include "LevelSetHaloReach.h"
 #include "LevelSetInput.h"
+#include "LevelSetIsoValueSlide.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetLastOutputs.h"
 #include "LevelSetNeighborCache.h"
@@ -523,6 +524,10 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
     last.Settings = isopointSettings;
     last.Drift.Reset(last.Isopoints.Points, halfWidth);
+    // The data's gradient over the band, which a slide's LevelSet shift reads (kept: later
+    // slides compute only the samples they bring into the band).
+    lsi::GradientsInBand(*geometry, last.Values, halfWidth, last.Phi,
+      last.BandCandidates(*geometry), &last.NearGradients);
   }
   if (last.QuickCheck)
   {

@@ -456,10 +456,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // From here on the outputs are this run's.
   std::vector<double>& phi = last.Phi;
   // (The band lies among the kept deep inside's near samples, where it was found.)
-  const bool nearKept = last.DeepInside.Group.size() == geometry->NumberOfSamples;
   const std::vector<std::size_t> changedSamples =
     lsi::ShiftLevelSet(*geometry, last.Values, isoValue - last.IsoValue, last.Drift.HalfWidth,
-      largestMove, phi, nearKept ? &last.DeepInside.Near : nullptr, &last.NearGradients);
+      largestMove, phi, last.BandCandidates(*geometry), &last.NearGradients);
   ranks.RefreshGhosts(phi); // (a ghost's stencil may be cut: its owner's value is the serial one)
   // In a periodic box the outputs show the kept cell's points, with a search index of their
   // own, and the particles' arrays are the images' too.
