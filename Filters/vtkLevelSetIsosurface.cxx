@@ -8,6 +8,7 @@
 #include "LevelSetDuplicates.h"
 #include "LevelSetEnclosed.h"
 #include "LevelSetEnclosedDeepInside.h"
+#include "LevelSetEnclosedSurface.h"
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetFloodAcross.h"
@@ -454,8 +455,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.NearGradients.clear();
   const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
   this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, nearby,
-    surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
-    nullptr);
+    surfaceIndex.get(), isopoints, particleOutput, enclosed,
+    keepDeepInside ? &last.DeepInside : nullptr, nullptr);
   this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
@@ -550,9 +551,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
 void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
   const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
-  lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept,
-  const std::vector<std::size_t>* changed)
+  const lsi::PointCloudIndex* surfaceIndex, const lsi::IsopointSet& keptPoints,
+  vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
+  const lsi::EnclosedDeepInside* kept, const std::vector<std::size_t>* changed)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const lsi::LastOutputs& last = this->Internal->Last;
@@ -602,6 +603,18 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.SurfaceNormals = &isopoints.Normals;
   inside.SurfaceIndex = surfaceIndex;
   inside.Ranks = &ranks;
+  // Under MPI, outside a periodic box: every rank's kept points within reach, which together
+  // are the serial run's (LevelSetEnclosedSurface.h).
+  std::vector<double> reachedPoints, reachedNormals;
+  std::unique_ptr<lsi::PointCloudIndex> reachedIndex;
+  if (ranks.Distributed() && !this->Internal->Box.Enabled)
+  {
+    lsi::KeptSurfaceWithinReach(ranks, geometry, phi, keptPoints, reachedPoints, reachedNormals);
+    reachedIndex = lsi::IndexOfPoints(reachedPoints);
+    inside.SurfacePoints = &reachedPoints;
+    inside.SurfaceNormals = &reachedNormals;
+    inside.SurfaceIndex = reachedIndex.get();
+  }
   // Where it applies, the table is summed around the deep inside even for a single run: fewer
   // passes over every particle, and less memory, than the route that supports images and ranks.
   lsi::EnclosedDeepInside single;

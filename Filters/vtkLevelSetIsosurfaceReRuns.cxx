@@ -511,8 +511,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
   this->MakeParticleOutputs(particles, work, *geometry, phi, std::vector<vtkIdType>(),
-    last.Drift.HalfWidth, nearby, nearbyIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
-    &changedSamples);
+    last.Drift.HalfWidth, nearby, nearbyIndex, *shown, particleOutput, enclosed, nullptr,
+    &last.DeepInside, &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (!ranks.All(!this->CheckAbort()))
