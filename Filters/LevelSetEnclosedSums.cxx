@@ -301,16 +301,17 @@ double SurfaceDistance::operator()(std::size_t i) const
   const Neighborhoods& geometry = *this->In.Geometry;
   const double phi = (*this->In.Phi)[i];
   const double s = geometry.RadiusOf(i); // the shell's half width
-  if (!this->Index || std::abs(phi) > 2.0 * s)
+  if (!this->Index || !MeasuresTangentDistance(phi, s))
   {
     return phi;
   }
+  const double reach = TangentReach * s;
   std::uint32_t nearest;
   double d2;
   const double* x = geometry.Position(i);
   // (Searched within the reach used below, and a little more for the rounding of the root: a
   // point beyond it is not used, and the walk prunes sooner.)
-  if (this->Index->NearestWithin(x, 1, 4.0 * s * s * (1.0 + 1e-9), &nearest, &d2) == 0)
+  if (this->Index->NearestWithin(x, 1, reach * reach * (1.0 + 1e-9), &nearest, &d2) == 0)
   {
     return phi;
   }
@@ -320,7 +321,7 @@ double SurfaceDistance::operator()(std::size_t i) const
     height -= (x[d] - this->PointData[3 * nearest + d]) * this->NormalData[3 * nearest + d];
   }
   // The tangent plane only holds near its point; beyond, phi's sign decides.
-  return std::sqrt(d2) < 2.0 * s ? height : phi;
+  return std::sqrt(d2) < reach ? height : phi;
 }
 
 vtkSmartPointer<vtkTable> TableOfComponents(const std::map<double, Sums>& byKey,

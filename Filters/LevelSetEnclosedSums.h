@@ -290,6 +290,15 @@ void AddParticle(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arr
 void AddRecord(const EnclosedInputs& in, const double* record, int components, std::size_t i,
   double signedDistance, Sums& c);
 
+/// How far from the surface, in shell widths (a sample's neighbourhood radius), a sample
+/// measures its distance by the tangent plane of the surface point nearest to it
+/// (SurfaceDistance): a sample whose |phi| is larger takes phi, a point farther is not used.
+constexpr double TangentReach = 2.0;
+inline bool MeasuresTangentDistance(double phi, double shellWidth)
+{
+  return !(std::abs(phi) > TangentReach * shellWidth); // (as before: NaN measures)
+}
+
 /// The signed distance of a sample to the surface, positive inside: near the surface its height
 /// over the tangent plane of the nearest surface point, elsewhere phi. In a periodic box, the
 /// surface points' images within `reach` of the box count too.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetEnclosedSurface.h"
 
+#include "LevelSetEnclosedSums.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -36,11 +38,11 @@ void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geom
   for (std::size_t i = 0; i < geometry.NumberOfSamples && i < phi.size(); ++i)
   {
     const double s = geometry.RadiusOf(i);
-    if (!ranks.Owns(i) || std::abs(phi[i]) > 2.0 * s)
+    if (!ranks.Owns(i) || !enclosed::MeasuresTangentDistance(phi[i], s))
     {
       continue;
     }
-    const double reach = 2.0 * s * (1.0 + 1e-6);
+    const double reach = enclosed::TangentReach * s * (1.0 + 1e-6);
     const double* x = geometry.Position(i);
     for (int d = 0; d < 3; ++d)
     {
