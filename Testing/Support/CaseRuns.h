@@ -150,9 +150,12 @@ inline SurfaceMetrics RunAndMeasureGridRoute(vtkPolyData* particles, const Case&
 /// for each the busy fraction of its fastest run: the process's CPU seconds over the threads
 /// times the wall seconds. On one thread below 1 means the machine gave the process less than a
 /// core (other load, a virtual machine's host); on two it also counts the serial parts.
+/// `each`, if given, sees every run (its thread count, the filter after it, its wall seconds):
+/// for the stages' own times.
 inline std::array<double, 2> SecondsWithOneAndTwoThreads(vtkPolyData* particles,
   const std::function<void(vtkLevelSetIsosurface*)>& configure, int repeats = 1,
-  std::array<double, 2>* busy = nullptr)
+  std::array<double, 2>* busy = nullptr,
+  const std::function<void(int, vtkLevelSetIsosurface*, double)>& each = nullptr)
 {
   // The fastest of `repeats` runs each, 1 and 2 threads taken in turn, so that the machine's
   // noise (up to 10% from run to run here) weighs less on the ratio.
@@ -176,6 +179,10 @@ inline std::array<double, 2> SecondsWithOneAndTwoThreads(vtkPolyData* particles,
       {
         seconds[threads - 1] = wall;
         fraction[threads - 1] = cpu / (threads * wall);
+      }
+      if (each)
+      {
+        each(threads, filter, wall);
       }
     }
   }
