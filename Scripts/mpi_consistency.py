@@ -36,10 +36,15 @@ def run(plugin, data, out, distribute, only):
     def summed(path, types, k):
         return ParticleDensity(Input=read(path, types), NumberOfNeighbors=k)  # noqa: F821
 
-    # name: (source, isovalue as a quantile of the density or a fixed value, scalar)
+    # name: (source, isovalue as a quantile of the density or a fixed value, scalar[, the
+    # filter's other properties])
     cases = [
         ("galaxy-stars", lambda: summed("changa_run581.20000", ["Stars"], 64), 0.9, None),
         ("cube300-dark", lambda: summed("changa_cube300.tbin", ["DarkMatter"], 32), 0.995, None),
+        # The same box as a periodic one (Tipsy's [-1/2, 1/2)^3; the file carries no BoxSize):
+        # what the ranks exchange, across the faces.
+        ("cube300-dark-box", lambda: summed("changa_cube300.tbin", ["DarkMatter"], 32), 0.995,
+         None, {"BoxSize": [1.0, 1.0, 1.0]}),
         ("evrard-glass", lambda: summed("adiabtophat_glass_28721.bin", ["Gas"], 64), 0.3, None),
         ("changa-shocktube", lambda: summed("shocktube.std", ["Gas"], 64), 0.5, None),
         ("gadget4-gassphere", lambda: read(os.path.join("gadget4_gassphere",
@@ -52,7 +57,7 @@ def run(plugin, data, out, distribute, only):
             ResultArrayName="VelocityZ", Function="Velocities_Z"), 0.7, "VelocityZ"),
     ]
     saved = {}
-    for name, make, rule, scalar in [c for c in cases if not only or c[0] in only]:
+    for name, make, rule, scalar, *options in [c for c in cases if not only or c[0] in only]:
         source = make()
         if distribute:
             source = DistributePoints(Input=source)
@@ -68,7 +73,8 @@ def run(plugin, data, out, distribute, only):
         iso = rule if scalar != density else float(np.quantile(values, rule))
         seed = [float(c) for c in x[np.argmax(values)]]
         surface = LevelSetIsosurface(Input=source, Scalars=["POINTS", scalar],  # noqa: F821
-                                     IsoValue=iso, SeedCenter=seed)
+                                     IsoValue=iso, SeedCenter=seed, **(options[0] if options
+                                                                       else {}))
         surface.UpdatePipeline()
         surface.UpdatePropertyInformation()
         splats = servermanager.Fetch(surface, idx=0)
