@@ -258,100 +258,17 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   {
     return true;
   }
-  // Under MPI a full re-run on the same particles (a change of CurvatureWeight, say) keeps the
-  // last run's ghosts, their neighbourhoods and the ranks that trade them.
-  const lsi::Neighborhoods* keptGhosts = ranks.Distributed() ? this->KeptGhosts(input) : nullptr;
-  std::unique_ptr<lsi::Distribution> keptRanks;
-  vtkSmartPointer<vtkPointSet> keptOwned = last.Owned, keptWork = last.Work;
-  std::vector<double> keptValues;
-  if (keptGhosts)
+  lsi::RunParticles run;
+  if (!this->PrepareParticles(input, run) || run.Idle)
   {
-    keptRanks = std::move(this->Internal->LastRanks);
-    keptValues = std::move(last.WorkValues);
+    return run.Idle;
   }
-  last.WorkValues.clear();
-  last.Valid = false; // until this run succeeds
-  last.SurfaceReady = false;
-  this->Internal->LastRanks.reset();
-  this->InputSeconds = this->ParticleOutputSeconds = 0.0;
+  const vtkSmartPointer<vtkPointSet> original = run.Original;
+  const lsi::Neighborhoods* geometry = run.Geometry;
+  const std::vector<double>& values = run.Values;
+  const std::vector<vtkIdType>& mergedId = run.MergedId;
+  input = run.Work; // from here on: the distinct particles, their ghost images and MPI ghosts
   auto inputStart = lsi::Clock::now();
-  std::vector<double> values; // f, in input order
-  if (!this->ValidateInput(input, values))
-  {
-    return false;
-  }
-  this->InputSeconds = SecondsSince(inputStart);
-  vtkSmartPointer<vtkPointSet> original = input;
-  vtkSmartPointer<vtkPointSet> work;
-  const lsi::Neighborhoods* geometry = nullptr;
-  std::vector<vtkIdType> mergedId; // input id -> merged point, when duplicates were merged
-  if (keptGhosts)
-  {
-    // The last run's particles with their ghosts (no periodic box: KeptGhosts), and f over them
-    // as WithGhosts gave it.
-    original = keptOwned;
-    work = keptWork;
-    geometry = keptGhosts;
-    ranks = *keptRanks;
-    ranks.CommunicationSeconds = 0.0;
-    this->Internal->Box = lsi::PeriodicBox();
-    this->Internal->OriginalCount = original->GetNumberOfPoints();
-    this->Internal->ImageOf.clear();
-    this->NeighborSearchSeconds = this->SpatialSortSeconds = this->NearestNeighborSeconds =
-      this->TreeBuildSeconds = 0.0;
-    values = std::move(keptValues);
-    this->GhostFraction = last.GhostFraction;
-  }
-  else
-  {
-    if (ranks.Distributed())
-    {
-      bool idle = false; // a rank left without particles by an input too small to spread
-      original = this->Distribute(input, values, idle);
-      if (idle)
-      {
-        return true;
-      }
-    }
-    work = this->WithPeriodicImages(original, values);
-    geometry = work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
-  }
-  if (!keptGhosts && geometry && geometry->DuplicateSamples > 0)
-  {
-    values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
-    vtkIdType merged = 0;
-    vtkSmartPointer<vtkPointSet> distinct =
-      lsi::MergeDuplicatePoints(original, values, mergedId, merged);
-    vtkWarningMacro(<< merged << " points coincide with another point (for example point "
-                    << geometry->FirstDuplicate
-                    << "): each group was merged into one, its values averaged.");
-    work = this->WithPeriodicImages(distinct, values);
-    geometry = work ? this->FindNeighborhoods(work->GetPoints(), false) : nullptr;
-  }
-  if (!ranks.All(geometry != nullptr))
-  {
-    return false;
-  }
-  if (ranks.Distributed() && !keptGhosts)
-  {
-    work = this->WithGhosts(work, *geometry, values);
-    if (!work)
-    {
-      return false;
-    }
-    geometry = this->FindNeighborhoods(work->GetPoints(), false);
-    if (!ranks.All(geometry != nullptr))
-    {
-      return false;
-    }
-    ranks.Attach(*geometry);
-    double counts[2] = { static_cast<double>(ranks.GhostCount),
-      static_cast<double>(original->GetNumberOfPoints()) };
-    ranks.Sum(counts, 2);
-    this->GhostFraction = counts[0] / counts[1];
-  }
-  input = work; // from here on: the distinct particles, their ghost images and MPI ghosts
-  inputStart = lsi::Clock::now();
   std::unique_ptr<lsi::SPHField> field; // null: the MLS fit of the samples
   if (!ranks.All(this->BuildSPHField(input, *geometry, values, field)))
   {
@@ -502,33 +419,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.FitCentres.clear();
   if (last.SlideReady)
   {
-    lsi::ResizeMapped(last.Values, dataOffsets.size());
-    const double isoValue = this->IsoValue;
-    const bool onField = field != nullptr;
-    vtkSMPTools::For(
-      0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          // On the SPH field, the field at the samples (to rounding): what the flood uses.
-          last.Values[i] = onField ? dataOffsets[i] + isoValue : values[geometry->Order[i]];
-        }
-      });
-    // (Read by the interpolation of a later slide or output change: the same numbers.)
-    int association = -1;
-    vtkDataArray* scalars = this->InputScalars(input, association);
-    last.ValuesAreScalars = !onField && scalars && scalars->GetName() &&
-      lsi::SameValuesInStorageOrder(
-        input->GetPointData()->GetArray(scalars->GetName()), *geometry, last.Values);
-    last.Field = std::move(field);
-    last.IsoValue = this->IsoValue;
-    last.Phi = std::move(phi);
-    last.Isopoints = keepsUncut ? std::move(uncut) : std::move(isopoints);
-    last.Settings = isopointSettings;
-    last.Drift.Reset(last.Isopoints.Points, halfWidth);
-    // The data's gradient over the band, which a slide's LevelSet shift reads (kept: later
-    // slides compute only the samples they bring into the band).
-    lsi::GradientsInBand(*geometry, last.Values, halfWidth, last.Phi,
-      last.BandCandidates(*geometry), &last.NearGradients);
+    this->KeepForSlides(input, *geometry, values, dataOffsets, field, phi,
+      keepsUncut ? uncut : isopoints, isopointSettings, halfWidth);
   }
   if (last.QuickCheck)
   {
@@ -545,6 +437,105 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     ? std::move(allFound.Points)
     : std::vector<double>();
   this->LastRunTime = this->GetMTime();
+  return true;
+}
+
+bool vtkLevelSetIsosurface::PrepareParticles(vtkPointSet* input, lsi::RunParticles& run)
+{
+  lsi::Distribution& ranks = *this->Internal->Ranks;
+  lsi::LastOutputs& last = this->Internal->Last;
+  std::vector<double>& values = run.Values;
+  vtkSmartPointer<vtkPointSet>& original = run.Original;
+  vtkSmartPointer<vtkPointSet>& work = run.Work;
+  const lsi::Neighborhoods*& geometry = run.Geometry;
+  std::vector<vtkIdType>& mergedId = run.MergedId;
+  // Under MPI a full re-run on the same particles (a change of CurvatureWeight, say) keeps the
+  // last run's ghosts, their neighbourhoods and the ranks that trade them.
+  const lsi::Neighborhoods* keptGhosts = ranks.Distributed() ? this->KeptGhosts(input) : nullptr;
+  std::unique_ptr<lsi::Distribution> keptRanks;
+  vtkSmartPointer<vtkPointSet> keptOwned = last.Owned, keptWork = last.Work;
+  std::vector<double> keptValues;
+  if (keptGhosts)
+  {
+    keptRanks = std::move(this->Internal->LastRanks);
+    keptValues = std::move(last.WorkValues);
+  }
+  last.WorkValues.clear();
+  last.Valid = false; // until this run succeeds
+  last.SurfaceReady = false;
+  this->Internal->LastRanks.reset();
+  this->InputSeconds = this->ParticleOutputSeconds = 0.0;
+  auto inputStart = lsi::Clock::now();
+  if (!this->ValidateInput(input, values))
+  {
+    return false;
+  }
+  this->InputSeconds = SecondsSince(inputStart);
+  original = input;
+  if (keptGhosts)
+  {
+    // The last run's particles with their ghosts (no periodic box: KeptGhosts), and f over them
+    // as WithGhosts gave it.
+    original = keptOwned;
+    work = keptWork;
+    geometry = keptGhosts;
+    ranks = *keptRanks;
+    ranks.CommunicationSeconds = 0.0;
+    this->Internal->Box = lsi::PeriodicBox();
+    this->Internal->OriginalCount = original->GetNumberOfPoints();
+    this->Internal->ImageOf.clear();
+    this->NeighborSearchSeconds = this->SpatialSortSeconds = this->NearestNeighborSeconds =
+      this->TreeBuildSeconds = 0.0;
+    values = std::move(keptValues);
+    this->GhostFraction = last.GhostFraction;
+  }
+  else
+  {
+    if (ranks.Distributed())
+    {
+      original = this->Distribute(input, values, run.Idle);
+      if (run.Idle)
+      {
+        return true;
+      }
+    }
+    work = this->WithPeriodicImages(original, values);
+    geometry = work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;
+  }
+  if (!keptGhosts && geometry && geometry->DuplicateSamples > 0)
+  {
+    values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
+    vtkIdType merged = 0;
+    vtkSmartPointer<vtkPointSet> distinct =
+      lsi::MergeDuplicatePoints(original, values, mergedId, merged);
+    vtkWarningMacro(<< merged << " points coincide with another point (for example point "
+                    << geometry->FirstDuplicate
+                    << "): each group was merged into one, its values averaged.");
+    work = this->WithPeriodicImages(distinct, values);
+    geometry = work ? this->FindNeighborhoods(work->GetPoints(), false) : nullptr;
+  }
+  if (!ranks.All(geometry != nullptr))
+  {
+    return false;
+  }
+  if (ranks.Distributed() && !keptGhosts)
+  {
+    work = this->WithGhosts(work, *geometry, values);
+    if (!work)
+    {
+      return false;
+    }
+    geometry = this->FindNeighborhoods(work->GetPoints(), false);
+    if (!ranks.All(geometry != nullptr))
+    {
+      return false;
+    }
+    ranks.Attach(*geometry);
+    double counts[2] = { static_cast<double>(ranks.GhostCount),
+      static_cast<double>(original->GetNumberOfPoints()) };
+    ranks.Sum(counts, 2);
+    this->GhostFraction = counts[0] / counts[1];
+  }
   return true;
 }
 

@@ -87,6 +87,7 @@ struct IsopointSet;
 struct IsopointSettings;
 struct Neighborhoods;
 struct RequestedParameters;
+struct RunParticles;
 class Distribution;
 class SPHField;
 struct SPHFieldRequest;
@@ -606,6 +607,13 @@ private:
   bool SlideAfterIsoValueChange(bool onlyIsoValueChanged, vtkPointSet* input,
     vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
     vtkTable* enclosed);
+  // At the end of a full run that a later isovalue change may slide (LastOutputs::SlideReady):
+  // keeps what the slide needs (the values and phi in storage order, the field, the points
+  // `found` with their fits, the band's gradients), moving field, phi and found there.
+  void KeepForSlides(vtkPointSet* work, const lsi::Neighborhoods& geometry,
+    const std::vector<double>& values, const std::vector<double>& dataOffsets,
+    std::unique_ptr<lsi::SPHField>& field, std::vector<double>& phi, lsi::IsopointSet& found,
+    const lsi::IsopointSettings& settings, double halfWidth);
   // The array the scalars come from (SetInputArrayToProcess(0, ...)), or null.
   vtkDataArray* ScalarsOf(vtkPointSet* input);
   // The array to process (Scalars), or the input's active point scalars when none is named.
@@ -627,6 +635,11 @@ private:
   // stop: an error (reported) or an abort.
   bool Execute(vtkPointSet* input, vtkPolyData* surfaceOutput, vtkPolyData* particleOutput,
     vtkTable* convergence, vtkTable* enclosed);
+  // The particles a full run works on (lsi::RunParticles): checked, spread over the ranks,
+  // duplicates merged, with their periodic images and MPI ghosts and their neighbourhoods (or,
+  // under MPI, the last run's, kept for a re-run on the same particles). False on bad input or
+  // an abort; `run.Idle` on a rank left without particles.
+  bool PrepareParticles(vtkPointSet* input, lsi::RunParticles& run);
   bool ValidateInput(vtkPointSet* input, std::vector<double>& values);
   vtkSmartPointer<vtkPointSet> Distribute(
     vtkPointSet* input, std::vector<double>& values, bool& idle);

@@ -14,6 +14,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkPointSet.h"
 #include "vtkSmartPointer.h"
 
 #include <memory>
@@ -31,6 +32,17 @@ constexpr double EvolutionStage[2] = { 0.45, 0.8 };
 constexpr double IsopointStage[2] = { 0.8, 0.92 };
 constexpr double SurfaceStage[2] = { 0.92, 0.98 };
 constexpr double SplatStage[2] = { 0.98, 1.0 };
+
+// The particles a full run works on (vtkLevelSetIsosurface::PrepareParticles).
+struct RunParticles
+{
+  vtkSmartPointer<vtkPointSet> Original;   // the input's (this rank's share under MPI)
+  vtkSmartPointer<vtkPointSet> Work;       // distinct, with their periodic images and MPI ghosts
+  const Neighborhoods* Geometry = nullptr; // Work's
+  std::vector<double> Values;              // f over Work's points, in their order
+  std::vector<vtkIdType> MergedId;         // input id -> merged point, when duplicates were merged
+  bool Idle = false; // under MPI, a rank left without particles by an input too small to spread
+};
 } // namespace lsi
 
 struct vtkLevelSetIsosurface::Internals

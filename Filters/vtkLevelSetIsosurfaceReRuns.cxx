@@ -10,11 +10,14 @@
 #include "LevelSetFloodAcross.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsoValueSlide.h"
+#include "LevelSetIsopoints.h"
 #include "LevelSetPeriodicImages.h"
 #include "LevelSetSeedSpheres.h"
+#include "LevelSetSurfaceOutput.h"
 #include "LevelSetTiming.h"
 
 #include "vtkDataArray.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
@@ -207,6 +210,41 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
   const lsi::Neighborhoods* geometry = this->Internal->Cache.Find(points, this->NumberOfNeighbors);
   return geometry && (!withFlood || geometry->NumberOfSamples == last.Inside.size()) ? geometry
                                                                                      : nullptr;
+}
+
+void vtkLevelSetIsosurface::KeepForSlides(vtkPointSet* work, const lsi::Neighborhoods& geometry,
+  const std::vector<double>& values, const std::vector<double>& dataOffsets,
+  std::unique_ptr<lsi::SPHField>& field, std::vector<double>& phi, lsi::IsopointSet& found,
+  const lsi::IsopointSettings& settings, double halfWidth)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  lsi::ResizeMapped(last.Values, dataOffsets.size());
+  const double isoValue = this->IsoValue;
+  const bool onField = field != nullptr;
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        // On the SPH field, the field at the samples (to rounding): what the flood uses.
+        last.Values[i] = onField ? dataOffsets[i] + isoValue : values[geometry.Order[i]];
+      }
+    });
+  // (Read by the interpolation of a later slide or output change: the same numbers.)
+  int association = -1;
+  vtkDataArray* scalars = this->InputScalars(work, association);
+  last.ValuesAreScalars = !onField && scalars && scalars->GetName() &&
+    lsi::SameValuesInStorageOrder(
+      work->GetPointData()->GetArray(scalars->GetName()), geometry, last.Values);
+  last.Field = std::move(field);
+  last.IsoValue = this->IsoValue;
+  last.Phi = std::move(phi);
+  last.Isopoints = std::move(found);
+  last.Settings = settings;
+  last.Drift.Reset(last.Isopoints.Points, halfWidth);
+  // The data's gradient over the band, which a slide's LevelSet shift reads (kept: later
+  // slides compute only the samples they bring into the band).
+  lsi::GradientsInBand(
+    geometry, last.Values, halfWidth, last.Phi, last.BandCandidates(geometry), &last.NearGradients);
 }
 
 bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
