@@ -135,6 +135,135 @@ void CentresInPeriodicBox(const EnclosedInputs& in, vtkIdType n, const SampleOf&
     }
   }
 }
+
+// The components of the touching samples, joined through the neighbour graph (and, in a
+// periodic box, through the images of one particle, which share its slot): each slot's
+// component root, its lowest slot (a slot alone is its own).
+std::vector<vtkIdType> SlotComponents(const EnclosedInputs& in, const std::vector<char>& touching,
+  const std::vector<vtkIdType>& slot, vtkIdType slots)
+{
+  const Neighborhoods& geometry = *in.Geometry;
+  const vtkIdType sampleCount = static_cast<vtkIdType>(geometry.NumberOfSamples);
+  auto touches = [&](std::size_t i) { return touching[i] != 0; };
+  // Over the samples first, linked towards lower storage indices (neighbours are near in memory
+  // there, where slots are in input order); with periodic images, each sample is also linked to
+  // the first touching one of its slot. Serial: joined from several
+  // threads, these links measured no faster.
+  Links links(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (!touches(i) || geometry.IsTruncated(i))
+    {
+      continue;
+    }
+    const std::uint32_t* ids = geometry.NeighborsOf(i);
+    for (int m = 1; m < geometry.Stride; ++m)
+    {
+      if (touches(ids[m]))
+      {
+        links.Join(static_cast<std::uint32_t>(i), ids[m]);
+      }
+    }
+  }
+  if (in.Box.Enabled)
+  {
+    std::vector<std::int64_t> firstOfSlot(static_cast<std::size_t>(slots), -1);
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      if (touches(i))
+      {
+        std::int64_t& first = firstOfSlot[static_cast<std::size_t>(slot[i])];
+        first < 0 ? void(first = static_cast<std::int64_t>(i))
+                  : links.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(first));
+      }
+    }
+  }
+  // Each component is named by its lowest slot, as a union-find over the slots names it: its
+  // root sample (the lowest index, so met first below) takes the lowest slot of its members.
+  UninitializedVector<vtkIdType> lowest(geometry.NumberOfSamples);
+  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+  {
+    if (touches(i))
+    {
+      const std::uint32_t root = links.Find(static_cast<std::uint32_t>(i));
+      links.Parent[i].store(root, std::memory_order_relaxed); // flattened: read in parallel below
+      lowest[root] = root == i ? slot[i] : std::min(lowest[root], slot[i]);
+    }
+  }
+  // Every slot's root: its own slot, or its component's lowest.
+  std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
+  vtkSMPTools::For(0, slots, [&](vtkIdType begin, vtkIdType end) {
+    std::iota(parent.begin() + begin, parent.begin() + end, begin);
+  });
+  auto nameSlot = [&](std::size_t i) {
+    if (touches(i))
+    {
+      parent[static_cast<std::size_t>(slot[i])] =
+        lowest[links.Parent[i].load(std::memory_order_relaxed)];
+    }
+  };
+  if (in.Box.Enabled) // images share slots: in turn (they write the same value)
+  {
+    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
+    {
+      nameSlot(i);
+    }
+  }
+  else
+  {
+    vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        nameSlot(static_cast<std::size_t>(i));
+      }
+    });
+  }
+  return parent;
+}
+
+// The touching particles' sums, one Sums per component (few) found through its root
+// (`rootOfSums`). The particles are summed in fixed chunks in parallel, each chunk's parts then
+// added in chunk order: the same sums on any number of threads.
+void SumsByComponent(const EnclosedInputs& in, const std::vector<vtkDataArray*>& arrays,
+  int components, const UninitializedVector<std::size_t>& sampleOf,
+  const std::vector<char>& touching, const UninitializedVector<double>& distances,
+  const std::vector<vtkIdType>& parent, std::vector<Sums>& sums, std::vector<vtkIdType>& rootOfSums)
+{
+  const vtkIdType n = in.ParticleCount;
+  constexpr vtkIdType ChunkSize = 32768;
+  const vtkIdType chunks = (n + ChunkSize - 1) / ChunkSize;
+  std::vector<PartsByGroup<vtkIdType>> chunkSums(static_cast<std::size_t>(chunks));
+  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType firstChunk, vtkIdType lastChunk) {
+    std::vector<double> tuple;
+    for (vtkIdType chunk = firstChunk; chunk < lastChunk; ++chunk)
+    {
+      PartsByGroup<vtkIdType>& out = chunkSums[static_cast<std::size_t>(chunk)]; // by root
+      const vtkIdType end = std::min(n, (chunk + 1) * ChunkSize);
+      for (vtkIdType p = chunk * ChunkSize; p < end; ++p)
+      {
+        const std::size_t i = sampleOf[p];
+        if (touching[i] != 0)
+        {
+          AddParticle(in, arrays, components, p, i, distances[i], tuple, out.Of(parent[p]));
+        }
+      }
+    }
+  });
+  std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
+  for (const PartsByGroup<vtkIdType>& chunk : chunkSums)
+  {
+    for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
+    {
+      const auto found = sumsOfRoot.emplace(chunk.Groups[k], sums.size());
+      if (found.second)
+      {
+        sums.emplace_back();
+        rootOfSums.push_back(chunk.Groups[k]);
+      }
+      sums[found.first->second].Add(chunk.Parts[k]);
+    }
+  }
+}
 } // namespace
 
 vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
@@ -222,79 +351,7 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     }
   }
   const std::vector<vtkIdType>& slot = renumbered.empty() ? in.OriginalIds : renumbered;
-  // The components over the samples first, linked towards lower storage indices (neighbours
-  // are near in memory there, where slots are in input order); with periodic images, each
-  // sample is also linked to the first touching one of its slot. Serial: joined from several
-  // threads, these links measured no faster.
-  Links links(geometry.NumberOfSamples);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (!touches(i) || geometry.IsTruncated(i))
-    {
-      continue;
-    }
-    const std::uint32_t* ids = geometry.NeighborsOf(i);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      if (touches(ids[m]))
-      {
-        links.Join(static_cast<std::uint32_t>(i), ids[m]);
-      }
-    }
-  }
-  if (in.Box.Enabled)
-  {
-    std::vector<std::int64_t> firstOfSlot(static_cast<std::size_t>(slots), -1);
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      if (touches(i))
-      {
-        std::int64_t& first = firstOfSlot[static_cast<std::size_t>(slot[i])];
-        first < 0 ? void(first = static_cast<std::int64_t>(i))
-                  : links.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(first));
-      }
-    }
-  }
-  // Each component is named by its lowest slot, as a union-find over the slots names it: its
-  // root sample (the lowest index, so met first below) takes the lowest slot of its members.
-  UninitializedVector<vtkIdType> lowest(geometry.NumberOfSamples);
-  for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-  {
-    if (touches(i))
-    {
-      const std::uint32_t root = links.Find(static_cast<std::uint32_t>(i));
-      links.Parent[i].store(root, std::memory_order_relaxed); // flattened: read in parallel below
-      lowest[root] = root == i ? slot[i] : std::min(lowest[root], slot[i]);
-    }
-  }
-  // Every slot's root: its own slot, or its component's lowest.
-  std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
-  vtkSMPTools::For(0, slots, [&](vtkIdType begin, vtkIdType end) {
-    std::iota(parent.begin() + begin, parent.begin() + end, begin);
-  });
-  auto nameSlot = [&](std::size_t i) {
-    if (touches(i))
-    {
-      parent[static_cast<std::size_t>(slot[i])] =
-        lowest[links.Parent[i].load(std::memory_order_relaxed)];
-    }
-  };
-  if (in.Box.Enabled) // images share slots: in turn (they write the same value)
-  {
-    for (std::size_t i = 0; i < geometry.NumberOfSamples; ++i)
-    {
-      nameSlot(i);
-    }
-  }
-  else
-  {
-    vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        nameSlot(static_cast<std::size_t>(i));
-      }
-    });
-  }
+  std::vector<vtkIdType> parent = SlotComponents(in, touching, slot, slots); // (Root shortens)
 
   // The arrays to average: every numeric point array, all components.
   int components = 0;
@@ -317,44 +374,9 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
       }
     });
 
-  // One Sums per component that touches the surface (few), found through its root. The
-  // particles are summed in fixed chunks in parallel, each chunk's parts then added in chunk
-  // order: the same sums on any number of threads.
-  constexpr vtkIdType ChunkSize = 32768;
-  const vtkIdType chunks = (n + ChunkSize - 1) / ChunkSize;
-  std::vector<PartsByGroup<vtkIdType>> chunkSums(static_cast<std::size_t>(chunks));
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType firstChunk, vtkIdType lastChunk) {
-    std::vector<double> tuple;
-    for (vtkIdType chunk = firstChunk; chunk < lastChunk; ++chunk)
-    {
-      PartsByGroup<vtkIdType>& out = chunkSums[static_cast<std::size_t>(chunk)]; // by root
-      const vtkIdType end = std::min(n, (chunk + 1) * ChunkSize);
-      for (vtkIdType p = chunk * ChunkSize; p < end; ++p)
-      {
-        const std::size_t i = sampleOf[p];
-        if (touches(i))
-        {
-          AddParticle(in, arrays, components, p, i, distances[i], tuple, out.Of(parent[p]));
-        }
-      }
-    }
-  });
   std::vector<Sums> sums;
   std::vector<vtkIdType> rootOfSums;
-  std::unordered_map<vtkIdType, std::size_t> sumsOfRoot;
-  for (const PartsByGroup<vtkIdType>& chunk : chunkSums)
-  {
-    for (std::size_t k = 0; k < chunk.Parts.size(); ++k)
-    {
-      const auto found = sumsOfRoot.emplace(chunk.Groups[k], sums.size());
-      if (found.second)
-      {
-        sums.emplace_back();
-        rootOfSums.push_back(chunk.Groups[k]);
-      }
-      sums[found.first->second].Add(chunk.Parts[k]);
-    }
-  }
+  SumsByComponent(in, arrays, components, sampleOf, touching, distances, parent, sums, rootOfSums);
 
   // Each component's key: its root here (the rank in the high bits under MPI). Under MPI the
   // components that meet at a ghost are one: each touching ghost links its root here to its
