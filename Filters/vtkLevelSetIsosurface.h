@@ -91,6 +91,7 @@ struct RunParticles;
 class Distribution;
 class SPHField;
 struct SPHFieldRequest;
+struct SlideResult;
 struct SurfaceScale;
 }
 
@@ -607,6 +608,18 @@ private:
   bool SlideAfterIsoValueChange(bool onlyIsoValueChanged, vtkPointSet* input,
     vtkPolyData* surfaceOutput, vtkPolyData* particleOutput, vtkTable* convergence,
     vtkTable* enclosed);
+  // A quick isovalue change's slide of the last run's points (LastOutputs::Isopoints, in place)
+  // onto the new level, over the data's MLS fit or the SPH field (whose free boundary's points
+  // are shot anew); `aborted` if the user stopped it.
+  lsi::SlideResult SlideLastPoints(const lsi::Neighborhoods& geometry,
+    const std::vector<double>& dataOffsets, const std::vector<char>& inside, bool& aborted);
+  // Whether the slid points stand for the method's surface, decided with the other ranks: the
+  // slide reached the level, every sample that changed sides lies near a slid point, and no
+  // sample beyond the band comes within a shell width (LevelSetIsoValueSlide.h). Gives the
+  // points this rank keeps under MPI and the largest move of any rank's kept points.
+  bool AcceptSlide(const lsi::Neighborhoods& geometry, const std::vector<char>& inside,
+    const lsi::SlideResult& slid, const lsi::PointCloudIndex* surfaceIndex,
+    std::vector<char>& keptPoints, double& largestMove);
   // At the end of a full run that a later isovalue change may slide (LastOutputs::SlideReady):
   // keeps what the slide needs (the values and phi in storage order, the field, the points
   // `found` with their fits, the band's gradients), moving field, phi and found there.

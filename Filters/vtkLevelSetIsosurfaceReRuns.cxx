@@ -212,6 +212,104 @@ const lsi::Neighborhoods* vtkLevelSetIsosurface::LastGeometry(vtkPointSet* input
                                                                                      : nullptr;
 }
 
+lsi::SlideResult vtkLevelSetIsosurface::SlideLastPoints(const lsi::Neighborhoods& geometry,
+  const std::vector<double>& dataOffsets, const std::vector<char>& inside, bool& aborted)
+{
+  lsi::LastOutputs& last = this->Internal->Last;
+  const lsi::IsopointSettings& settings = last.Settings;
+  const double isoValue = this->IsoValue;
+  lsi::SlideSettings slide;
+  slide.MaximumMove = settings.DataMaximumMove;
+  slide.FarMove = FarStrides * settings.DataMaximumMove;
+  slide.Drift = &last.Drift;
+  slide.Iterations = settings.DataIterations;
+  slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
+  slide.Quadratic = settings.DataFitOrder == 2;
+  slide.ValueChange = isoValue - last.IsoValue;
+  lsi::IsopointSet& isopoints = last.Isopoints;
+  std::vector<double>& centres = last.FitCentres;
+  lsi::SlideResult slid;
+  if (isopoints.Points.empty())
+  {
+    // (Under MPI a rank may hold no surface: nothing to slide. Surface that would appear here
+    // leaves changed samples far from any point: the flood's check below refuses.)
+    slid.Accepted = true;
+  }
+  else if (last.Field)
+  {
+    // The free boundary's points (last in the set) are shot anew from the new inside's edge of
+    // the cloud, as the method does; the others slide.
+    const std::size_t kept = isopoints.Points.size() - 3 * isopoints.FreeBoundaryCount;
+    isopoints.Points.resize(kept);
+    isopoints.Normals.resize(kept);
+    isopoints.FreeBoundaryCount = 0;
+    slid = lsi::SlideIsopointsOnSPHField(geometry, *last.Field, isoValue, inside, last.Inside,
+      settings, slide.Drift, isopoints, this->Stage(lsi::IsopointStage));
+    aborted = slid.Accepted &&
+      !lsi::AddFreeBoundaryPoints(geometry, *last.Field, isoValue, inside, dataOffsets, settings,
+        isopoints, this->Stage(lsi::IsopointStage));
+  }
+  else
+  {
+    slid = lsi::SlideIsopoints(
+      geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
+  }
+  return slid;
+}
+
+bool vtkLevelSetIsosurface::AcceptSlide(const lsi::Neighborhoods& geometry,
+  const std::vector<char>& inside, const lsi::SlideResult& slid,
+  const lsi::PointCloudIndex* surfaceIndex, std::vector<char>& keptPoints, double& largestMove)
+{
+  const lsi::LastOutputs& last = this->Internal->Last;
+  const lsi::Distribution& ranks = *this->Internal->Ranks;
+  const lsi::IsopointSettings& settings = last.Settings;
+  const lsi::IsopointSet& isopoints = last.Isopoints;
+  const std::size_t pointCount = isopoints.Points.size() / 3;
+  std::size_t changed = 0;
+  // Under MPI only the owned samples count (each rank checks its own), and the largest move is
+  // the ranks' largest.
+  const vtkIdType counted = this->Internal->Box.Enabled
+    ? this->Internal->OriginalCount
+    : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
+  // The points the ranks keep (under MPI each keeps those nearest its own samples: together the
+  // serial run's points; its others, towards its halo's edge, may have slid on cut
+  // neighbourhoods): the LevelSet shift is capped by their largest move, and only they are
+  // checked against the samples beyond the band.
+  double keptLargestMove = slid.LargestMove();
+  if (ranks.Distributed())
+  {
+    keptLargestMove = 0.0;
+    keptPoints.resize(pointCount);
+    for (std::size_t i = 0; i < pointCount; ++i)
+    {
+      keptPoints[i] = lsi::OwnsNearestSample(geometry, ranks, &isopoints.Points[3 * i]);
+      if (keptPoints[i])
+      {
+        keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
+      }
+    }
+  }
+  largestMove = ranks.Max(keptLargestMove);
+  // (A rank without points, whose index is null, accepts only if none of its samples changed.)
+  const bool changesNear = slid.Accepted &&
+    lsi::FloodChangesNearPoints(geometry, last.Inside, inside, surfaceIndex, slid.Moves,
+      2.0 * settings.CellSize, changed, counted, last.Field.get());
+  // (The surface lies within about half its points' spacing of them: one cell is the margin.)
+  const bool clampedClear = changesNear &&
+    lsi::ClampedSamplesClear(geometry, last.Phi, last.Drift.HalfWidth, isopoints.Points,
+      slid.NearBandEdge, ranks.Distributed() ? &keptPoints : nullptr, settings.CellSize);
+  const bool accepted = ranks.All(clampedClear);
+  vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
+                << (!slid.Accepted    ? ": " + slid.Refusal
+                       : !changesNear ? std::string(": samples changed sides away from the points")
+                       : !clampedClear
+                       ? std::string(": a sample beyond the band would lie within a shell width")
+                       : std::string())
+                << "; largest move " << largestMove << ", " << changed << " samples changed sides");
+  return accepted;
+}
+
 void vtkLevelSetIsosurface::KeepForSlides(vtkPointSet* work, const lsi::Neighborhoods& geometry,
   const std::vector<double>& values, const std::vector<double>& dataOffsets,
   std::unique_ptr<lsi::SPHField>& field, std::vector<double>& phi, lsi::IsopointSet& found,
@@ -393,49 +491,13 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   }
   const double floodSeconds = lsi::SecondsSince(start);
   start = lsi::Clock::now();
-  const lsi::IsopointSettings& settings = last.Settings;
-  lsi::SlideSettings slide;
-  slide.MaximumMove = settings.DataMaximumMove;
-  slide.FarMove = FarStrides * settings.DataMaximumMove;
-  slide.Drift = &last.Drift;
-  slide.Iterations = settings.DataIterations;
-  slide.Tolerance = lsi::DataConvergedStep * settings.DataMaximumMove;
-  slide.Quadratic = settings.DataFitOrder == 2;
-  slide.ValueChange = isoValue - last.IsoValue;
   lsi::IsopointSet& isopoints = last.Isopoints;
-  std::vector<double>& centres = last.FitCentres;
-  lsi::SlideResult slid;
   bool aborted = false;
-  if (isopoints.Points.empty())
-  {
-    // (Under MPI a rank may hold no surface: nothing to slide. Surface that would appear here
-    // leaves changed samples far from any point: the flood's check below refuses.)
-    slid.Accepted = true;
-  }
-  else if (last.Field)
-  {
-    // The free boundary's points (last in the set) are shot anew from the new inside's edge of
-    // the cloud, as the method does; the others slide.
-    const std::size_t kept = isopoints.Points.size() - 3 * isopoints.FreeBoundaryCount;
-    isopoints.Points.resize(kept);
-    isopoints.Normals.resize(kept);
-    isopoints.FreeBoundaryCount = 0;
-    slid = lsi::SlideIsopointsOnSPHField(*geometry, *last.Field, isoValue, inside, last.Inside,
-      settings, slide.Drift, isopoints, this->Stage(lsi::IsopointStage));
-    aborted = slid.Accepted &&
-      !lsi::AddFreeBoundaryPoints(*geometry, *last.Field, isoValue, inside, dataOffsets, settings,
-        isopoints, this->Stage(lsi::IsopointStage));
-  }
-  else
-  {
-    slid = lsi::SlideIsopoints(
-      *geometry, dataOffsets, inside, slide, isopoints, centres, this->Stage(lsi::IsopointStage));
-  }
+  lsi::SlideResult slid = this->SlideLastPoints(*geometry, dataOffsets, inside, aborted);
   if (!ranks.All(!aborted))
   {
     return false;
   }
-  std::size_t changed = 0;
   // A sample that changed sides lies between the old and the new level: within the way there
   // and the points' spacing (two cells) of a slid point. (The free boundary's points, shot
   // anew along the cloud's edge, count as moved the most, and as away from the band's edge.)
@@ -446,48 +508,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
     slid.Accepted ? lsi::IndexOfPoints(isopoints.Points) : nullptr;
-  // Under MPI only the owned samples count (each rank checks its own), and the largest move is
-  // the ranks' largest.
-  const vtkIdType counted = this->Internal->Box.Enabled
-    ? this->Internal->OriginalCount
-    : (ranks.Distributed() ? ranks.OwnedCount : VTK_ID_MAX);
-  // The points the ranks keep (under MPI each keeps those nearest its own samples: together the
-  // serial run's points; its others, towards its halo's edge, may have slid on cut
-  // neighbourhoods): the LevelSet shift is capped by their largest move, and only they are
-  // checked against the samples beyond the band.
   std::vector<char> keptPoints;
-  double keptLargestMove = slid.LargestMove();
-  if (ranks.Distributed())
-  {
-    keptLargestMove = 0.0;
-    keptPoints.resize(pointCount);
-    for (std::size_t i = 0; i < pointCount; ++i)
-    {
-      keptPoints[i] = lsi::OwnsNearestSample(*geometry, ranks, &isopoints.Points[3 * i]);
-      if (keptPoints[i])
-      {
-        keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
-      }
-    }
-  }
-  const double largestMove = ranks.Max(keptLargestMove);
-  // (A rank without points, whose index is null, accepts only if none of its samples changed.)
-  const bool changesNear = slid.Accepted &&
-    lsi::FloodChangesNearPoints(*geometry, last.Inside, inside, surfaceIndex.get(), slid.Moves,
-      2.0 * settings.CellSize, changed, counted, last.Field.get());
-  // (The surface lies within about half its points' spacing of them: one cell is the margin.)
-  const bool clampedClear = changesNear &&
-    lsi::ClampedSamplesClear(*geometry, last.Phi, last.Drift.HalfWidth, isopoints.Points,
-      slid.NearBandEdge, ranks.Distributed() ? &keptPoints : nullptr, settings.CellSize);
-  const bool accepted = ranks.All(clampedClear);
-  vtkDebugMacro(<< "quick isovalue change: " << (accepted ? "accepted" : "refused")
-                << (!slid.Accepted    ? ": " + slid.Refusal
-                       : !changesNear ? std::string(": samples changed sides away from the points")
-                       : !clampedClear
-                       ? std::string(": a sample beyond the band would lie within a shell width")
-                       : std::string())
-                << "; largest move " << largestMove << ", " << changed << " samples changed sides");
-  if (!accepted)
+  double largestMove = 0.0;
+  if (!this->AcceptSlide(*geometry, inside, slid, surfaceIndex.get(), keptPoints, largestMove))
   {
     return false;
   }
