@@ -20,11 +20,32 @@ bool InBox(const double* box, const double* x)
   return x[0] >= box[0] && x[0] <= box[1] && x[1] >= box[2] && x[1] <= box[3] && x[2] >= box[4] &&
     x[2] <= box[5];
 }
+
+// Whether x, or in a periodic box one of its images (x shifted by -1, 0 or +1 box on each
+// axis), lies in `box`: a rank's reach extends past the faces, over its particles' images.
+bool ImageInBox(const double* box, const double* x, const PeriodicBox& periodic)
+{
+  if (!periodic.Enabled)
+  {
+    return InBox(box, x);
+  }
+  for (int s = 0; s < 27; ++s)
+  {
+    const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
+    const double y[3] = { x[0] + shift[0] * periodic.Size[0], x[1] + shift[1] * periodic.Size[1],
+      x[2] + shift[2] * periodic.Size[2] };
+    if (InBox(box, y))
+    {
+      return true;
+    }
+  }
+  return false;
+}
 } // namespace
 
 void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const IsopointSet& kept, std::vector<double>& points,
-  std::vector<double>& normals)
+  const std::vector<double>& phi, const IsopointSet& kept, const PeriodicBox& periodic,
+  std::vector<double>& points, std::vector<double>& normals)
 {
   points = kept.Points;
   normals = kept.Normals;
@@ -33,7 +54,8 @@ void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geom
     return;
   }
   // This rank's reach: the box of x +- 2 s over its owned samples that measure a distance
-  // (SurfaceDistance's rule), a little wider against rounding.
+  // (SurfaceDistance's rule), a little wider against rounding. (In a periodic box the samples
+  // include the particles' images past the faces, which the rank owns with them.)
   std::vector<double> boxes = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
   for (std::size_t i = 0; i < geometry.NumberOfSamples && i < phi.size(); ++i)
   {
@@ -60,7 +82,7 @@ void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geom
     for (int r = 0; r < ranks.Size; ++r)
     {
       if (r != ranks.Rank && 6 * static_cast<std::size_t>(r) + 5 < boxes.size() &&
-        InBox(&boxes[6 * r], x))
+        ImageInBox(&boxes[6 * r], x, periodic))
       {
         records.push_back(ranks.Rank);
         records.insert(records.end(), x, x + 3);
@@ -75,7 +97,7 @@ void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geom
   for (std::size_t k = 0; mine && k + RecordSize <= records.size(); k += RecordSize)
   {
     const double* record = &records[k];
-    if (static_cast<int>(record[0]) != ranks.Rank && InBox(mine, record + 1))
+    if (static_cast<int>(record[0]) != ranks.Rank && ImageInBox(mine, record + 1, periodic))
     {
       points.insert(points.end(), record + 1, record + 4);
       normals.insert(normals.end(), record + 4, record + 7);

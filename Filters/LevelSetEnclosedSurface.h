@@ -14,6 +14,7 @@
 #include "LevelSetCommunicator.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborhoods.h"
+#include "LevelSetPeriodicImages.h"
 
 #include <vector>
 
@@ -23,11 +24,11 @@ namespace lsi
 /// Every rank's kept points (`kept` here: the points this rank keeps) within two shell widths
 /// (neighbourhood radii) of this rank's owned samples that measure their distance to the
 /// surface (|phi| at most two shell widths), with their normals: this rank's first, then the
-/// others' in rank order. Outside a periodic box (whose images the Enclosed table makes from
-/// the points themselves).
+/// others' in rank order. In a periodic box (`periodic`) a point counts when one of its images
+/// is within reach; the points are given in the cell (the Enclosed table makes their images).
 void KeptSurfaceWithinReach(const Communicator& ranks, const Neighborhoods& geometry,
-  const std::vector<double>& phi, const IsopointSet& kept, std::vector<double>& points,
-  std::vector<double>& normals);
+  const std::vector<double>& phi, const IsopointSet& kept, const PeriodicBox& periodic,
+  std::vector<double>& points, std::vector<double>& normals);
 
 } // namespace lsi
 

@@ -594,13 +594,14 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.SurfaceNormals = &isopoints.Normals;
   inside.SurfaceIndex = surfaceIndex;
   inside.Ranks = &ranks;
-  // Under MPI, outside a periodic box: every rank's kept points within reach, which together
-  // are the serial run's (LevelSetEnclosedSurface.h).
+  // Under MPI: every rank's kept points within reach, which together are the serial run's
+  // (LevelSetEnclosedSurface.h; in a periodic box, in the cell: SurfaceDistance adds images).
   std::vector<double> reachedPoints, reachedNormals;
   std::unique_ptr<lsi::PointCloudIndex> reachedIndex;
-  if (ranks.Distributed() && !this->Internal->Box.Enabled)
+  if (ranks.Distributed())
   {
-    lsi::KeptSurfaceWithinReach(ranks, geometry, phi, keptPoints, reachedPoints, reachedNormals);
+    lsi::KeptSurfaceWithinReach(
+      ranks, geometry, phi, keptPoints, this->Internal->Box, reachedPoints, reachedNormals);
     reachedIndex = lsi::IndexOfPoints(reachedPoints);
     inside.SurfacePoints = &reachedPoints;
     inside.SurfaceNormals = &reachedNormals;

@@ -708,10 +708,9 @@ private:
     const std::vector<double>* scalarsInStorageOrder = nullptr);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
-  // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to
-  // (under MPI in a periodic box every point the rank found, not only those it keeps; under MPI
-  // outside one, every rank's kept points within reach: KeptSurfaceWithinReach, from the points
-  // this rank keeps, `keptPoints`).
+  // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to (in
+  // one process); under MPI every rank's kept points within reach instead
+  // (KeptSurfaceWithinReach, from the points this rank keeps, `keptPoints`).
   // The table's deep inside is kept for quick re-runs (`keep`), or taken from the last run's.
   // `changed`, if given: the only samples whose phi changed since the last run's particles
   // output (its LevelSet array is then copied and updated there).

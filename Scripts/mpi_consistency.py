@@ -4,8 +4,8 @@
 
   [mpiexec -n N] pvbatch Scripts/mpi_consistency.py run PLUGIN DATA_DIR OUT.npz [distribute]
                   [only=NAME,...]
-      runs the filter on each snapshot (or the named ones: only=galaxy-stars, say, whose file
-      Data/ChaNGa holds too) (as read: each rank reads its share; with `distribute`,
+      runs the filter on each snapshot (or the named ones: only=galaxy-stars,galaxy-stars-box,
+      say, whose file Data/ChaNGa holds too) (as read: each rank reads its share; with `distribute`,
       after ParaView's Distribute Points, whose float coordinates differ from the file's) and
       saves, gathered on rank 0, every output the user
       sees: the particles' densities (Particle Density's where the file has none), the surface
@@ -40,6 +40,10 @@ def run(plugin, data, out, distribute, only):
     # filter's other properties])
     cases = [
         ("galaxy-stars", lambda: summed("changa_run581.20000", ["Stars"], 64), 0.9, None),
+        # The same in a periodic box far larger than it (Tipsy's [-1, 1)^3): the Enclosed table's
+        # exchange of surface points in a box (its outer stars' shells reach past a rank's).
+        ("galaxy-stars-box", lambda: summed("changa_run581.20000", ["Stars"], 64), 0.9, None,
+         {"BoxSize": [2.0, 2.0, 2.0]}),
         ("cube300-dark", lambda: summed("changa_cube300.tbin", ["DarkMatter"], 32), 0.995, None),
         # The same box as a periodic one (Tipsy's [-1/2, 1/2)^3; the file carries no BoxSize):
         # what the ranks exchange, across the faces.
