@@ -29,17 +29,11 @@ bool ImageInBox(const double* box, const double* x, const PeriodicBox& periodic)
   {
     return InBox(box, x);
   }
-  for (int s = 0; s < 27; ++s)
-  {
-    const int shift[3] = { s % 3 - 1, (s / 3) % 3 - 1, s / 9 - 1 };
-    const double y[3] = { x[0] + shift[0] * periodic.Size[0], x[1] + shift[1] * periodic.Size[1],
-      x[2] + shift[2] * periodic.Size[2] };
-    if (InBox(box, y))
-    {
-      return true;
-    }
-  }
-  return false;
+  const double everywhere[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }; // all 27 images
+  bool found = false;
+  ForEachPeriodicImage(
+    x, periodic, everywhere, true, [&](const double* y) { found = found || InBox(box, y); });
+  return found;
 }
 } // namespace
 
