@@ -342,10 +342,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     uncut = isopoints;
   }
   this->KeepPeriodicCell(isopoints);
-  // Under MPI a point near the cut has neighbours that another rank keeps, and a particle near
-  // it may lie nearest to one: the splat radii and the particles' distances to the surface (the
-  // Enclosed table's) come from every point this rank found (in the periodic cell), as in a
-  // serial run.
+  // Under MPI a point near the cut has neighbours that another rank keeps: the splat radii come
+  // from every point this rank found (in the periodic cell), as in a serial run. (The Enclosed
+  // table's distances come from every rank's kept points: MakeParticleOutputs.)
   lsi::IsopointSet allFound;
   if (ranks.Distributed())
   {
@@ -356,7 +355,8 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   this->WarnIfSuspect(*geometry, dataOffsets, phi, isopoints);
   this->WarnIfRegionCut(original, *geometry, field.get(), isopoints.Points);
   const lsi::IsopointSet& nearby = ranks.Distributed() ? allFound : isopoints;
-  // One search index over those points, for the splat radii and the Enclosed table.
+  // One search index over those points, for the splat radii and (in one process) the Enclosed
+  // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(nearby.Points);
   ok = this->MakeSurfaceOutput(
     input, *geometry, isopoints, nearby.Points, field.get(), surfaceIndex.get(), surfaceOutput);
@@ -371,9 +371,9 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.DeepInside = lsi::EnclosedDeepInside();
   last.NearGradients.clear();
   const bool keepDeepInside = this->QuickIsoValueChanges && last.QuickCheck;
-  this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, nearby,
-    surfaceIndex.get(), isopoints, particleOutput, enclosed,
-    keepDeepInside ? &last.DeepInside : nullptr, nullptr);
+  this->MakeParticleOutputs(original, input, *geometry, phi, mergedId, halfWidth, isopoints,
+    surfaceIndex.get(), particleOutput, enclosed, keepDeepInside ? &last.DeepInside : nullptr,
+    nullptr);
   this->ParticleOutputSeconds = SecondsSince(particleStart);
   if (this->ReportsForAll()) // tables on rank 0 only, so that gathering them shows them once
   {
@@ -541,10 +541,10 @@ bool vtkLevelSetIsosurface::PrepareParticles(vtkPointSet* input, lsi::RunParticl
 
 void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
-  const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-  const lsi::PointCloudIndex* surfaceIndex, const lsi::IsopointSet& keptPoints,
-  vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
-  const lsi::EnclosedDeepInside* kept, const std::vector<std::size_t>* changed)
+  const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& keptPoints,
+  const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
+  lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept,
+  const std::vector<std::size_t>* changed)
 {
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const lsi::LastOutputs& last = this->Internal->Last;
@@ -590,19 +590,20 @@ void vtkLevelSetIsosurface::MakeParticleOutputs(vtkPointSet* original, vtkPointS
   inside.CellCenter = this->PeriodicOutput == AROUND_SEED ? this->Internal->SeedCenter : nullptr;
   inside.Mass = lsi::MarkedMassArray(input, this->MassArray);
   inside.Density = lsi::MarkedDensityArray(input, this->DensityArray);
-  inside.SurfacePoints = &isopoints.Points;
-  inside.SurfaceNormals = &isopoints.Normals;
+  inside.SurfacePoints = &keptPoints.Points;
+  inside.SurfaceNormals = &keptPoints.Normals;
   inside.SurfaceIndex = surfaceIndex;
   inside.Ranks = &ranks;
   // Under MPI: every rank's kept points within reach, which together are the serial run's
-  // (LevelSetEnclosedSurface.h; in a periodic box, in the cell: SurfaceDistance adds images).
+  // (LevelSetEnclosedSurface.h; in a periodic box, in the cell: SurfaceDistance indexes them
+  // with their images, so no index of them alone is built).
   std::vector<double> reachedPoints, reachedNormals;
   std::unique_ptr<lsi::PointCloudIndex> reachedIndex;
   if (ranks.Distributed())
   {
     lsi::KeptSurfaceWithinReach(
       ranks, geometry, phi, keptPoints, this->Internal->Box, reachedPoints, reachedNormals);
-    reachedIndex = lsi::IndexOfPoints(reachedPoints);
+    reachedIndex = this->Internal->Box.Enabled ? nullptr : lsi::IndexOfPoints(reachedPoints);
     inside.SurfacePoints = &reachedPoints;
     inside.SurfaceNormals = &reachedNormals;
     inside.SurfaceIndex = reachedIndex.get();

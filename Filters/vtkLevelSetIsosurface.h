@@ -708,18 +708,18 @@ private:
     const std::vector<double>* scalarsInStorageOrder = nullptr);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
-  // `isopoints` and `surfaceIndex`: the surface the particles' distances are measured to (in
-  // one process); under MPI every rank's kept points within reach instead
-  // (KeptSurfaceWithinReach, from the points this rank keeps, `keptPoints`).
+  // The particles' distances are measured to the points this rank keeps (`keptPoints`, in one
+  // process every point, with `surfaceIndex`, a search index over them or null), under MPI to
+  // every rank's kept points within reach (KeptSurfaceWithinReach; `surfaceIndex` unread).
   // The table's deep inside is kept for quick re-runs (`keep`), or taken from the last run's.
   // `changed`, if given: the only samples whose phi changed since the last run's particles
   // output (its LevelSet array is then copied and updated there).
   void MakeParticleOutputs(vtkPointSet* original, vtkPointSet* input,
     const lsi::Neighborhoods& geometry, const std::vector<double>& phi,
-    const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& isopoints,
-    const lsi::PointCloudIndex* surfaceIndex, const lsi::IsopointSet& keptPoints,
-    vtkPolyData* particleOutput, vtkTable* enclosed, lsi::EnclosedDeepInside* keep,
-    const lsi::EnclosedDeepInside* kept, const std::vector<std::size_t>* changed = nullptr);
+    const std::vector<vtkIdType>& mergedId, double halfWidth, const lsi::IsopointSet& keptPoints,
+    const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* particleOutput, vtkTable* enclosed,
+    lsi::EnclosedDeepInside* keep, const lsi::EnclosedDeepInside* kept,
+    const std::vector<std::size_t>* changed = nullptr);
 
   // The user's parameters, for the step files.
   lsi::RequestedParameters RequestedParameters() const;

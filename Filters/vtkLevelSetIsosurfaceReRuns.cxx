@@ -536,8 +536,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
     this->KeepPeriodicCell(cut);
     if (ranks.Distributed() && this->Internal->Box.Enabled)
     {
-      // (The splat radii's and the Enclosed table's points: those this rank found in the cell,
-      // as in a full run.)
+      // (The splat radii's points: those this rank found in the cell, as in a full run.)
       inCell.Points = cut.Points;
       inCell.Normals = cut.Normals;
       inCellIndex = lsi::IndexOfPoints(inCell.Points);
@@ -556,8 +555,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   }
   this->IsopointSeconds = lsi::SecondsSince(start);
   this->WarnIfRegionCut(input, *geometry, last.Field.get(), shown->Points);
-  // (Under MPI the splat radii and the Enclosed table's distances come from every point this
-  // rank found, as in a full run.)
+  // (Under MPI the splat radii come from every point this rank found, as in a full run; the
+  // Enclosed table's distances from every rank's kept points: MakeParticleOutputs.)
   const bool nearbyInCell = ranks.Distributed() && this->Internal->Box.Enabled;
   const lsi::IsopointSet& nearby =
     nearbyInCell ? inCell : (ranks.Distributed() ? isopoints : *shown);
@@ -572,8 +571,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // (Under MPI the particles are the rank's own, as the last run spread them.)
   vtkPointSet* particles = last.Owned ? last.Owned.GetPointer() : input;
   this->MakeParticleOutputs(particles, work, *geometry, phi, std::vector<vtkIdType>(),
-    last.Drift.HalfWidth, nearby, nearbyIndex, *shown, particleOutput, enclosed, nullptr,
-    &last.DeepInside, &changedSamples);
+    last.Drift.HalfWidth, *shown, nearbyIndex, particleOutput, enclosed, nullptr, &last.DeepInside,
+    &changedSamples);
   convergence->ShallowCopy(last.Convergence); // the evolution that placed the slid surface
   this->ParticleOutputSeconds = lsi::SecondsSince(start);
   if (!ranks.All(!this->CheckAbort()))
