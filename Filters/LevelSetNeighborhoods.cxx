@@ -384,7 +384,8 @@ bool IsThin(const std::uint32_t* ids, std::size_t count, const Neighborhoods& ge
 }
 } // namespace
 
-bool Neighborhoods::ComputeStencil(std::size_t i, std::vector<double>& scratch, bool& thin) const
+bool Neighborhoods::ComputeStencil(
+  std::size_t i, std::size_t slot, std::vector<double>& scratch, bool& thin) const
 {
   const std::size_t stride = static_cast<std::size_t>(this->Stride);
   scratch.resize(3 * stride);
@@ -394,7 +395,6 @@ bool Neighborhoods::ComputeStencil(std::size_t i, std::vector<double>& scratch, 
     this->Position(i), stride, [&](std::size_t m) { return this->Position(ids[m]); }, radius,
     LinearStencilView{ scratch.data(), nullptr }); // zero when singular
   // Stored times h_i (see GradientStencil), of order one in any unit of length.
-  const std::size_t slot = this->NextStencilSlot->fetch_add(1, std::memory_order_relaxed);
   this->StencilSlot[i] = static_cast<std::uint32_t>(slot);
   std::transform(scratch.begin(), scratch.end(), &this->GradientStencil[3 * slot * stride],
     [radius](double c) { return static_cast<float>(c * radius); });
@@ -426,11 +426,15 @@ void Neighborhoods::EnsureStencils(const std::size_t* samples, std::size_t count
   vtkSMPTools::For(0, static_cast<vtkIdType>(missing.size()), BalancedGrain(missing.size(), 64),
     [&](vtkIdType begin, vtkIdType end) {
       std::vector<double>& stencil = scratch.Local();
+      // One block of slots per piece: a thread's stencils stay together.
+      const std::size_t first = this->NextStencilSlot->fetch_add(
+        static_cast<std::size_t>(end - begin), std::memory_order_relaxed);
       for (vtkIdType k = begin; k < end; ++k)
       {
         const std::size_t i = missing[k];
         bool isThin = false;
-        const bool ok = this->ComputeStencil(i, stencil, isThin);
+        const bool ok =
+          this->ComputeStencil(i, first + static_cast<std::size_t>(k - begin), stencil, isThin);
         this->StencilState[i] = ok ? 1 : 2;
         singular.Local() += !ok;
         thin.Local() += isThin;
@@ -458,7 +462,8 @@ void Neighborhoods::PrecomputeStencils(
     if (state == 0)
     {
       bool thin = false;
-      const bool ok = this->ComputeStencil(samples[k], scratch, thin);
+      const std::size_t slot = this->NextStencilSlot->fetch_add(1, std::memory_order_relaxed);
+      const bool ok = this->ComputeStencil(samples[k], slot, scratch, thin);
       state = !ok ? 4 : thin ? 5 : 3;
     }
   }
@@ -643,6 +648,38 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
   this->Radii[slot] =
     this->SearchRow(i, nearbyRadius, &this->Ids[slot * static_cast<std::size_t>(this->Stride)]);
   state.store(2, std::memory_order_release);
+}
+
+void Neighborhoods::ComputeRun(const std::size_t* samples, std::size_t count) const
+{
+  // The run's rows are claimed first and take one block of slots: rows written by one thread
+  // stay together (rows of two threads interleaved slot by slot shared cache lines, and each
+  // row's slot cost an exchange of the counter between the cores).
+  std::uint32_t claimed[64];
+  std::size_t claims = 0;
+  for (std::size_t k = 0; k < count && claims < 64; ++k)
+  {
+    unsigned char expected = 0;
+    if (this->Rows->State[samples[k]].compare_exchange_strong(
+          expected, 1, std::memory_order_acq_rel))
+    {
+      claimed[claims++] = static_cast<std::uint32_t>(samples[k]);
+    }
+  }
+  const std::size_t first = this->Rows->Computed.fetch_add(claims, std::memory_order_relaxed);
+  const std::size_t stride = static_cast<std::size_t>(this->Stride);
+  double nearby = 0.0; // each search bounded first by the radius of the one before it
+  for (std::size_t c = 0; c < claims; ++c)
+  {
+    const std::size_t slot = first + c;
+    this->Rows->Slot[claimed[c]] = static_cast<std::uint32_t>(slot);
+    nearby = this->Radii[slot] = this->SearchRow(claimed[c], nearby, &this->Ids[slot * stride]);
+    this->Rows->State[claimed[c]].store(2, std::memory_order_release);
+  }
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    this->EnsureRow(samples[k]); // those past 64, or another thread's: ready or waited for
+  }
 }
 
 double Neighborhoods::SearchRow(std::size_t i, double nearbyRadius, std::uint32_t* ids) const

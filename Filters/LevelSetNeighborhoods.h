@@ -250,9 +250,10 @@ private:
   {
     return &this->GradientStencil[3 * std::size_t(this->StencilSlot[i]) * this->Stride];
   }
-  /// Sample i's stencil into the cache (`scratch`: 3 * Stride doubles); whether it is regular,
-  /// and whether its neighbourhood is thin.
-  bool ComputeStencil(std::size_t i, std::vector<double>& scratch, bool& thin) const;
+  /// Sample i's stencil into the cache at `slot` (`scratch`: 3 * Stride doubles); whether it is
+  /// regular, and whether its neighbourhood is thin.
+  bool ComputeStencil(
+    std::size_t i, std::size_t slot, std::vector<double>& scratch, bool& thin) const;
   void EnsureRow(std::size_t i, double nearbyRadius = 0.0) const
   {
     if (this->Rows->State[i].load(std::memory_order_acquire) != 2)
@@ -262,6 +263,9 @@ private:
   }
   /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
   void ComputeRow(std::size_t i, double nearbyRadius) const;
+  /// The lists of `count` samples near each other not yet computed, in consecutive slots; returns
+  /// when all of them are ready (some may be another thread's).
+  void ComputeRun(const std::size_t* samples, std::size_t count) const;
 };
 
 /// About how many samples the global scales are taken over (Neighborhoods::InRadiusSample):
@@ -304,12 +308,8 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
     0, static_cast<vtkIdType>(runs), BalancedGrain(runs, 1), [&](vtkIdType first, vtkIdType last) {
       for (std::size_t r = static_cast<std::size_t>(first); r < static_cast<std::size_t>(last); ++r)
       {
-        double nearby = 0.0;
-        for (std::size_t k = r * Run; k < std::min(missing.size(), (r + 1) * Run); ++k)
-        {
-          this->EnsureRow(missing[k], nearby);
-          nearby = this->Radii[this->Rows->Slot[missing[k]]];
-        }
+        const std::size_t begin = r * Run;
+        this->ComputeRun(&missing[begin], std::min(missing.size(), begin + Run) - begin);
       }
     });
 }
