@@ -32,6 +32,7 @@
 #include "ExactEnclosed.h"
 #include "GridRoute.h"
 #include "PeakMemory.h"
+#include "StageClock.h"
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
 #include "SyntheticParticles.h"
@@ -234,13 +235,28 @@ std::array<double, 2> AddThreadComparison(
   std::array<std::array<double, 8>, 2> stages{};
   stages[0].fill(HUGE_VAL);
   stages[1].fill(HUGE_VAL);
+  // And each stage's wall and CPU seconds summed over the runs, from the progress events.
+  vtkSmartPointer<StageClock> clock;
+  std::array<vtkSmartPointer<StageClock>, 2> clocks = { vtkSmartPointer<StageClock>::New(),
+    vtkSmartPointer<StageClock>::New() };
   const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
-    particles, [&](vtkLevelSetIsosurface* timed) { SetCaseInputs(timed, c); }, repeats, &busy,
+    particles,
+    [&](vtkLevelSetIsosurface* timed) {
+      SetCaseInputs(timed, c);
+      clock = vtkSmartPointer<StageClock>::New();
+      clock->Observe(timed);
+    },
+    repeats, &busy,
     [&](int threads, vtkLevelSetIsosurface* timed, double wall) {
       const std::array<double, 8> run = Stages(timed, wall);
       for (std::size_t k = 0; k < run.size(); ++k)
       {
         stages[threads - 1][k] = std::min(stages[threads - 1][k], run[k]);
+      }
+      for (std::size_t k = 0; k < ProgressStageNames.size(); ++k)
+      {
+        clocks[threads - 1]->Wall[k] += clock->Wall[k];
+        clocks[threads - 1]->Cpu[k] += clock->Cpu[k];
       }
     });
   report.Add("level_set.one_thread_s", seconds[0]);
@@ -256,6 +272,17 @@ std::array<double, 2> AddThreadComparison(
   }
   AddStages(report, "level_set.one_thread.", stages[0]);
   AddStages(report, "level_set.two_threads.", stages[1]);
+  // By progress ranges, over all the runs: on two threads, how busy each stage kept the cores
+  // (below 1: serial parts) and its CPU seconds against one thread's (above 1: the threads slow
+  // each other, or work that only two threads do).
+  for (std::size_t k = 0; k < ProgressStageNames.size(); ++k)
+  {
+    const std::string name = ProgressStageNames[k];
+    report.Add("level_set.two_threads_busy_fraction." + name,
+      clocks[1]->Wall[k] > 0.0 ? clocks[1]->Cpu[k] / (2.0 * clocks[1]->Wall[k]) : 0.0);
+    report.Add("level_set.two_threads_cpu_ratio." + name,
+      clocks[0]->Cpu[k] > 0.0 ? clocks[1]->Cpu[k] / clocks[0]->Cpu[k] : 0.0);
+  }
   return seconds;
 }
 

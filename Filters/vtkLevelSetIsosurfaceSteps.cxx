@@ -125,6 +125,9 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
   std::vector<double>& phi)
 {
   const auto start = Clock::now();
+  // (Its loops check for abort without reporting progress: the stage's start is reported here,
+  // not checked, so that every rank goes on alike.)
+  this->UpdateProgress(InitializationStage[0]);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   double bounds[6];
   this->Bounds(input, bounds);

@@ -8,6 +8,7 @@
 #define AbortLatency_h
 
 #include "CaseRuns.h"
+#include "StageClock.h"
 #include "SyntheticParticles.h"
 
 #include "vtkCommand.h"
@@ -39,16 +40,7 @@ public:
 
 inline const char* StageAt(double progress)
 {
-  // The filter's stage ranges (the top of Filters/vtkLevelSetIsosurface.cxx).
-  if (progress < 0.35)
-    return "neighbours";
-  if (progress < 0.45)
-    return "initialisation";
-  if (progress < 0.8)
-    return "evolution";
-  if (progress < 0.92)
-    return "isopoints";
-  return "output";
+  return ProgressStageNames[ProgressStage(progress)];
 }
 struct AbortLatencies
 {
