@@ -212,7 +212,12 @@ private:
     Node* Stub;
   };
   Node* MortonNode(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
-    Box& box, Pool& pool, std::vector<MedianJob>& jobs, std::vector<PieceJob>* pieces);
+    Box& box, Pool& pool, std::vector<MedianJob>& jobs, std::vector<PieceJob>* pieces,
+    const std::vector<Box>* pieceBoxes = nullptr);
+  static int NextCut(
+    const std::uint64_t* words, std::size_t begin, std::size_t end, int bit, std::size_t& split);
+  static void PieceRanges(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
+    std::vector<std::pair<std::size_t, std::size_t>>& ranges);
   void RunMedianJobs(std::vector<MedianJob> jobs, const TaskRunner& run);
   static int MedianAxis(const Box& box);
   std::size_t SplitAtMedian(std::size_t begin, std::size_t end, int axis);
@@ -406,21 +411,35 @@ inline PointCloudIndex::PointCloudIndex(UninitializedVector<double>& xyz,
         LeafSize, nanoflann::KDTreeSingleIndexAdaptorFlags::SkipInitialBuildIndex))
 {
   const std::size_t count = xyz.size() / 3;
-  this->Tree.vAcc.resize(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    this->Tree.vAcc[i] = static_cast<std::uint32_t>(i);
-  }
+  ResizeMapped(this->Tree.vAcc, count);
+  InChunks(count, 8, run, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      this->Tree.vAcc[i] = static_cast<std::uint32_t>(i);
+    }
+  });
   this->Tree.m_size = count;
   this->Tree.m_size_at_index_build = count;
   if (count > 0)
   {
     // The top cuts here; the subtrees below PieceSize points as tasks, each on a node pool of
     // its own; then the crowded cells that any of them left.
+    // The pieces' bounding boxes first, in parallel (the top cuts need them, and they span
+    // every point).
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    PieceRanges(mortonWords.data(), 0, count, MortonBits - 1, ranges);
+    std::vector<Box> pieceBoxes(ranges.size());
+    InChunks(ranges.size(), std::min<std::size_t>(ranges.size(), 8), run,
+      [this, &ranges, &pieceBoxes](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p)
+        {
+          this->BoxOf(ranges[p].first, ranges[p].second, pieceBoxes[p]);
+        }
+      });
     std::vector<MedianJob> jobs;
     std::vector<PieceJob> pieces;
     this->Tree.root_node = this->MortonNode(mortonWords.data(), 0, count, MortonBits - 1,
-      this->Tree.root_bbox, this->Tree.pool, jobs, &pieces);
+      this->Tree.root_bbox, this->Tree.pool, jobs, &pieces, &pieceBoxes);
     std::vector<std::vector<MedianJob>> pieceJobs(pieces.size());
     std::vector<std::function<void()>> tasks;
     for (std::size_t p = 0; p < pieces.size(); ++p)
@@ -447,7 +466,7 @@ inline PointCloudIndex::PointCloudIndex(UninitializedVector<double>& xyz,
 // Packed Morton words hold a 30-bit key above the 32-bit id; key bit b splits axis b % 3.
 inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* words,
   std::size_t begin, std::size_t end, int bit, Box& box, Pool& pool, std::vector<MedianJob>& jobs,
-  std::vector<PieceJob>* pieces)
+  std::vector<PieceJob>* pieces, const std::vector<Box>* pieceBoxes)
 {
   if (end - begin <= LeafSize)
   {
@@ -455,22 +474,21 @@ inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* w
   }
   if (pieces && end - begin <= PieceSize) // later, as a task
   {
-    this->BoxOf(begin, end, box);
+    // (Its box computed ahead, PieceRanges meeting the pieces in this order.)
+    const std::size_t p = pieces->size();
+    if (pieceBoxes && p < pieceBoxes->size())
+    {
+      box = (*pieceBoxes)[p];
+    }
+    else
+    {
+      this->BoxOf(begin, end, box);
+    }
     pieces->push_back({ begin, end, bit, pool.template allocate<Node>() });
     return pieces->back().Stub;
   }
-  // The words of [begin, end) share their key bits above `bit`: the next bit that differs
-  // within the range splits it in two contiguous parts.
   std::size_t split = begin;
-  for (; bit >= 0; --bit)
-  {
-    const auto set = [bit](std::uint64_t w) { return ((w >> (32 + bit)) & 1u) == 0; };
-    split = static_cast<std::size_t>(std::partition_point(words + begin, words + end, set) - words);
-    if (split > begin && split < end)
-    {
-      break;
-    }
-  }
+  bit = NextCut(words, begin, end, bit, split);
   if (bit < 0 && end - begin > ParallelCell) // one crowded Morton cell: later, in parallel
   {
     this->BoxOf(begin, end, box);
@@ -482,11 +500,52 @@ inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* w
     return this->MedianNode(begin, end, box, pool); // one Morton cell
   }
   Box lower, upper;
-  Node* below = this->MortonNode(words, begin, split, bit - 1, lower, pool, jobs, pieces);
-  Node* above = this->MortonNode(words, split, end, bit - 1, upper, pool, jobs, pieces);
+  Node* below =
+    this->MortonNode(words, begin, split, bit - 1, lower, pool, jobs, pieces, pieceBoxes);
+  Node* above = this->MortonNode(words, split, end, bit - 1, upper, pool, jobs, pieces, pieceBoxes);
   Node* node = pool.template allocate<Node>();
   MakeParent(node, below, above, bit % 3, lower, upper, box);
   return node;
+}
+
+// The words of [begin, end) share their key bits above `bit`: the next bit that differs within
+// the range (returned; -1 if none) splits it in two contiguous parts at `split`.
+inline int PointCloudIndex::NextCut(
+  const std::uint64_t* words, std::size_t begin, std::size_t end, int bit, std::size_t& split)
+{
+  for (; bit >= 0; --bit)
+  {
+    const auto set = [bit](std::uint64_t w) { return ((w >> (32 + bit)) & 1u) == 0; };
+    split = static_cast<std::size_t>(std::partition_point(words + begin, words + end, set) - words);
+    if (split > begin && split < end)
+    {
+      break;
+    }
+  }
+  return bit;
+}
+
+// The pieces MortonNode's top cuts leave, in the order it meets them (the same cuts).
+inline void PointCloudIndex::PieceRanges(const std::uint64_t* words, std::size_t begin,
+  std::size_t end, int bit, std::vector<std::pair<std::size_t, std::size_t>>& ranges)
+{
+  if (end - begin <= LeafSize)
+  {
+    return;
+  }
+  if (end - begin <= PieceSize)
+  {
+    ranges.emplace_back(begin, end);
+    return;
+  }
+  std::size_t split = begin;
+  bit = NextCut(words, begin, end, bit, split);
+  if (bit < 0)
+  {
+    return; // one Morton cell, cut at medians: no piece
+  }
+  PieceRanges(words, begin, split, bit - 1, ranges);
+  PieceRanges(words, split, end, bit - 1, ranges);
 }
 
 // The crowded cells, a level of median cuts at a time: a job too large is cut once (its halves
