@@ -211,9 +211,15 @@ private:
     int Bit;
     Node* Stub;
   };
+  // A piece's bounding box, computed ahead of the top cuts.
+  struct PieceBox
+  {
+    std::size_t Begin, End;
+    Box Bounds;
+  };
   Node* MortonNode(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
     Box& box, Pool& pool, std::vector<MedianJob>& jobs, std::vector<PieceJob>* pieces,
-    const std::vector<Box>* pieceBoxes = nullptr);
+    const std::vector<PieceBox>* pieceBoxes = nullptr);
   static int NextCut(
     const std::uint64_t* words, std::size_t begin, std::size_t end, int bit, std::size_t& split);
   static void PieceRanges(const std::uint64_t* words, std::size_t begin, std::size_t end, int bit,
@@ -428,12 +434,14 @@ inline PointCloudIndex::PointCloudIndex(UninitializedVector<double>& xyz,
     // every point).
     std::vector<std::pair<std::size_t, std::size_t>> ranges;
     PieceRanges(mortonWords.data(), 0, count, MortonBits - 1, ranges);
-    std::vector<Box> pieceBoxes(ranges.size());
+    std::vector<PieceBox> pieceBoxes(ranges.size());
     InChunks(ranges.size(), std::min<std::size_t>(ranges.size(), 8), run,
       [this, &ranges, &pieceBoxes](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p)
         {
-          this->BoxOf(ranges[p].first, ranges[p].second, pieceBoxes[p]);
+          pieceBoxes[p].Begin = ranges[p].first;
+          pieceBoxes[p].End = ranges[p].second;
+          this->BoxOf(ranges[p].first, ranges[p].second, pieceBoxes[p].Bounds);
         }
       });
     std::vector<MedianJob> jobs;
@@ -466,7 +474,7 @@ inline PointCloudIndex::PointCloudIndex(UninitializedVector<double>& xyz,
 // Packed Morton words hold a 30-bit key above the 32-bit id; key bit b splits axis b % 3.
 inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* words,
   std::size_t begin, std::size_t end, int bit, Box& box, Pool& pool, std::vector<MedianJob>& jobs,
-  std::vector<PieceJob>* pieces, const std::vector<Box>* pieceBoxes)
+  std::vector<PieceJob>* pieces, const std::vector<PieceBox>* pieceBoxes)
 {
   if (end - begin <= LeafSize)
   {
@@ -474,11 +482,12 @@ inline PointCloudIndex::Node* PointCloudIndex::MortonNode(const std::uint64_t* w
   }
   if (pieces && end - begin <= PieceSize) // later, as a task
   {
-    // (Its box computed ahead, PieceRanges meeting the pieces in this order.)
+    // (Its box computed ahead: PieceRanges meets the pieces in this order.)
     const std::size_t p = pieces->size();
-    if (pieceBoxes && p < pieceBoxes->size())
+    if (pieceBoxes && p < pieceBoxes->size() && (*pieceBoxes)[p].Begin == begin &&
+      (*pieceBoxes)[p].End == end)
     {
-      box = (*pieceBoxes)[p];
+      box = (*pieceBoxes)[p].Bounds;
     }
     else
     {
