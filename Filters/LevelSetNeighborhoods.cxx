@@ -631,7 +631,7 @@ bool BuildNeighborhoods(
   return true;
 }
 
-void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
+void Neighborhoods::ComputeRow(std::size_t i) const
 {
   std::atomic<unsigned char>& state = this->Rows->State[i];
   unsigned char expected = 0;
@@ -646,7 +646,7 @@ void Neighborhoods::ComputeRow(std::size_t i, double nearbyRadius) const
   const std::size_t slot = this->Rows->Computed.fetch_add(1, std::memory_order_relaxed);
   this->Rows->Slot[i] = static_cast<std::uint32_t>(slot);
   this->Radii[slot] =
-    this->SearchRow(i, nearbyRadius, &this->Ids[slot * static_cast<std::size_t>(this->Stride)]);
+    this->SearchRow(i, 0.0, &this->Ids[slot * static_cast<std::size_t>(this->Stride)]);
   state.store(2, std::memory_order_release);
 }
 
@@ -655,9 +655,9 @@ void Neighborhoods::ComputeRun(const std::size_t* samples, std::size_t count) co
   // The run's rows are claimed first and take one block of slots: rows written by one thread
   // stay together (rows of two threads interleaved slot by slot shared cache lines, and each
   // row's slot cost an exchange of the counter between the cores).
-  std::uint32_t claimed[64];
+  std::uint32_t claimed[RowRun];
   std::size_t claims = 0;
-  for (std::size_t k = 0; k < count && claims < 64; ++k)
+  for (std::size_t k = 0; k < count && claims < RowRun; ++k)
   {
     unsigned char expected = 0;
     if (this->Rows->State[samples[k]].compare_exchange_strong(
@@ -678,7 +678,7 @@ void Neighborhoods::ComputeRun(const std::size_t* samples, std::size_t count) co
   }
   for (std::size_t k = 0; k < count; ++k)
   {
-    this->EnsureRow(samples[k]); // those past 64, or another thread's: ready or waited for
+    this->EnsureRow(samples[k]); // those past RowRun, or another thread's: ready or waited for
   }
 }
 

@@ -254,17 +254,20 @@ private:
   /// regular, and whether its neighbourhood is thin.
   bool ComputeStencil(
     std::size_t i, std::size_t slot, std::vector<double>& scratch, bool& thin) const;
-  void EnsureRow(std::size_t i, double nearbyRadius = 0.0) const
+  void EnsureRow(std::size_t i) const
   {
     if (this->Rows->State[i].load(std::memory_order_acquire) != 2)
     {
-      this->ComputeRow(i, nearbyRadius);
+      this->ComputeRow(i);
     }
   }
-  /// `nearbyRadius`: the radius of a sample nearby (0 if none), which bounds the search first.
-  void ComputeRow(std::size_t i, double nearbyRadius) const;
-  /// The lists of `count` samples near each other not yet computed, in consecutive slots; returns
-  /// when all of them are ready (some may be another thread's).
+  /// Sample i's list, computed here unless another thread is computing it (then waited for).
+  void ComputeRow(std::size_t i) const;
+  /// Lists computed together by ComputeRun: near each other in storage order, each search
+  /// bounded first by the radius of the one before it.
+  static constexpr std::size_t RowRun = 64;
+  /// The lists of `count` (at most RowRun) samples near each other not yet computed, in
+  /// consecutive slots; returns when all of them are ready (some may be another thread's).
   void ComputeRun(const std::size_t* samples, std::size_t count) const;
 };
 
@@ -300,9 +303,9 @@ void Neighborhoods::EnsureNeighbors(const Id* samples, std::size_t count) const
     }
   }
   ParallelSort(missing.begin(), missing.end(), std::less<std::size_t>());
-  // In runs of 64, each search bounded first by the radius of the one before it (its spatial
+  // In runs of RowRun, each search bounded first by the radius of the one before it (its spatial
   // neighbour): the lists are exact either way, the bound only prunes the tree walk.
-  constexpr std::size_t Run = 64;
+  constexpr std::size_t Run = RowRun;
   const std::size_t runs = (missing.size() + Run - 1) / Run;
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(runs), BalancedGrain(runs, 1), [&](vtkIdType first, vtkIdType last) {
