@@ -19,8 +19,9 @@ void BandCollector::Where(
   const std::vector<double>& phi, double halfWidth, std::vector<std::size_t>& out) const
 {
   // In parallel: it runs several times per iteration over every sample.
-  out = IndicesWhere<std::size_t>(
-    this->Geometry.NumberOfSamples, [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; });
+  IndicesWhere(
+    this->Geometry.NumberOfSamples, [&](std::size_t i) { return std::abs(phi[i]) < halfWidth; },
+    out);
 }
 
 void BandCollector::WithNeighbors(
@@ -36,8 +37,9 @@ void BandCollector::WithNeighbors(
       this->Stamp[ids[k]].store(stamp, std::memory_order_relaxed);
     }
   });
-  out = IndicesWhere<std::size_t>(this->Geometry.NumberOfSamples,
-    [&](std::size_t i) { return this->Stamp[i].load(std::memory_order_relaxed) == stamp; });
+  IndicesWhere(
+    this->Geometry.NumberOfSamples,
+    [&](std::size_t i) { return this->Stamp[i].load(std::memory_order_relaxed) == stamp; }, out);
 }
 
 } // namespace lsi

@@ -35,7 +35,7 @@ std::vector<std::uint64_t> OccupiedVoxels(const IsopointSet& current, double cel
 // order of the isopoints and of their cells. A proposal in a voxel an isopoint already occupies
 // is left out at once: the isopoint keeps its voxel (ThinnedVoxels' preferred points), so the
 // proposal could never be kept. (At 2M samples 290,000 proposals, most of them there.)
-std::vector<double> CompletionCandidates(
+UninitializedVector<double> CompletionCandidates(
   const IsopointSet& current, const IsopointSettings& settings)
 {
   const std::size_t count = current.Points.size() / 3;
@@ -84,17 +84,20 @@ std::vector<double> CompletionCandidates(
         }
       }
     });
-  std::vector<double> candidates;
-  std::size_t total = 0;
-  for (const std::vector<double>& part : found)
+  // Joined in block order, each block copied to its place by whichever thread takes it.
+  std::vector<std::size_t> offsets(found.size() + 1, 0);
+  for (std::size_t b = 0; b < found.size(); ++b)
   {
-    total += part.size();
+    offsets[b + 1] = offsets[b] + found[b].size();
   }
-  candidates.reserve(total);
-  for (const std::vector<double>& part : found)
-  {
-    candidates.insert(candidates.end(), part.begin(), part.end());
-  }
+  UninitializedVector<double> candidates(offsets.back());
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(found.size()), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType b = first; b < last; ++b)
+      {
+        std::copy(found[b].begin(), found[b].end(), candidates.begin() + offsets[b]);
+      }
+    });
   return candidates;
 }
 } // namespace
@@ -104,8 +107,9 @@ bool CompleteIsopoints(const Neighborhoods& geometry, const std::vector<double>&
 {
   // Neighbouring isopoints propose the same empty cells: before the costly projection, one
   // proposal per voxel (the same one as thinning them with the isopoints would keep).
-  const std::vector<double> proposals = CompletionCandidates(out, settings);
-  const std::vector<std::size_t> distinct = ThinByVoxels(proposals, settings.CellSize);
+  const UninitializedVector<double> proposals = CompletionCandidates(out, settings);
+  const std::vector<std::size_t> distinct = ThinnedVoxels(
+    proposals.size() / 3, [&](std::size_t k) { return &proposals[3 * k]; }, settings.CellSize);
   std::vector<double> candidates(3 * distinct.size()), candidateNormals;
   for (std::size_t k = 0; k < distinct.size(); ++k)
   {

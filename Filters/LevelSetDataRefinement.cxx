@@ -22,8 +22,10 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
   const std::size_t fitCount = std::min<std::size_t>(
     geometry.NumberOfSamples, static_cast<std::size_t>(settings.DataFitScale) * geometry.Stride);
   out.FitSize = fitCount;
+  // (Every row is written below, by the thread that refines its point: their pages fault in
+  // there, on every thread, not here on one.)
   out.FitSamples.resize(fitCount * count);
-  out.FitModels.assign(ModelSize * count, 0.0);
+  out.FitModels.resize(ModelSize * count);
   vtkSMPThreadLocal<std::shared_ptr<MLSEvaluator>> evaluators;
   vtkSMPThreadLocal<std::size_t> moved(0);
   auto slide = [&](std::size_t begin, std::size_t end) {
@@ -62,6 +64,10 @@ bool RefineIsopointsOnData(const Neighborhoods& geometry, const std::vector<doub
           out.Normals[3 * i + d] = dataNormal[d];
         }
         ++moved.Local();
+      }
+      else
+      {
+        std::fill_n(&out.FitModels[ModelSize * i], ModelSize, 0.0);
       }
       // The samples nearest the final point, kept for the arrays interpolated there: usually
       // found among the gathered ones and their spares (checked, not assumed), else searched.

@@ -18,6 +18,7 @@
 #include "LevelSetCommunicator.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetPeriodicImages.h"
+#include "UninitializedVector.h"
 
 #include "vtkSmartPointer.h"
 
@@ -47,14 +48,14 @@ struct EnclosedDeepInside
   };
   // Per sample (storage order): a deep sample's group (below the number of groups), a Near
   // sample's place in Near plus the number of groups, or None (far outside).
-  std::vector<std::uint32_t> Group;
+  UninitializedVector<std::uint32_t> Group;
   std::vector<std::uint32_t> Rim; // deep samples listing a neighbour that is not deep
   // The samples neither deep nor far outside (phi above FarOutside), in storage order: a slide
   // changes phi only within the band's half width, so the band is among these, whatever slid.
   std::vector<std::uint32_t> Near;
   // Per Near sample, its particle's record (enclosed::ReadParticle: mass, density and the
   // averaged arrays' values).
-  std::vector<double> NearRecords;
+  UninitializedVector<double> NearRecords;
   std::vector<double> Sums; // each group's sums, packed under its lowest particle id
   int Components = 0;       // the arrays' components averaged, when kept
 };

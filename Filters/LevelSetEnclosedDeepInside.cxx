@@ -140,12 +140,13 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
     n, [&](std::size_t i) { return atOwners.empty() ? DeepInside(in, i) : atOwners[i] != 0; });
   // The groups: the deep samples joined through their neighbour lists (as the touching ones
   // are in the full route: from the samples whose lists are whole), numbered in storage order.
-  deep.Group.clear();
-  ResizeMapped(deep.Group, n, EnclosedDeepInside::None);
-  for (std::size_t k = 0; k < inside.size(); ++k)
-  {
-    deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
-  }
+  deep.Group = FilledInParallel<std::uint32_t>(n, EnclosedDeepInside::None);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
+    }
+  });
   // (Joined in parallel: the sets do not depend on the order.)
   const Links links(inside.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
@@ -168,24 +169,38 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
         }
       }
     });
-  std::vector<std::uint32_t> groupOfRoot(inside.size(), EnclosedDeepInside::None);
+  // Each deep sample's root, in parallel (the links are complete: the roots no longer change);
+  // then the groups numbered in storage order, on one thread (a light pass).
+  UninitializedVector<std::uint32_t> rootOf(inside.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      rootOf[k] = links.Find(static_cast<std::uint32_t>(k));
+    }
+  });
+  UninitializedVector<std::uint32_t> groupOfRoot =
+    FilledInParallel<std::uint32_t>(inside.size(), EnclosedDeepInside::None);
   std::vector<double> lowest; // per group: its lowest particle id, the key of its component
   std::uint32_t groups = 0;
   for (std::size_t k = 0; k < inside.size(); ++k)
   {
-    const std::uint32_t root = links.Find(static_cast<std::uint32_t>(k));
-    if (groupOfRoot[root] == EnclosedDeepInside::None)
+    std::uint32_t& group = groupOfRoot[rootOf[k]];
+    if (group == EnclosedDeepInside::None)
     {
-      groupOfRoot[root] = groups++;
+      group = groups++;
       lowest.push_back(HUGE_VAL);
     }
-    const std::uint32_t group = groupOfRoot[root];
-    deep.Group[inside[k]] = group;
     if (OwnParticle(in, inside[k])) // (a group of ghosts alone keeps HUGE_VAL: nothing to sum)
     {
       lowest[group] = std::min(lowest[group], static_cast<double>(geometry.Order[inside[k]]));
     }
   }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      deep.Group[inside[k]] = groupOfRoot[rootOf[k]];
+    }
+  });
   // The rim: the deep samples whose lists reach out of the deep inside (the band's samples
   // join the groups through these, besides through their own lists).
   deep.Rim = IndicesWhere<std::uint32_t>(inside.size(), [&](std::size_t k) {
@@ -225,14 +240,18 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   // The near samples' particle records, in Near's order: a re-run reads them there, not
   // scattered over the input's arrays (in input order).
   const std::size_t record = RecordSize(components);
-  deep.NearRecords.resize(record * deep.Near.size());
+  deep.NearRecords.resize(record * deep.Near.size()); // (every record written below)
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType p = begin; p < end; ++p)
       {
-        if (OwnParticle(in, deep.Near[p])) // (a ghost's record is never read)
+        if (OwnParticle(in, deep.Near[p]))
         {
           ReadParticle(in, arrays, geometry.Order[deep.Near[p]], &deep.NearRecords[record * p]);
+        }
+        else // (a ghost's record is never read)
+        {
+          std::fill_n(&deep.NearRecords[record * p], record, 0.0);
         }
       }
     });

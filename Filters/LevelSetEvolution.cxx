@@ -217,12 +217,13 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   const double clamp = ReinitializationHalfWidth(settings);
   const std::size_t n = this->Geometry.NumberOfSamples;
   this->InitiallyPositive.resize(n);
-  this->HasChangedSign.assign(n, 0);
+  this->HasChangedSign.resize(n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       this->Phi[i] = std::max(-clamp, std::min(clamp, this->Phi[i]));
       this->InitiallyPositive[i] = Positive(this->Phi[i]);
+      this->HasChangedSign[i] = 0;
     }
   });
   const Communicator& ranks = *this->Ranks;

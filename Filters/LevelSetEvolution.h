@@ -69,7 +69,7 @@ private:
   Reinitialization Reinitializer;
   std::vector<std::size_t> Band, Region, Scratch, Front;
   std::vector<double> NewValues;
-  std::vector<char> InitiallyPositive, HasChangedSign;
+  UninitializedVector<char> InitiallyPositive, HasChangedSign; // written in Run's first loop
   bool HasConverged = false;
   const Communicator* Ranks = &SingleProcess();
 };

@@ -31,7 +31,8 @@ void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets
   const std::size_t n = geometry.NumberOfSamples;
   if (flooded.size() != n)
   {
-    flooded.assign(n, 0);
+    flooded.clear();
+    ResizeMappedInParallel(flooded, n, char(0));
   }
   std::vector<std::uint32_t> queue = IndicesWhere<std::uint32_t>(
     n, [&](std::size_t i) { return inSeed[i] && dataOffsets[i] > 0.0 && !flooded[i]; });
@@ -328,7 +329,8 @@ std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<
   std::size_t bubbleSize, FloodResult& result, const AbortCheck& aborted)
 {
   SerialAbortCheck stop(aborted);
-  std::vector<char> inside(flooded);
+  std::vector<char> inside;
+  AssignInParallel(inside, flooded);
   FillBubbles(geometry, bubbleSize, inside, stop);
   result.Aborted = stop.WasStopped();
   return inside;
@@ -346,7 +348,7 @@ bool SignedDistanceToCrossings(const Neighborhoods& geometry,
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
   std::vector<double> distance; // squared
-  ResizeMapped(distance, n, HUGE_VAL);
+  ResizeMappedInParallel(distance, n, HUGE_VAL);
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetInput.h"
 
+#include "LevelSetParallel.h"
 #include "LevelSetSplines.h"
-#include "UninitializedVector.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -106,7 +106,7 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
   }
 
   // In parallel; the first bad point (lowest id) is reported, as a serial pass would.
-  ResizeMapped(values, static_cast<std::size_t>(n));
+  ResizeMappedInParallel(values, static_cast<std::size_t>(n));
   vtkSMPThreadLocal<std::array<double, 2>> ranges(std::array<double, 2>{ DBL_MAX, -DBL_MAX });
   std::atomic<vtkIdType> badValue{ n }, badPoint{ n };
   auto lower = [](std::atomic<vtkIdType>& first, vtkIdType i) {
@@ -272,8 +272,8 @@ void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>
   double isoValue, std::vector<double>& dataOffsets, std::vector<double>& dataSign)
 {
   const std::size_t n = geometry.NumberOfSamples;
-  ResizeMapped(dataOffsets, n);
-  ResizeMapped(dataSign, n);
+  ResizeMappedInParallel(dataOffsets, n);
+  ResizeMappedInParallel(dataSign, n);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {

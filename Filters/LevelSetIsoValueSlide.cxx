@@ -191,13 +191,13 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   // The results go to new arrays, kept only if every point slid. (The kept samples, the
   // largest, are not copied: the few points that gather anew record theirs.)
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
-  const std::vector<std::uint32_t>& samples = isopoints.FitSamples;
+  const UninitializedVector<std::uint32_t>& samples = isopoints.FitSamples;
   std::vector<double> newCentres(points.size()), moves(count), bounds(count);
   std::vector<char> nearEdge(count);
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
   const std::vector<std::uint32_t> order =
     withModels ? FarthestFirst(isopoints, settings.ValueChange) : std::vector<std::uint32_t>();
-  std::vector<double> models(ModelSize * count);
+  UninitializedVector<double> models(ModelSize * count, 0.0);
   std::atomic<int> refusal(None);
   struct Scratch : SlideScratch
   {

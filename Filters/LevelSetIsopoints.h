@@ -72,12 +72,13 @@ struct IsopointSet
   // point), for the arrays interpolated onto the surface over as many samples: their gather
   // is then not repeated. Empty unless they match Points; whatever moves or drops points after
   // the refinement must clear them.
-  std::vector<std::uint32_t> FitSamples;
+  // (Uninitialised on resize: the refinement writes every row in parallel.)
+  UninitializedVector<std::uint32_t> FitSamples;
   std::size_t FitSize = 0;
   // The data fit's quadratic model at each final point, 9 per point: its gradient, then its
   // Hessian (xx, yy, zz, xy, xz, yz). A later slide onto another isovalue takes its first step
   // from it (LevelSetIsoValueSlide.h). Cleared with FitSamples.
-  std::vector<double> FitModels;
+  UninitializedVector<double> FitModels;
 };
 
 /// Isopoints per block of the parallel loops, between two abort checks: a block of Newton
@@ -171,7 +172,7 @@ std::vector<std::size_t> ThinnedVoxels(
     std::uint64_t Key;
     std::size_t Index;
   };
-  std::vector<Entry> entries(count);
+  UninitializedVector<Entry> entries(count); // (written below, in parallel)
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
@@ -184,7 +185,7 @@ std::vector<std::size_t> ThinnedVoxels(
   });
   // The runs in parallel: a piece of the entries takes the runs that begin in it (to their
   // ends), and marks each run's winner; the winners are then listed in index order.
-  std::vector<char> won(count, 0);
+  UninitializedVector<char> won = FilledInParallel<char>(count, 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
     std::size_t first = static_cast<std::size_t>(begin);
     while (first > 0 && first < static_cast<std::size_t>(end) &&

@@ -88,8 +88,8 @@ struct FloodStart
   std::uint64_t Offsets = 0; // ValueFingerprint of the data offsets
   std::vector<double> Spheres;
   double HalfWidth = 0.0, Spacing = 0.0;
-  std::vector<double> Phi;  // the flood's signed distances (storage order)
-  std::vector<char> InSeed; // the samples in the spheres
+  UninitializedVector<double> Phi; // the flood's signed distances (storage order)
+  std::vector<char> InSeed;        // the samples in the spheres
 
   bool SameStart(const FloodStart& other) const
   {

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -124,10 +125,65 @@ UninitializedVector<T> FilledInParallel(std::size_t count, T value)
   return values;
 }
 
-/// The indices i < count for which keep(i) holds, in increasing order: found in fixed chunks
-/// in parallel and joined in order (for scans over every sample, several per run).
+/// ResizeMapped (UninitializedVector.h) with the new storage's pages mapped by every thread at
+/// once, 2 MB each: the kernel zeroes each page it maps, and on a virtual machine here that is
+/// most of the cost. For the per-sample arrays that stay std::vector (whose resize then writes
+/// every value on one thread, into mapped pages).
+template <typename Vector>
+void ResizeMappedInParallel(
+  Vector& values, std::size_t count, const typename Vector::value_type& value = {})
+{
+  if (count > values.capacity())
+  {
+    values.reserve(count);
+  }
+  if (count > values.size())
+  {
+    char* begin = reinterpret_cast<char*>(values.data() + values.size());
+    const std::size_t bytes = (count - values.size()) * sizeof(typename Vector::value_type);
+    AdviseHugePages(begin, bytes);
+    constexpr std::size_t Piece = std::size_t(1) << 21;
+    const std::size_t pieces = (bytes + Piece - 1) / Piece;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(pieces), 1, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType p = first; p < last; ++p)
+      {
+        const std::size_t offset = static_cast<std::size_t>(p) * Piece;
+        MapPagesNow(begin + offset, std::min(Piece, bytes - offset));
+      }
+    });
+  }
+  values.resize(count, value);
+}
+
+/// A copy of `values`, written in parallel (its pages fault in on every thread at once).
+template <typename T, typename Allocator>
+UninitializedVector<T> CopiedInParallel(const std::vector<T, Allocator>& values)
+{
+  UninitializedVector<T> copy(values.size());
+  AdviseHugePages(copy);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
+    std::copy(values.begin() + begin, values.begin() + end, copy.begin() + begin);
+  });
+  return copy;
+}
+
+/// to = from, with to's new pages mapped and the values copied by every thread at once.
+template <typename T>
+void AssignInParallel(std::vector<T>& to, const std::vector<T>& from)
+{
+  to.clear();
+  ResizeMappedInParallel(to, from.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(from.size()), [&](vtkIdType begin, vtkIdType end) {
+    std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+  });
+}
+
+/// The indices i < count for which keep(i) holds, in increasing order, into `out`: found in fixed
+/// chunks in parallel and copied to their places in parallel (for scans over every sample,
+/// several per run). `out`'s storage is reused: the band's lists, found anew each iteration,
+/// then write to pages already mapped (fresh pages cost more than the copy, UninitializedVector.h).
 template <typename Index, typename Keep>
-std::vector<Index> IndicesWhere(std::size_t count, Keep&& keep)
+void IndicesWhere(std::size_t count, Keep&& keep, std::vector<Index>& out)
 {
   constexpr std::size_t Chunk = 1 << 16;
   const std::size_t chunks = (count + Chunk - 1) / Chunk;
@@ -145,42 +201,100 @@ std::vector<Index> IndicesWhere(std::size_t count, Keep&& keep)
       }
     }
   });
-  std::vector<Index> all;
-  for (const std::vector<Index>& part : found)
+  std::vector<std::size_t> offsets(chunks + 1, 0);
+  for (std::size_t c = 0; c < chunks; ++c)
   {
-    all.insert(all.end(), part.begin(), part.end());
+    offsets[c + 1] = offsets[c] + found[c].size();
   }
+  ResizeMappedInParallel(out, offsets[chunks]);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
+    for (vtkIdType c = first; c < last; ++c)
+    {
+      std::copy(found[c].begin(), found[c].end(), out.begin() + offsets[c]);
+    }
+  });
+}
+
+/// The same, as a new vector.
+template <typename Index, typename Keep>
+std::vector<Index> IndicesWhere(std::size_t count, Keep&& keep)
+{
+  std::vector<Index> all;
+  IndicesWhere(count, keep, all);
   return all;
 }
 
+/// The number of elements of sorted `a` (size na) among the first `d` of its merge with sorted
+/// `b` (size nb), ties to `a` as std::merge does: where a part of a parallel merge starts.
+template <typename Iterator, typename Less>
+std::ptrdiff_t MergeSplit(
+  Iterator a, std::ptrdiff_t na, Iterator b, std::ptrdiff_t nb, std::ptrdiff_t d, Less& less)
+{
+  std::ptrdiff_t low = std::max<std::ptrdiff_t>(0, d - nb), high = std::min(d, na);
+  while (low < high)
+  {
+    const std::ptrdiff_t middle = low + (high - low) / 2;
+    if (less(*(b + (d - middle - 1)), *(a + middle)))
+    {
+      high = middle;
+    }
+    else
+    {
+      low = middle + 1;
+    }
+  }
+  return low;
+}
+
 /// Sorts [first, last) by `less`, a strict total order (so the result is the same as
-/// std::sort's on any number of threads): pieces sorted in parallel, then merged pairwise
-/// (vtkSMPTools::Sort is serial with the STDThread backend).
+/// std::sort's on any number of threads): pieces sorted in parallel, then merged pairwise, each
+/// merge cut into parts that the threads write at once (vtkSMPTools::Sort is serial with the
+/// STDThread backend; a serial merge of two halves would leave a core idle for a pass).
 template <typename Iterator, typename Less>
 void ParallelSort(Iterator first, Iterator last, Less less)
 {
   const std::ptrdiff_t count = last - first;
-  const std::ptrdiff_t pieces = std::max<std::ptrdiff_t>(
-    1, std::min<std::ptrdiff_t>(vtkSMPTools::GetEstimatedNumberOfThreads(), count / 16384));
+  const std::ptrdiff_t threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const std::ptrdiff_t pieces =
+    std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, count / 16384));
   if (pieces == 1)
   {
     std::sort(first, last, less);
     return;
   }
-  auto bound = [&](std::ptrdiff_t piece) { return first + count * piece / pieces; };
+  auto bound = [&](std::ptrdiff_t piece) { return count * piece / pieces; };
   vtkSMPTools::For(0, static_cast<vtkIdType>(pieces), 1, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType piece = begin; piece < end; ++piece)
     {
-      std::sort(bound(piece), bound(piece + 1), less);
+      std::sort(first + bound(piece), first + bound(piece + 1), less);
     }
   });
+  using Value = typename std::iterator_traits<Iterator>::value_type;
+  UninitializedVector<Value> merged(static_cast<std::size_t>(count));
+  const std::ptrdiff_t parts = 4 * threads; // per merge
   for (std::ptrdiff_t width = 1; width < pieces; width *= 2)
   {
-    for (std::ptrdiff_t piece = 0; piece + width < pieces; piece += 2 * width)
-    {
-      std::inplace_merge(
-        bound(piece), bound(piece + width), bound(std::min(piece + 2 * width, pieces)), less);
-    }
+    // Every pair of runs at this width (a run without partner is copied), each cut into `parts`.
+    const std::ptrdiff_t pairs = (pieces + 2 * width - 1) / (2 * width);
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(pairs * parts), 1, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType task = begin; task < end; ++task)
+        {
+          const std::ptrdiff_t pair = task / parts, part = task % parts;
+          const std::ptrdiff_t from = bound(2 * width * pair);
+          const std::ptrdiff_t middle = bound(std::min(2 * width * pair + width, pieces));
+          const std::ptrdiff_t to = bound(std::min(2 * width * (pair + 1), pieces));
+          const std::ptrdiff_t na = middle - from, nb = to - middle;
+          const std::ptrdiff_t d0 = (na + nb) * part / parts, d1 = (na + nb) * (part + 1) / parts;
+          const std::ptrdiff_t a0 = MergeSplit(first + from, na, first + middle, nb, d0, less);
+          const std::ptrdiff_t a1 = MergeSplit(first + from, na, first + middle, nb, d1, less);
+          std::merge(first + from + a0, first + from + a1, first + middle + (d0 - a0),
+            first + middle + (d1 - a1), merged.begin() + (from + d0), less);
+        }
+      });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+      std::copy(merged.begin() + begin, merged.begin() + end, first + begin);
+    });
   }
 }
 

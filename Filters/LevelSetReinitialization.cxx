@@ -36,7 +36,8 @@ void Reinitialization::Run(
   this->Geometry.EnsureStencils(region);
   const std::size_t stride = static_cast<std::size_t>(this->Geometry.Stride);
   this->NewValues.resize(region.size());
-  std::vector<double> initial(region.size());
+  UninitializedVector<double>& initial = this->Initial;
+  initial.resize(region.size());
   ForEachIn(region, [&](std::size_t k, std::size_t i) { initial[k] = phi[i]; });
   auto distance = [&](std::size_t i, std::uint32_t j) {
     return (
@@ -46,7 +47,8 @@ void Reinitialization::Run(
   auto positive = [](double value) { return value > 0.0; };
   // Samples with a neighbour of the other sign hold the interface: fix them at their
   // first-order distance; the others are updated by upwind steps.
-  std::vector<char> atInterface(region.size(), 0);
+  UninitializedVector<char>& atInterface = this->AtInterface;
+  atInterface.resize(region.size());
   ForEachIn(region, [&](std::size_t k, std::size_t i) {
     const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
     double opposite = HUGE_VAL;
@@ -57,9 +59,9 @@ void Reinitialization::Run(
         opposite = std::min(opposite, distance(i, ids[m]));
       }
     }
+    atInterface[k] = opposite < HUGE_VAL;
     if (opposite < HUGE_VAL)
     {
-      atInterface[k] = 1;
       const double norm =
         this->Geometry.GradientAt(i, [&](std::size_t m) { return phi[ids[m]]; }).norm();
       this->NewValues[k] = InterfaceDistance(phi[i], norm, opposite);

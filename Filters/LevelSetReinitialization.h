@@ -10,6 +10,7 @@
 #include "LevelSetBand.h"
 #include "LevelSetCommunicator.h"
 #include "LevelSetEvolutionSettings.h"
+#include "UninitializedVector.h"
 
 #include <cstddef>
 #include <vector>
@@ -40,6 +41,10 @@ private:
   BandCollector& Band;
   std::vector<std::size_t> Core, Updated;
   std::vector<double> NewValues;
+  // Per region sample, kept between runs so that their pages are mapped once (every element is
+  // written before it is read).
+  UninitializedVector<double> Initial;
+  UninitializedVector<char> AtInterface;
 };
 
 } // namespace lsi

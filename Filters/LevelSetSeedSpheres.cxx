@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSeedSpheres.h"
 
-#include "UninitializedVector.h"
+#include "LevelSetParallel.h"
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -59,7 +59,7 @@ SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
   SeedSphereStart start;
   start.InSeed.resize(n);
   start.SamplesPerSphere.assign(spheres.size() / 4, 0);
-  ResizeMapped(phi, n);
+  ResizeMappedInParallel(phi, n);
   const std::size_t sphereCount = spheres.size() / 4;
   vtkSMPThreadLocal<std::vector<std::size_t>> localCounts(std::vector<std::size_t>(sphereCount, 0));
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {

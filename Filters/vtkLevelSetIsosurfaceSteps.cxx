@@ -147,7 +147,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     flood.Spacing = settings.Spacing;
     if (ranks.All(last.Start.SameStart(flood) && last.Start.Phi.size() == geometry.NumberOfSamples))
     {
-      phi = last.Start.Phi;
+      phi.assign(last.Start.Phi.begin(), last.Start.Phi.end());
       last.SeedSpheres = spheres;
       std::copy(bounds, bounds + 6, last.Bounds);
       last.InSeed = last.Start.InSeed;
@@ -194,7 +194,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
       return false;
     }
     ranks.RefreshGhosts(phi); // the owners' distances are the serial ones
-    flood.Phi = phi;
+    flood.Phi = lsi::CopiedInParallel(phi);
     flood.InSeed = last.InSeed;
     last.Start = std::move(flood);
     ++this->FloodCount;
