@@ -21,12 +21,13 @@ namespace
 std::vector<std::uint64_t> OccupiedVoxels(const IsopointSet& current, double cell)
 {
   std::vector<std::uint64_t> keys(current.Points.size() / 3);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(keys.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      keys[i] = VoxelKey(&current.Points[3 * i], cell);
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(keys.size()), BalancedGrain(keys.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        keys[i] = VoxelKey(&current.Points[3 * i], cell);
+      }
+    });
   ParallelSort(keys.begin(), keys.end(), std::less<std::uint64_t>());
   return keys;
 }

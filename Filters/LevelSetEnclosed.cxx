@@ -192,9 +192,10 @@ std::vector<vtkIdType> SlotComponents(const EnclosedInputs& in, const std::vecto
   }
   // Every slot's root: its own slot, or its component's lowest.
   std::vector<vtkIdType> parent(static_cast<std::size_t>(slots));
-  vtkSMPTools::For(0, slots, [&](vtkIdType begin, vtkIdType end) {
-    std::iota(parent.begin() + begin, parent.begin() + end, begin);
-  });
+  vtkSMPTools::For(0, slots, BalancedGrain(static_cast<std::size_t>(slots), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::iota(parent.begin() + begin, parent.begin() + end, begin);
+    });
   auto nameSlot = [&](std::size_t i) {
     if (touches(i))
     {
@@ -211,12 +212,13 @@ std::vector<vtkIdType> SlotComponents(const EnclosedInputs& in, const std::vecto
   }
   else
   {
-    vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        nameSlot(static_cast<std::size_t>(i));
-      }
-    });
+    vtkSMPTools::For(0, sampleCount, BalancedGrain(static_cast<std::size_t>(sampleCount), 1024),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          nameSlot(static_cast<std::size_t>(i));
+        }
+      });
   }
   return parent;
 }
@@ -298,28 +300,30 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   UninitializedVector<std::size_t> sampleOf =
     FilledInParallel(static_cast<std::size_t>(n), std::size_t(0));
   const vtkIdType samples = static_cast<vtkIdType>(geometry.NumberOfSamples);
-  vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+  vtkSMPTools::For(0, samples, BalancedGrain(static_cast<std::size_t>(samples), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        sampleOf[geometry.Order[i]] = static_cast<std::size_t>(i);
+        if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+        {
+          sampleOf[geometry.Order[i]] = static_cast<std::size_t>(i);
+        }
       }
-    }
-  });
+    });
   // The shell's half width: the neighbourhood radius (about two spacings), wide enough that
   // enough particles fall in it for a smooth surface integral.
   auto width = [&](std::size_t i) { return geometry.RadiusOf(i); };
   const std::vector<char> touching = FlagsAtOwners(
     *in.Ranks, geometry.NumberOfSamples, [&](std::size_t i) { return Touches(in, i); });
   vtkSMPThreadLocal<double> widestHere(0.0); // a maximum: the same on any number of threads
-  vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
-    double& w = widestHere.Local();
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      w = touching[i] ? std::max(w, 2.0 * width(static_cast<std::size_t>(i))) : w;
-    }
-  });
+  vtkSMPTools::For(0, samples, BalancedGrain(static_cast<std::size_t>(samples), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      double& w = widestHere.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        w = touching[i] ? std::max(w, 2.0 * width(static_cast<std::size_t>(i))) : w;
+      }
+    });
   double widest = 0.0;
   for (double w : widestHere)
   {
@@ -333,13 +337,14 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
   const Communicator& ranks = *in.Ranks;
   const vtkIdType sampleCount = static_cast<vtkIdType>(geometry.NumberOfSamples);
   vtkSMPThreadLocal<char> foreign(0); // samples that are no particle here (MPI ghosts)
-  vtkSMPTools::For(0, sampleCount, [&](vtkIdType begin, vtkIdType end) {
-    char& any = foreign.Local();
-    for (vtkIdType i = begin; i < end && !any; ++i)
-    {
-      any = static_cast<char>(in.OriginalIds[i] < 0);
-    }
-  });
+  vtkSMPTools::For(0, sampleCount, BalancedGrain(static_cast<std::size_t>(sampleCount), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      char& any = foreign.Local();
+      for (vtkIdType i = begin; i < end && !any; ++i)
+      {
+        any = static_cast<char>(in.OriginalIds[i] < 0);
+      }
+    });
   vtkIdType slots = n;
   std::vector<vtkIdType> renumbered; // only with foreign samples: the particle ids are the slots
   if (std::any_of(foreign.begin(), foreign.end(), [](char f) { return f != 0; }))

@@ -141,12 +141,13 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   // The groups: the deep samples joined through their neighbour lists (as the touching ones
   // are in the full route: from the samples whose lists are whole), numbered in storage order.
   deep.Group = FilledInParallel<std::uint32_t>(n, EnclosedDeepInside::None);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        deep.Group[inside[k]] = static_cast<std::uint32_t>(k);
+      }
+    });
   // (Joined in parallel: the sets do not depend on the order.)
   const Links links(inside.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
@@ -172,12 +173,13 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   // Each deep sample's root, in parallel (the links are complete: the roots no longer change);
   // then the groups numbered in storage order, on one thread (a light pass).
   UninitializedVector<std::uint32_t> rootOf(inside.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      rootOf[k] = links.Find(static_cast<std::uint32_t>(k));
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        rootOf[k] = links.Find(static_cast<std::uint32_t>(k));
+      }
+    });
   UninitializedVector<std::uint32_t> groupOfRoot =
     FilledInParallel<std::uint32_t>(inside.size(), EnclosedDeepInside::None);
   std::vector<double> lowest; // per group: its lowest particle id, the key of its component
@@ -195,12 +197,13 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
       lowest[group] = std::min(lowest[group], static_cast<double>(geometry.Order[inside[k]]));
     }
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      deep.Group[inside[k]] = groupOfRoot[rootOf[k]];
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(inside.size()), BalancedGrain(inside.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        deep.Group[inside[k]] = groupOfRoot[rootOf[k]];
+      }
+    });
   // The rim: the deep samples whose lists reach out of the deep inside (the band's samples
   // join the groups through these, besides through their own lists).
   deep.Rim = IndicesWhere<std::uint32_t>(inside.size(), [&](std::size_t k) {
@@ -228,8 +231,8 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   deep.Near = IndicesWhere<std::uint32_t>(n, [&](std::size_t i) {
     return deep.Group[i] == EnclosedDeepInside::None && (*in.Phi)[i] > in.FarOutside;
   });
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(deep.Near.size()),
+    BalancedGrain(deep.Near.size(), 1024), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType p = begin; p < end; ++p)
       {
         deep.Group[deep.Near[p]] = groups + static_cast<std::uint32_t>(p);
@@ -241,8 +244,8 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
   // scattered over the input's arrays (in input order).
   const std::size_t record = RecordSize(components);
   deep.NearRecords.resize(record * deep.Near.size()); // (every record written below)
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(deep.Near.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(deep.Near.size()),
+    BalancedGrain(deep.Near.size(), 1024), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType p = begin; p < end; ++p)
       {
         if (OwnParticle(in, deep.Near[p]))
@@ -302,13 +305,14 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
     deep.Near.size(), [&](std::size_t p) { return touches(deep.Near[p]); });
   std::vector<std::uint32_t> band(inBand.size());
   std::vector<std::uint32_t> bandOf(deep.Near.size(), EnclosedDeepInside::None);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType b = begin; b < end; ++b)
-    {
-      band[b] = deep.Near[inBand[b]];
-      bandOf[inBand[b]] = static_cast<std::uint32_t>(b);
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(band.size()), BalancedGrain(band.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        band[b] = deep.Near[inBand[b]];
+        bandOf[inBand[b]] = static_cast<std::uint32_t>(b);
+      }
+    });
   auto node = [&](std::size_t i) {
     const std::uint32_t g = deep.Group[i];
     if (g < groups || g == EnclosedDeepInside::None)

@@ -23,12 +23,13 @@ Links::Links(std::size_t n)
   : Parent(new std::atomic<std::uint32_t>[n]) // (not zeroed: set in parallel below)
   , Size(n)
 {
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      this->Parent[i].store(static_cast<std::uint32_t>(i), std::memory_order_relaxed);
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 1024), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->Parent[i].store(static_cast<std::uint32_t>(i), std::memory_order_relaxed);
+      }
+    });
 }
 
 void Sums::Add(const Sums& other)

@@ -69,12 +69,13 @@ template <typename Test>
 std::vector<char> FlagsAtOwners(const Communicator& ranks, std::size_t samples, Test&& test)
 {
   std::vector<char> flags(samples);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(samples), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      flags[i] = test(static_cast<std::size_t>(i)) ? 1 : 0;
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(samples), BalancedGrain(samples, 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        flags[i] = test(static_cast<std::size_t>(i)) ? 1 : 0;
+      }
+    });
   if (ranks.Distributed())
   {
     std::vector<double> atOwner(flags.begin(), flags.end());

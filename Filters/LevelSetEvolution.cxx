@@ -122,18 +122,19 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
   const Communicator& ranks = *this->Ranks;
   // P = (1/2N) sum |sgn(phi_i) - sgn(f_i - f_iso)|, with sgn(phi) taken as +1 / -1.
   vtkSMPThreadLocal<double> mismatch(0.0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    double& local = mismatch.Local();
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      if (!ranks.Owns(static_cast<std::size_t>(i)))
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 1024), [&](vtkIdType begin, vtkIdType end) {
+      double& local = mismatch.Local();
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        continue;
+        if (!ranks.Owns(static_cast<std::size_t>(i)))
+        {
+          continue;
+        }
+        const double s = Positive(this->Phi[i]) ? 1.0 : -1.0;
+        local += std::abs(s - this->DataSign[i]);
       }
-      const double s = Positive(this->Phi[i]) ? 1.0 : -1.0;
-      local += std::abs(s - this->DataSign[i]);
-    }
-  });
+    });
   double total = 0.0;
   for (double v : mismatch)
   {
@@ -218,14 +219,15 @@ bool LevelSetEvolution::Run(const EvolutionSettings& settings,
   const std::size_t n = this->Geometry.NumberOfSamples;
   this->InitiallyPositive.resize(n);
   this->HasChangedSign.resize(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      this->Phi[i] = std::max(-clamp, std::min(clamp, this->Phi[i]));
-      this->InitiallyPositive[i] = Positive(this->Phi[i]);
-      this->HasChangedSign[i] = 0;
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->Phi[i] = std::max(-clamp, std::min(clamp, this->Phi[i]));
+        this->InitiallyPositive[i] = Positive(this->Phi[i]);
+        this->HasChangedSign[i] = 0;
+      }
+    });
   const Communicator& ranks = *this->Ranks;
   for (int iteration = 1; iteration <= settings.MaximumIterations; ++iteration)
   {

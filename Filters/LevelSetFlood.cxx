@@ -181,20 +181,21 @@ std::vector<std::uint32_t> InsideAndNeighbors(
   const std::size_t n = geometry.NumberOfSamples;
   // Marked by several threads at once (all the same value).
   const std::unique_ptr<std::atomic<unsigned char>[]> listed = FilledAtomics<unsigned char>(n, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      if (!inside[i] || geometry.IsTruncated(static_cast<std::size_t>(i)))
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 1024), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        continue;
+        if (!inside[i] || geometry.IsTruncated(static_cast<std::size_t>(i)))
+        {
+          continue;
+        }
+        const std::uint32_t* ids = geometry.NeighborsOf(static_cast<std::size_t>(i));
+        for (int m = 0; m < geometry.Stride; ++m)
+        {
+          listed[ids[m]].store(1, std::memory_order_relaxed);
+        }
       }
-      const std::uint32_t* ids = geometry.NeighborsOf(static_cast<std::size_t>(i));
-      for (int m = 0; m < geometry.Stride; ++m)
-      {
-        listed[ids[m]].store(1, std::memory_order_relaxed);
-      }
-    }
-  });
+    });
   return IndicesWhere<std::uint32_t>(
     n, [&](std::size_t i) { return listed[i].load(std::memory_order_relaxed) != 0; });
 }
@@ -421,13 +422,14 @@ bool SignedDistanceToCrossings(const Neighborhoods& geometry,
     return false;
   }
   phi.resize(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const double d = std::min(std::sqrt(distance[i]), halfWidth);
-      phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double d = std::min(std::sqrt(distance[i]), halfWidth);
+        phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
+      }
+    });
   return true;
 }
 

@@ -100,12 +100,13 @@ std::vector<double> RadiusBounds(const Neighborhoods& geometry)
     return bounds;
   }
   bounds.resize(n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (std::size_t i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end); ++i)
-    {
-      bounds[i] = RadiusBound(geometry, i);
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+      for (std::size_t i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end); ++i)
+      {
+        bounds[i] = RadiusBound(geometry, i);
+      }
+    });
   return bounds;
 }
 
@@ -231,8 +232,8 @@ bool HaloReachBox(const Neighborhoods& geometry, double factor, double band, dou
     // not), then with one four times as wide (the bound nearer h_i, its cost four times).
     auto stillPassing = [&](const std::vector<std::uint32_t>& samples, std::size_t half) {
       std::vector<char> pass(samples.size());
-      vtkSMPTools::For(
-        0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()),
+        BalancedGrain(samples.size(), 16384), [&](vtkIdType begin, vtkIdType end) {
           std::vector<double> scratch;
           for (vtkIdType k = begin; k < end; ++k)
           {

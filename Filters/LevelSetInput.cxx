@@ -119,36 +119,38 @@ std::string CheckPiece(vtkPointSet* input, vtkDataArray* scalars, int associatio
   // value), else through vtkDataArray.
   // (vtkDataArray's GetComponent is not safe from threads; GetTuple into a buffer is.)
   auto readValues = [&](auto* array) {
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      std::array<double, 2>& r = ranges.Local();
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        ValueInto(array, i, values[i]);
-        if (!std::isfinite(values[i]))
+    vtkSMPTools::For(
+      0, n, BalancedGrain(static_cast<std::size_t>(n), 16384), [&](vtkIdType begin, vtkIdType end) {
+        std::array<double, 2>& r = ranges.Local();
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          lower(badValue, i);
+          ValueInto(array, i, values[i]);
+          if (!std::isfinite(values[i]))
+          {
+            lower(badValue, i);
+          }
+          r[0] = std::min(r[0], values[i]);
+          r[1] = std::max(r[1], values[i]);
         }
-        r[0] = std::min(r[0], values[i]);
-        r[1] = std::max(r[1], values[i]);
-      }
-    });
+      });
   };
   if (!vtkArrayDispatch::Dispatch::Execute(scalars, readValues))
   {
     readValues(scalars);
   }
   auto checkPoints = [&](auto* array) {
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        double x[3];
-        PointInto(array, i, x);
-        if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    vtkSMPTools::For(
+      0, n, BalancedGrain(static_cast<std::size_t>(n), 16384), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          lower(badPoint, i);
+          double x[3];
+          PointInto(array, i, x);
+          if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+          {
+            lower(badPoint, i);
+          }
         }
-      }
-    });
+      });
   };
   vtkDataArray* coordinates = input->GetPoints()->GetData();
   if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
@@ -274,13 +276,14 @@ void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>
   const std::size_t n = geometry.NumberOfSamples;
   ResizeMappedInParallel(dataOffsets, n);
   ResizeMappedInParallel(dataSign, n);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      dataOffsets[i] = values[geometry.Order[i]] - isoValue;
-      dataSign[i] = Sign(dataOffsets[i]);
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        dataOffsets[i] = values[geometry.Order[i]] - isoValue;
+        dataSign[i] = Sign(dataOffsets[i]);
+      }
+    });
 }
 
 } // namespace lsi

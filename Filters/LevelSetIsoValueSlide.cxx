@@ -95,18 +95,19 @@ std::vector<std::uint32_t> FarthestFirst(const IsopointSet& isopoints, double va
     return std::vector<std::uint32_t>();
   }
   std::vector<double> predicted(count);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      Eigen::Vector3d g;
-      Eigen::Matrix3d h;
-      LoadModel(&isopoints.FitModels[ModelSize * i], g, h);
-      const Eigen::Vector3d n(&isopoints.Normals[3 * i]);
-      const double slope = -g.dot(n);
-      predicted[i] =
-        slope > 0.0 ? std::abs(StepToQuadraticZero(-valueChange, slope, n.dot(h * n))) : HUGE_VAL;
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        Eigen::Vector3d g;
+        Eigen::Matrix3d h;
+        LoadModel(&isopoints.FitModels[ModelSize * i], g, h);
+        const Eigen::Vector3d n(&isopoints.Normals[3 * i]);
+        const double slope = -g.dot(n);
+        predicted[i] =
+          slope > 0.0 ? std::abs(StepToQuadraticZero(-valueChange, slope, n.dot(h * n))) : HUGE_VAL;
+      }
+    });
   // (A strict order: the longest first, ties by index. The first points are those not after
   // the one in place first - 1; both groups then keep storage order.)
   auto before = [&](std::uint32_t a, std::uint32_t b) {
@@ -516,27 +517,28 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   constexpr std::size_t Candidates = 8;
   const std::size_t k = std::min(Candidates, index.Size());
   std::atomic<bool> near(true);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
-    std::uint32_t ids[Candidates];
-    double d2[Candidates];
-    for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
-    {
-      const double extra = edgeReach(moved[m]);
-      const double reach = largestMove + margin + extra;
-      const std::size_t found =
-        index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);
-      bool passed = false;
-      for (std::size_t j = 0; j < found && !passed; ++j)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), BalancedGrain(moved.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::uint32_t ids[Candidates];
+      double d2[Candidates];
+      for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
       {
-        const double within = moves[ids[j]] + margin + extra;
-        passed = d2[j] <= within * within;
+        const double extra = edgeReach(moved[m]);
+        const double reach = largestMove + margin + extra;
+        const std::size_t found =
+          index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);
+        bool passed = false;
+        for (std::size_t j = 0; j < found && !passed; ++j)
+        {
+          const double within = moves[ids[j]] + margin + extra;
+          passed = d2[j] <= within * within;
+        }
+        if (!passed)
+        {
+          near = false;
+        }
       }
-      if (!passed)
-      {
-        near = false;
-      }
-    }
-  });
+    });
   return near;
 }
 
@@ -546,37 +548,38 @@ bool ClampedSamplesClear(const Neighborhoods& geometry, const std::vector<double
 {
   const std::size_t count = std::min(points.size() / 3, nearEdge.size());
   std::atomic<bool> clear(true);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end && clear.load(std::memory_order_relaxed); ++i)
-    {
-      if (!nearEdge[i] || (kept && !(*kept)[i]))
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end && clear.load(std::memory_order_relaxed); ++i)
       {
-        continue;
+        if (!nearEdge[i] || (kept && !(*kept)[i]))
+        {
+          continue;
+        }
+        const double* p = &points[3 * i];
+        std::uint32_t nearest;
+        double d2;
+        if (geometry.Index->Nearest(p, 1, &nearest, &d2) == 0)
+        {
+          continue;
+        }
+        // (Searched within twice the nearest sample's radius: the Inside rule's bound.)
+        const double search = 2.0 * geometry.RadiusOf(nearest) + margin;
+        const bool found =
+          geometry.Index->AnyWithin(p, search * search, [&](std::uint32_t j, double distance2) {
+            if (std::abs(phi[j]) < halfWidth)
+            {
+              return false;
+            }
+            const double shell = geometry.RadiusOf(j) + margin;
+            return distance2 < shell * shell;
+          });
+        if (found)
+        {
+          clear = false;
+        }
       }
-      const double* p = &points[3 * i];
-      std::uint32_t nearest;
-      double d2;
-      if (geometry.Index->Nearest(p, 1, &nearest, &d2) == 0)
-      {
-        continue;
-      }
-      // (Searched within twice the nearest sample's radius: the Inside rule's bound.)
-      const double search = 2.0 * geometry.RadiusOf(nearest) + margin;
-      const bool found =
-        geometry.Index->AnyWithin(p, search * search, [&](std::uint32_t j, double distance2) {
-          if (std::abs(phi[j]) < halfWidth)
-          {
-            return false;
-          }
-          const double shell = geometry.RadiusOf(j) + margin;
-          return distance2 < shell * shell;
-        });
-      if (found)
-      {
-        clear = false;
-      }
-    }
-  });
+    });
   return clear;
 }
 
@@ -622,8 +625,8 @@ BandGradients GradientsInBand(const Neighborhoods& geometry, const std::vector<d
   }
   geometry.EnsureStencils(missing);
   band.Norms.resize(band.Samples.size());
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(band.Samples.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(band.Samples.size()),
+    BalancedGrain(band.Samples.size(), 1024), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
       {
         double norm = keptAt(k);
@@ -651,8 +654,8 @@ std::vector<std::size_t> ShiftLevelSet(const Neighborhoods& geometry,
   const BandGradients band =
     GradientsInBand(geometry, values, halfWidth, phi, candidates, candidateGradients);
   // (Each sample's phi is read and written by its own iteration alone.)
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(band.Samples.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(band.Samples.size()),
+    BalancedGrain(band.Samples.size(), 16384), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
       {
         double& value = phi[band.Samples[k]];

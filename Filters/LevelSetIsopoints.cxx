@@ -191,29 +191,31 @@ void RoughIsopoints(const Neighborhoods& geometry, const std::vector<double>& ph
     }
   };
   std::vector<std::size_t> offsets(front.size() + 1, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      std::size_t count = 0;
-      forEachAcceptedPair(front[k], [&](const Eigen::Vector3d&) { ++count; });
-      offsets[k + 1] = count;
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), BalancedGrain(front.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        std::size_t count = 0;
+        forEachAcceptedPair(front[k], [&](const Eigen::Vector3d&) { ++count; });
+        offsets[k + 1] = count;
+      }
+    });
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
   points.assign(3 * offsets.back(), 0.0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      std::size_t slot = offsets[k];
-      forEachAcceptedPair(front[k], [&](const Eigen::Vector3d& p) {
-        for (int d = 0; d < 3; ++d)
-        {
-          points[3 * slot + d] = p[d];
-        }
-        ++slot;
-      });
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(front.size()), BalancedGrain(front.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        std::size_t slot = offsets[k];
+        forEachAcceptedPair(front[k], [&](const Eigen::Vector3d& p) {
+          for (int d = 0; d < 3; ++d)
+          {
+            points[3 * slot + d] = p[d];
+          }
+          ++slot;
+        });
+      }
+    });
 }
 
 } // namespace

@@ -173,43 +173,45 @@ std::vector<std::size_t> ThinnedVoxels(
     std::size_t Index;
   };
   UninitializedVector<Entry> entries(count); // (written below, in parallel)
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      const std::size_t i = static_cast<std::size_t>(k);
-      entries[i] = { VoxelKey(pointOf(i), cell), i };
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        const std::size_t i = static_cast<std::size_t>(k);
+        entries[i] = { VoxelKey(pointOf(i), cell), i };
+      }
+    });
   ParallelSort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return a.Key < b.Key || (a.Key == b.Key && a.Index < b.Index);
   });
   // The runs in parallel: a piece of the entries takes the runs that begin in it (to their
   // ends), and marks each run's winner; the winners are then listed in index order.
   UninitializedVector<char> won = FilledInParallel<char>(count, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    std::size_t first = static_cast<std::size_t>(begin);
-    while (first > 0 && first < static_cast<std::size_t>(end) &&
-      entries[first].Key == entries[first - 1].Key)
-    {
-      ++first; // this run began in the piece before
-    }
-    while (first < static_cast<std::size_t>(end))
-    {
-      std::size_t winner = entries[first].Index, k = first + 1;
-      for (; k < count && entries[k].Key == entries[first].Key; ++k)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::size_t first = static_cast<std::size_t>(begin);
+      while (first > 0 && first < static_cast<std::size_t>(end) &&
+        entries[first].Key == entries[first - 1].Key)
       {
-        // (A preferred point, the lowest index, comes first in its run and keeps the voxel.)
-        const double* x = pointOf(entries[k].Index);
-        const double* best = pointOf(winner);
-        if (winner >= preferred && std::lexicographical_compare(x, x + 3, best, best + 3))
-        {
-          winner = entries[k].Index;
-        }
+        ++first; // this run began in the piece before
       }
-      won[winner] = 1;
-      first = k;
-    }
-  });
+      while (first < static_cast<std::size_t>(end))
+      {
+        std::size_t winner = entries[first].Index, k = first + 1;
+        for (; k < count && entries[k].Key == entries[first].Key; ++k)
+        {
+          // (A preferred point, the lowest index, comes first in its run and keeps the voxel.)
+          const double* x = pointOf(entries[k].Index);
+          const double* best = pointOf(winner);
+          if (winner >= preferred && std::lexicographical_compare(x, x + 3, best, best + 3))
+          {
+            winner = entries[k].Index;
+          }
+        }
+        won[winner] = 1;
+        first = k;
+      }
+    });
   return IndicesWhere<std::size_t>(count, [&](std::size_t i) { return won[i] != 0; });
 }
 

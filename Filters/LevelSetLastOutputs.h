@@ -211,12 +211,13 @@ struct LastOutputs
   static std::vector<char> InsideOf(const std::vector<double>& phi)
   {
     std::vector<char> inside(phi.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(phi.size()), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        inside[i] = phi[i] > 0.0;
-      }
-    });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(phi.size()), BalancedGrain(phi.size(), 16384),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          inside[i] = phi[i] > 0.0;
+        }
+      });
     return inside;
   }
 };

@@ -185,18 +185,19 @@ void PointBounds(vtkPoints* points, double bounds[6])
     std::array<double, 6>{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL });
   auto scan = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      std::array<double, 6>& b = local.Local();
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
+    vtkSMPTools::For(
+      0, n, BalancedGrain(static_cast<std::size_t>(n), 16384), [&](vtkIdType begin, vtkIdType end) {
+        std::array<double, 6>& b = local.Local();
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          const double x = static_cast<double>(xyz[i][k]);
-          b[2 * k] = std::min(b[2 * k], x);
-          b[2 * k + 1] = std::max(b[2 * k + 1], x);
+          for (int k = 0; k < 3; ++k)
+          {
+            const double x = static_cast<double>(xyz[i][k]);
+            b[2 * k] = std::min(b[2 * k], x);
+            b[2 * k + 1] = std::max(b[2 * k + 1], x);
+          }
         }
-      }
-    });
+      });
   };
   WithTypedCoordinates(points->GetData(), scan);
   const double empty[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
@@ -229,14 +230,15 @@ UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhood
   AdviseHugePages(words);
   auto makeKeys = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const double x[3] = { static_cast<double>(xyz[i][0]), static_cast<double>(xyz[i][1]),
-          static_cast<double>(xyz[i][2]) };
-        words[i] = PackedMortonKey(x, lower, size, static_cast<std::uint32_t>(i));
-      }
-    });
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const double x[3] = { static_cast<double>(xyz[i][0]), static_cast<double>(xyz[i][1]),
+            static_cast<double>(xyz[i][2]) };
+          words[i] = PackedMortonKey(x, lower, size, static_cast<std::uint32_t>(i));
+        }
+      });
   };
   WithTypedCoordinates(coordinates, makeKeys);
   {
@@ -251,17 +253,18 @@ UninitializedVector<std::uint64_t> SortSpatially(vtkPoints* points, Neighborhood
   AdviseHugePages(out.Positions);
   auto gather = [&](auto* array) {
     const auto xyz = vtk::DataArrayTupleRange<3>(array);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const std::uint32_t id = static_cast<std::uint32_t>(words[i]); // the low 32 bits
-        out.Order[i] = id;
-        for (int k = 0; k < 3; ++k)
+    vtkSMPTools::For(
+      0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          out.Positions[3 * i + k] = static_cast<double>(xyz[id][k]);
+          const std::uint32_t id = static_cast<std::uint32_t>(words[i]); // the low 32 bits
+          out.Order[i] = id;
+          for (int k = 0; k < 3; ++k)
+          {
+            out.Positions[3 * i + k] = static_cast<double>(xyz[id][k]);
+          }
         }
-      }
-    });
+      });
   };
   WithTypedCoordinates(coordinates, gather);
   FindDuplicates(words, out);
@@ -279,15 +282,17 @@ double MeanRadiusOver(
   const std::size_t step = (sample.size() + most - 1) / most;
   const std::size_t count = (sample.size() + step - 1) / step;
   std::vector<double> radii(count);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    std::vector<std::uint32_t> ids(static_cast<std::size_t>(geometry.Stride));
-    double nearby = 0.0; // (a bound for the search only: the lists are exact either way)
-    for (vtkIdType m = begin; m < end; ++m)
-    {
-      radii[m] = geometry.SearchRow(sample[static_cast<std::size_t>(m) * step], nearby, ids.data());
-      nearby = radii[m];
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::vector<std::uint32_t> ids(static_cast<std::size_t>(geometry.Stride));
+      double nearby = 0.0; // (a bound for the search only: the lists are exact either way)
+      for (vtkIdType m = begin; m < end; ++m)
+      {
+        radii[m] =
+          geometry.SearchRow(sample[static_cast<std::size_t>(m) * step], nearby, ids.data());
+        nearby = radii[m];
+      }
+    });
   double sum = 0.0;
   for (const double radius : radii)
   {
@@ -561,12 +566,13 @@ bool BuildTree(
   // order it refines): map each back to its input point id.
   UninitializedVector<std::uint32_t> order(n);
   AdviseHugePages(order);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      order[i] = out.Order[build->TreeOrder[i]];
-    }
-  });
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 1024), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        order[i] = out.Order[build->TreeOrder[i]];
+      }
+    });
   out.Order.swap(order);
   return true;
 }

@@ -174,8 +174,8 @@ struct Neighborhoods
     if (this->SampleEvery != every)
     {
       std::vector<char> chosen(this->NumberOfSamples);
-      vtkSMPTools::For(
-        0, static_cast<vtkIdType>(this->NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(this->NumberOfSamples),
+        BalancedGrain(this->NumberOfSamples, 1024), [&](vtkIdType begin, vtkIdType end) {
           for (vtkIdType i = begin; i < end; ++i)
           {
             chosen[i] = this->InRadiusSample(static_cast<std::size_t>(i), every);

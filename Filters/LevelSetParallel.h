@@ -64,11 +64,13 @@ private:
   bool Stopped = false;
 };
 
-/// A grain for vtkSMPTools::For over `count` items of uneven cost: 32 pieces per thread, so that a
-/// thread left without work at the end waits for at most a thirty-second of its share
-/// (vtkSMPTools' own grain makes 4 pieces per thread); but at least `minimum` items per piece,
-/// as many as cost about what handing out a piece does (a few microseconds): fewer items than
-/// that run on the calling thread.
+/// A grain for vtkSMPTools::For over `count` items: 32 pieces per thread, so that a thread left
+/// without work at the end waits for at most a thirty-second of its share (vtkSMPTools' own
+/// grain makes 4 pieces per thread: on two threads here, loops of 1-30 ms then left 10-20% of
+/// their cores idle at their ends, about 0.1 s per run at 2M samples); but at least `minimum`
+/// items per piece, as many as cost about what handing out a piece does (a few microseconds):
+/// fewer items than that run on the calling thread, without starting the pool. Every loop over
+/// samples takes one: 16384 for cheap bodies, 1024 for those that read neighbours.
 inline vtkIdType BalancedGrain(std::size_t count, std::size_t minimum)
 {
   const std::size_t pieces =
@@ -103,12 +105,13 @@ template <typename T>
 std::unique_ptr<std::atomic<T>[]> FilledAtomics(std::size_t count, T value) {
   std::unique_ptr<std::atomic<T>[]> marks(new std::atomic<T>[count]);
   AdviseHugePages(marks.get(), sizeof(std::atomic<T>) * count);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      marks[i].store(value, std::memory_order_relaxed);
-    }
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        marks[i].store(value, std::memory_order_relaxed);
+      }
+    });
   return marks;
 }
 
@@ -119,9 +122,10 @@ UninitializedVector<T> FilledInParallel(std::size_t count, T value)
 {
   UninitializedVector<T> values(count);
   AdviseHugePages(values);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    std::fill(values.begin() + begin, values.begin() + end, value);
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::fill(values.begin() + begin, values.begin() + end, value);
+    });
   return values;
 }
 
@@ -133,12 +137,10 @@ template <typename Vector>
 void ResizeMappedInParallel(
   Vector& values, std::size_t count, const typename Vector::value_type& value = {})
 {
+  // (Only new storage: a vector's own beyond its size was written when it was longer.)
   if (count > values.capacity())
   {
     values.reserve(count);
-  }
-  if (count > values.size())
-  {
     char* begin = reinterpret_cast<char*>(values.data() + values.size());
     const std::size_t bytes = (count - values.size()) * sizeof(typename Vector::value_type);
     AdviseHugePages(begin, bytes);
@@ -161,9 +163,10 @@ UninitializedVector<T> CopiedInParallel(const std::vector<T, Allocator>& values)
 {
   UninitializedVector<T> copy(values.size());
   AdviseHugePages(copy);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
-    std::copy(values.begin() + begin, values.begin() + end, copy.begin() + begin);
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), BalancedGrain(values.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::copy(values.begin() + begin, values.begin() + end, copy.begin() + begin);
+    });
   return copy;
 }
 
@@ -173,9 +176,10 @@ void AssignInParallel(std::vector<T>& to, const std::vector<T>& from)
 {
   to.clear();
   ResizeMappedInParallel(to, from.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(from.size()), [&](vtkIdType begin, vtkIdType end) {
-    std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
-  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(from.size()), BalancedGrain(from.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+    });
 }
 
 /// The indices i < count for which keep(i) holds, in increasing order, into `out`: found in fixed
@@ -207,12 +211,16 @@ void IndicesWhere(std::size_t count, Keep&& keep, std::vector<Index>& out)
     offsets[c + 1] = offsets[c] + found[c].size();
   }
   ResizeMappedInParallel(out, offsets[chunks]);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType c = first; c < last; ++c)
-    {
-      std::copy(found[c].begin(), found[c].end(), out.begin() + offsets[c]);
-    }
-  });
+  // (A short list is copied on this thread: handing out the copies would cost more.)
+  constexpr std::size_t ParallelCopyFrom = std::size_t(1) << 16;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks),
+    offsets[chunks] < ParallelCopyFrom ? static_cast<vtkIdType>(chunks) : 1,
+    [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        std::copy(found[c].begin(), found[c].end(), out.begin() + offsets[c]);
+      }
+    });
 }
 
 /// The same, as a new vector.
@@ -292,9 +300,10 @@ void ParallelSort(Iterator first, Iterator last, Less less)
             first + middle + (d1 - a1), merged.begin() + (from + d0), less);
         }
       });
-    vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-      std::copy(merged.begin() + begin, merged.begin() + end, first + begin);
-    });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+      [&](vtkIdType begin, vtkIdType end) {
+        std::copy(merged.begin() + begin, merged.begin() + end, first + begin);
+      });
   }
 }
 

@@ -69,17 +69,18 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   {
     // Each input point is one sample (its images, past the points, are left out): written
     // straight into the array, in parallel (distinct ids), over zeros.
-    vtkSMPTools::For(
-      0, n, [&](vtkIdType begin, vtkIdType end) { std::fill(out + begin, out + end, 0.0); });
-    vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+    vtkSMPTools::For(0, n, BalancedGrain(static_cast<std::size_t>(n), 16384),
+      [&](vtkIdType begin, vtkIdType end) { std::fill(out + begin, out + end, 0.0); });
+    vtkSMPTools::For(0, samples, BalancedGrain(static_cast<std::size_t>(samples), 16384),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          out[geometry.Order[i]] = phi[i];
+          if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+          {
+            out[geometry.Order[i]] = phi[i];
+          }
         }
-      }
-    });
+      });
   }
   else
   {
@@ -87,21 +88,23 @@ void MakeParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
     // point's.
     const vtkIdType distinct = 1 + *std::max_element(mergedId.begin(), mergedId.end());
     std::vector<double> value(static_cast<std::size_t>(distinct), 0.0);
-    vtkSMPTools::For(0, samples, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
+    vtkSMPTools::For(0, samples, BalancedGrain(static_cast<std::size_t>(samples), 1024),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          value[geometry.Order[i]] = phi[i];
+          if (static_cast<vtkIdType>(geometry.Order[i]) < distinct)
+          {
+            value[geometry.Order[i]] = phi[i];
+          }
         }
-      }
-    });
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        out[i] = value[mergedId[i]];
-      }
-    });
+      });
+    vtkSMPTools::For(
+      0, n, BalancedGrain(static_cast<std::size_t>(n), 1024), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          out[i] = value[mergedId[i]];
+        }
+      });
   }
   particles->GetPointData()->AddArray(levelSet);
 }
@@ -121,18 +124,19 @@ bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const vtkSmartPointer<vtkDoubleArray> levelSet = NewLevelSet(n, spare);
   double* out = levelSet->GetPointer(0);
   const double* before = last->GetPointer(0);
-  vtkSMPTools::For(0, n,
+  vtkSMPTools::For(0, n, BalancedGrain(static_cast<std::size_t>(n), 16384),
     [&](vtkIdType begin, vtkIdType end) { std::copy(before + begin, before + end, out + begin); });
-  vtkSMPTools::For(0, static_cast<vtkIdType>(changed.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      const std::size_t i = changed[k];
-      if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(changed.size()), BalancedGrain(changed.size(), 16384),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        out[geometry.Order[i]] = phi[i];
+        const std::size_t i = changed[k];
+        if (static_cast<vtkIdType>(geometry.Order[i]) < n)
+        {
+          out[geometry.Order[i]] = phi[i];
+        }
       }
-    }
-  });
+    });
   particles->GetPointData()->AddArray(levelSet);
   return true;
 }

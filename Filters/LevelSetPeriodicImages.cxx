@@ -159,8 +159,8 @@ std::vector<vtkIdType> OriginalIds(
   const Neighborhoods& geometry, vtkIdType originalCount, const std::vector<vtkIdType>& imageOf)
 {
   std::vector<vtkIdType> original(geometry.NumberOfSamples);
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(geometry.NumberOfSamples),
+    BalancedGrain(geometry.NumberOfSamples, 1024), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         const vtkIdType id = geometry.Order[i];

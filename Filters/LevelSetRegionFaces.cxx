@@ -76,27 +76,28 @@ std::size_t PointsNearRegionFaces(const Neighborhoods& geometry, const SPHField*
     return 0;
   }
   std::atomic<std::size_t> near(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    std::size_t local = 0;
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const double* x = &points[3 * i];
-      const double distance = DistanceToRegionFaces(x, region);
-      if (!(distance < HUGE_VAL))
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      std::size_t local = 0;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        continue;
+        const double* x = &points[3 * i];
+        const double distance = DistanceToRegionFaces(x, region);
+        if (!(distance < HUGE_VAL))
+        {
+          continue;
+        }
+        std::uint32_t sample;
+        double d2;
+        if (geometry.Index->Nearest(x, 1, &sample, &d2) != 1)
+        {
+          continue;
+        }
+        const double reach = field ? field->Support(sample) : 2.0 * geometry.RadiusOf(sample);
+        local += distance < reach ? 1 : 0;
       }
-      std::uint32_t sample;
-      double d2;
-      if (geometry.Index->Nearest(x, 1, &sample, &d2) != 1)
-      {
-        continue;
-      }
-      const double reach = field ? field->Support(sample) : 2.0 * geometry.RadiusOf(sample);
-      local += distance < reach ? 1 : 0;
-    }
-    near += local;
-  });
+      near += local;
+    });
   return near;
 }
 

@@ -62,25 +62,26 @@ SeedSphereStart SeedSphereDistance(const Neighborhoods& geometry,
   ResizeMappedInParallel(phi, n);
   const std::size_t sphereCount = spheres.size() / 4;
   vtkSMPThreadLocal<std::vector<std::size_t>> localCounts(std::vector<std::size_t>(sphereCount, 0));
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    std::vector<std::size_t>& counts = localCounts.Local();
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const double* x = geometry.Position(static_cast<std::size_t>(i));
-      double seed = spheres.empty() ? DBL_MAX : -DBL_MAX;
-      for (std::size_t s = 0; s < spheres.size(); s += 4)
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 1024), [&](vtkIdType begin, vtkIdType end) {
+      std::vector<std::size_t>& counts = localCounts.Local();
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        const double d = spheres[s + 3] -
-          std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
-            (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
-            (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
-        counts[s / 4] += d > 0.0 && ranks.Owns(static_cast<std::size_t>(i));
-        seed = std::max(seed, d);
+        const double* x = geometry.Position(static_cast<std::size_t>(i));
+        double seed = spheres.empty() ? DBL_MAX : -DBL_MAX;
+        for (std::size_t s = 0; s < spheres.size(); s += 4)
+        {
+          const double d = spheres[s + 3] -
+            std::sqrt((x[0] - spheres[s]) * (x[0] - spheres[s]) +
+              (x[1] - spheres[s + 1]) * (x[1] - spheres[s + 1]) +
+              (x[2] - spheres[s + 2]) * (x[2] - spheres[s + 2]));
+          counts[s / 4] += d > 0.0 && ranks.Owns(static_cast<std::size_t>(i));
+          seed = std::max(seed, d);
+        }
+        start.InSeed[i] = spheres.empty() || seed > 0.0;
+        phi[i] = std::min(seed, DistanceInsideBox(x, box));
       }
-      start.InSeed[i] = spheres.empty() || seed > 0.0;
-      phi[i] = std::min(seed, DistanceInsideBox(x, box));
-    }
-  });
+    });
   for (const std::vector<std::size_t>& counts : localCounts)
   {
     for (std::size_t s = 0; s < sphereCount; ++s)

@@ -40,16 +40,17 @@ vtkSmartPointer<vtkDataArray> PerCorner(vtkDataArray* source, vtkIdType count, i
   copy->SetNumberOfComponents(components);
   copy->SetNumberOfTuples(count * sides);
   auto repeat = [&](const auto* from, auto* to) {
-    vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        for (int k = 0; k < sides; ++k)
+    vtkSMPTools::For(0, count, BalancedGrain(static_cast<std::size_t>(count), 16384),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          std::copy(
-            from + i * components, from + (i + 1) * components, to + (i * sides + k) * components);
+          for (int k = 0; k < sides; ++k)
+          {
+            std::copy(from + i * components, from + (i + 1) * components,
+              to + (i * sides + k) * components);
+          }
         }
-      }
-    });
+      });
   };
   vtkDoubleArray* doubles = vtkDoubleArray::FastDownCast(source);
   vtkFloatArray* floats = vtkFloatArray::FastDownCast(source);
@@ -169,16 +170,17 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   connectivity->SetNumberOfValues(corners);
   vtkIdType* offset = offsets->GetPointer(0);
   vtkIdType* cornerIds = connectivity->GetPointer(0);
-  vtkSMPTools::For(0, count + 1, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      offset[p] = p * sides;
-      for (vtkIdType k = p * sides; p < count && k < (p + 1) * sides; ++k)
+  vtkSMPTools::For(0, count + 1, BalancedGrain(static_cast<std::size_t>(count + 1), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        cornerIds[k] = k;
+        offset[p] = p * sides;
+        for (vtkIdType k = p * sides; p < count && k < (p + 1) * sides; ++k)
+        {
+          cornerIds[k] = k;
+        }
       }
-    }
-  });
+    });
   vtkNew<vtkCellArray> polygons;
   polygons->SetData(offsets, connectivity);
 

@@ -218,15 +218,16 @@ bool SameValuesInStorageOrder(
   }
   const ValuesOf source(array);
   std::atomic<bool> same(true);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end && same.load(std::memory_order_relaxed); ++i)
-    {
-      if (!(values[i] == source(geometry.Order[i], 0)))
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), BalancedGrain(values.size(), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end && same.load(std::memory_order_relaxed); ++i)
       {
-        same = false;
+        if (!(values[i] == source(geometry.Order[i], 0)))
+        {
+          same = false;
+        }
       }
-    }
-  });
+    });
   return same;
 }
 

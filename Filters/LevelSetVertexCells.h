@@ -21,13 +21,14 @@ inline vtkNew<vtkCellArray> VertexCells(vtkIdType count)
   connectivity->SetNumberOfValues(count);
   AdviseHugePages(offsets->GetPointer(0), sizeof(vtkIdType) * static_cast<std::size_t>(count + 1));
   AdviseHugePages(connectivity->GetPointer(0), sizeof(vtkIdType) * static_cast<std::size_t>(count));
-  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      offsets->SetValue(i, i);
-      connectivity->SetValue(i, i);
-    }
-  });
+  vtkSMPTools::For(0, count, BalancedGrain(static_cast<std::size_t>(count), 1024),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        offsets->SetValue(i, i);
+        connectivity->SetValue(i, i);
+      }
+    });
   offsets->SetValue(count, count);
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);

@@ -171,8 +171,8 @@ void vtkLevelSetIsosurface::WarnIfSuspect(const lsi::Neighborhoods& geometry,
   }
   // (Counted in parallel: whole numbers, the same in any order.)
   vtkSMPThreadLocal<std::array<std::size_t, 3>> local({ 0, 0, 0 });
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(geometry.NumberOfSamples), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(geometry.NumberOfSamples),
+    lsi::BalancedGrain(geometry.NumberOfSamples, 1024), [&](vtkIdType begin, vtkIdType end) {
       std::array<std::size_t, 3>& c = local.Local();
       for (vtkIdType i = begin; i < end; ++i)
       {

@@ -319,8 +319,8 @@ void vtkLevelSetIsosurface::KeepForSlides(vtkPointSet* work, const lsi::Neighbor
   lsi::ResizeMapped(last.Values, dataOffsets.size());
   const double isoValue = this->IsoValue;
   const bool onField = field != nullptr;
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(dataOffsets.size()),
+    lsi::BalancedGrain(dataOffsets.size(), 16384), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         // On the SPH field, the field at the samples (to rounding): what the flood uses.
@@ -474,8 +474,8 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const double isoValue = this->IsoValue;
   std::vector<double>& dataOffsets = last.DataOffsets;
   dataOffsets.resize(last.Values.size());
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(dataOffsets.size()), [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(dataOffsets.size()),
+    lsi::BalancedGrain(dataOffsets.size(), 16384), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         dataOffsets[i] = last.Values[i] - isoValue;

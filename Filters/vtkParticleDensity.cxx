@@ -82,15 +82,16 @@ void NeighborReachBox(const std::vector<double>& xyz, std::size_t k, double box[
   std::vector<double> reach(n);
   // (On std::threads, as the densities below: VTK's global backend may be Sequential.)
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [&]() {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      std::vector<std::uint32_t> ids(k);
-      std::vector<double> d2(k);
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const std::size_t found = index.Nearest(&xyz[3 * i], k, ids.data(), d2.data());
-        reach[i] = std::sqrt(d2[found - 1]);
-      }
-    });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), lsi::BalancedGrain(n, 1024),
+      [&](vtkIdType begin, vtkIdType end) {
+        std::vector<std::uint32_t> ids(k);
+        std::vector<double> d2(k);
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const std::size_t found = index.Nearest(&xyz[3 * i], k, ids.data(), d2.data());
+          reach[i] = std::sqrt(d2[found - 1]);
+        }
+      });
   });
   for (std::size_t i = 0; i < n; ++i)
   {
