@@ -85,20 +85,8 @@ UninitializedVector<double> CompletionCandidates(
         }
       }
     });
-  // Joined in block order, each block copied to its place by whichever thread takes it.
-  std::vector<std::size_t> offsets(found.size() + 1, 0);
-  for (std::size_t b = 0; b < found.size(); ++b)
-  {
-    offsets[b + 1] = offsets[b] + found[b].size();
-  }
-  UninitializedVector<double> candidates(offsets.back());
-  vtkSMPTools::For(
-    0, static_cast<vtkIdType>(found.size()), 1, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType b = first; b < last; ++b)
-      {
-        std::copy(found[b].begin(), found[b].end(), candidates.begin() + offsets[b]);
-      }
-    });
+  UninitializedVector<double> candidates(JoinedSize(found)); // joined in block order
+  JoinInParallel(found, candidates.begin());
   return candidates;
 }
 } // namespace

@@ -97,11 +97,8 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
     });
   // Their lists, in parallel: the searches below start there, and the distances after the
   // flood read them anyway (InsideAndNeighbors).
-  std::vector<std::uint32_t> allStarts;
-  for (const std::vector<std::uint32_t>& starts : found)
-  {
-    allStarts.insert(allStarts.end(), starts.begin(), starts.end());
-  }
+  std::vector<std::uint32_t> allStarts(JoinedSize(found));
+  JoinInParallel(found, allStarts.begin());
   geometry.EnsureNeighbors(allStarts);
   for (const std::vector<std::uint32_t>& starts : found)
   {

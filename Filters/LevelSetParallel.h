@@ -157,16 +157,21 @@ void ResizeMappedInParallel(
   values.resize(count, value);
 }
 
+/// Copies `count` values from `from` to `to`, in parallel pieces.
+template <typename From, typename To>
+void CopyInParallel(From from, std::size_t count, To to)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
+    [&](vtkIdType begin, vtkIdType end) { std::copy(from + begin, from + end, to + begin); });
+}
+
 /// A copy of `values`, written in parallel (its pages fault in on every thread at once).
 template <typename T, typename Allocator>
 UninitializedVector<T> CopiedInParallel(const std::vector<T, Allocator>& values)
 {
   UninitializedVector<T> copy(values.size());
   AdviseHugePages(copy);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), BalancedGrain(values.size(), 16384),
-    [&](vtkIdType begin, vtkIdType end) {
-      std::copy(values.begin() + begin, values.begin() + end, copy.begin() + begin);
-    });
+  CopyInParallel(values.begin(), values.size(), copy.begin());
   return copy;
 }
 
@@ -176,9 +181,41 @@ void AssignInParallel(std::vector<T>& to, const std::vector<T>& from)
 {
   to.clear();
   ResizeMappedInParallel(to, from.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(from.size()), BalancedGrain(from.size(), 16384),
-    [&](vtkIdType begin, vtkIdType end) {
-      std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+  CopyInParallel(from.begin(), from.size(), to.begin());
+}
+
+/// The total size of `parts`, joined in order.
+template <typename T>
+std::size_t JoinedSize(const std::vector<std::vector<T>>& parts)
+{
+  std::size_t total = 0;
+  for (const std::vector<T>& part : parts)
+  {
+    total += part.size();
+  }
+  return total;
+}
+
+/// Copies `parts`, joined in order, to `out` (JoinedSize values): each part to its place by
+/// whichever thread takes it; a short join on this thread (handing out the copies would cost
+/// more).
+template <typename T, typename Out>
+void JoinInParallel(const std::vector<std::vector<T>>& parts, Out out)
+{
+  std::vector<std::size_t> offsets(parts.size() + 1, 0);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+  {
+    offsets[p + 1] = offsets[p] + parts[p].size();
+  }
+  constexpr std::size_t ParallelFrom = std::size_t(1) << 16;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(parts.size()),
+    offsets.back() < ParallelFrom ? std::max<vtkIdType>(1, static_cast<vtkIdType>(parts.size()))
+                                  : 1,
+    [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType p = first; p < last; ++p)
+      {
+        std::copy(parts[p].begin(), parts[p].end(), out + offsets[p]);
+      }
     });
 }
 
@@ -205,22 +242,8 @@ void IndicesWhere(std::size_t count, Keep&& keep, std::vector<Index>& out)
       }
     }
   });
-  std::vector<std::size_t> offsets(chunks + 1, 0);
-  for (std::size_t c = 0; c < chunks; ++c)
-  {
-    offsets[c + 1] = offsets[c] + found[c].size();
-  }
-  ResizeMappedInParallel(out, offsets[chunks]);
-  // (A short list is copied on this thread: handing out the copies would cost more.)
-  constexpr std::size_t ParallelCopyFrom = std::size_t(1) << 16;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks),
-    offsets[chunks] < ParallelCopyFrom ? static_cast<vtkIdType>(chunks) : 1,
-    [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType c = first; c < last; ++c)
-      {
-        std::copy(found[c].begin(), found[c].end(), out.begin() + offsets[c]);
-      }
-    });
+  ResizeMappedInParallel(out, JoinedSize(found));
+  JoinInParallel(found, out.begin());
 }
 
 /// The same, as a new vector.
@@ -300,10 +323,7 @@ void ParallelSort(Iterator first, Iterator last, Less less)
             first + middle + (d1 - a1), merged.begin() + (from + d0), less);
         }
       });
-    vtkSMPTools::For(0, static_cast<vtkIdType>(count), BalancedGrain(count, 16384),
-      [&](vtkIdType begin, vtkIdType end) {
-        std::copy(merged.begin() + begin, merged.begin() + end, first + begin);
-      });
+    CopyInParallel(merged.begin(), static_cast<std::size_t>(count), first);
   }
 }
 
