@@ -16,7 +16,8 @@
 //     and back, their mean and largest seconds and how many slid, against the grid route's
 //     re-contour of the same changes;
 //   - output-only changes (to splats, a new SplatScale) against the method's run;
-//   - the whole filter with 1 and with 2 threads;
+//   - the whole filter with 1 and with 2 threads, with the kernel's seconds and the page faults of
+//     each (ProcessUsage.h: on a virtual machine here they cost 12-25 us each, and vary);
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
 //     profile, per stage, of that first run and of re-runs after the small isovalue change (the
@@ -32,6 +33,7 @@
 #include "ExactEnclosed.h"
 #include "GridRoute.h"
 #include "PeakMemory.h"
+#include "ProcessUsage.h"
 #include "StageClock.h"
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
@@ -239,15 +241,22 @@ std::array<double, 2> AddThreadComparison(
   vtkSmartPointer<StageClock> clock;
   std::array<vtkSmartPointer<StageClock>, 2> clocks = { vtkSmartPointer<StageClock>::New(),
     vtkSmartPointer<StageClock>::New() };
+  // And what the kernel did for each run (system seconds, page faults), summed per thread count.
+  lsi::ProcessUsage before;
+  std::array<lsi::ProcessUsage, 2> kernel{};
   const std::array<double, 2> seconds = SecondsWithOneAndTwoThreads(
     particles,
     [&](vtkLevelSetIsosurface* timed) {
       SetCaseInputs(timed, c);
       clock = vtkSmartPointer<StageClock>::New();
       clock->Observe(timed);
+      before = lsi::ProcessUsage::Now();
     },
     repeats, &busy,
     [&](int threads, vtkLevelSetIsosurface* timed, double wall) {
+      const lsi::ProcessUsage used = lsi::ProcessUsage::Now() - before;
+      kernel[threads - 1].SystemSeconds += used.SystemSeconds;
+      kernel[threads - 1].MinorFaults += used.MinorFaults;
       const std::array<double, 8> run = Stages(timed, wall);
       for (std::size_t k = 0; k < run.size(); ++k)
       {
@@ -263,6 +272,13 @@ std::array<double, 2> AddThreadComparison(
   report.Add("level_set.two_threads_s", seconds[1]);
   report.Add("level_set.one_thread_busy_fraction", busy[0]);
   report.Add("level_set.two_threads_busy_fraction", busy[1]);
+  // Per run, over all the runs: the kernel's seconds (all threads) and the page faults.
+  for (int t = 0; t < 2; ++t)
+  {
+    const std::string name = t == 0 ? "level_set.one_thread" : "level_set.two_threads";
+    report.Add(name + "_system_s_per_run", kernel[t].SystemSeconds / repeats);
+    report.Add(name + "_page_faults_per_run", kernel[t].MinorFaults / repeats);
+  }
   // Each stage's own ratio: where the serial parts are (the lists and stencils that one stage
   // computes ahead on a spare thread, another computes on one thread: read stages together).
   for (std::size_t k = 0; k < StageNames.size(); ++k)
