@@ -17,7 +17,7 @@
 //     re-contour of the same changes;
 //   - output-only changes (to splats, a new SplatScale) against the method's run;
 //   - the whole filter with 1 and with 2 threads, with the kernel's seconds and the page faults of
-//     each (ProcessUsage.h: on a virtual machine here they cost 12-25 us each, and vary);
+//     each (ProcessUsage.h: on a virtual machine here 11-25 us of kernel time per fault);
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
 //     profile, per stage, of that first run and of re-runs after the small isovalue change (the

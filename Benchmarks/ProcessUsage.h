@@ -1,9 +1,10 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // What the kernel did for this process: its system seconds and minor page faults, all threads
-// together (getrusage). On a virtual machine here a page fault costs 12-25 microseconds, and
-// that cost moves from one minute to the next: a run's system seconds show how much of its time
-// (and of the noise between runs) went there.
+// together (getrusage). On a virtual machine here a 2M-sample run's kernel time came to 11-25
+// microseconds per page fault (LevelSetInteractive --threads-only), and moved from one minute to
+// the next: a run's system seconds show how much of its time (and of the noise between runs)
+// went there.
 #ifndef ProcessUsage_h
 #define ProcessUsage_h
 
