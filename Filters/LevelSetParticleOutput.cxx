@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetParticleOutput.h"
 
+#include "LevelSetParallel.h"
 #include "LevelSetVertexCells.h"
 
 #include "vtkDoubleArray.h"
@@ -124,8 +125,7 @@ bool UpdateParticleOutput(vtkPointSet* input, const Neighborhoods& geometry,
   const vtkSmartPointer<vtkDoubleArray> levelSet = NewLevelSet(n, spare);
   double* out = levelSet->GetPointer(0);
   const double* before = last->GetPointer(0);
-  vtkSMPTools::For(0, n, BalancedGrain(static_cast<std::size_t>(n), 16384),
-    [&](vtkIdType begin, vtkIdType end) { std::copy(before + begin, before + end, out + begin); });
+  CopyInParallel(before, static_cast<std::size_t>(n), out);
   vtkSMPTools::For(0, static_cast<vtkIdType>(changed.size()), BalancedGrain(changed.size(), 16384),
     [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType k = begin; k < end; ++k)
