@@ -17,7 +17,9 @@
 //     re-contour of the same changes;
 //   - output-only changes (to splats, a new SplatScale) against the method's run;
 //   - the whole filter with 1 and with 2 threads, with the kernel's seconds and the page faults of
-//     each (ProcessUsage.h: on a virtual machine here 11-25 us of kernel time per fault);
+//     each (ProcessUsage.h: on a virtual machine here 11-25 us of kernel time per fault), and
+//     what two threads gave the machine's scattered reads just before and just after
+//     (ScatteredReads.h);
 //   - scaling: a first run at N and at 10 N particles, each in a child process of its own, with
 //     its peak resident memory per particle (the particles themselves included), and the
 //     profile, per stage, of that first run and of re-runs after the small isovalue change (the
@@ -34,6 +36,7 @@
 #include "GridRoute.h"
 #include "PeakMemory.h"
 #include "ProcessUsage.h"
+#include "ScatteredReads.h"
 #include "StageClock.h"
 #include "SurfaceMetrics.h"
 #include "SyntheticCases.h"
@@ -227,10 +230,14 @@ struct ChildRun
 
 // The first run on fresh filters on the same particles, 1 against 2 threads (the fastest of
 // `repeats` runs each, taken in turn), with how busy each kept its cores (a 1-thread run below 1
-// lost time to the machine), into `report`; returns the two times.
+// lost time to the machine), into `report`; returns the two times. Just before and just after,
+// what two threads gave the machine's scattered reads (ScatteredReads.h): the ceiling, at that
+// time, for the filter's memory-bound stages.
 std::array<double, 2> AddThreadComparison(
   Report& report, vtkPolyData* particles, const OneComponentCase& c, int repeats)
 {
+  lsi::ScatteredReads reads;
+  report.Add("machine.scattered_reads_two_thread_ratio_before", reads.TwoThreadRatio(repeats));
   std::array<double, 2> busy{};
   // Each stage's fastest time over the runs (each stage's own noise weighs less than in the
   // fastest run's stages).
@@ -268,6 +275,7 @@ std::array<double, 2> AddThreadComparison(
         clocks[threads - 1]->Cpu[k] += clock->Cpu[k];
       }
     });
+  report.Add("machine.scattered_reads_two_thread_ratio_after", reads.TwoThreadRatio(repeats));
   report.Add("level_set.one_thread_s", seconds[0]);
   report.Add("level_set.two_threads_s", seconds[1]);
   report.Add("level_set.one_thread_busy_fraction", busy[0]);

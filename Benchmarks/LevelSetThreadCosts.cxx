@@ -12,10 +12,11 @@
 // and the 1 / 2 thread ratio of the last two. The fastest of REPEATS (default 5) each. Reports
 // numbers and asserts nothing.
 //   LevelSetThreadCosts [REPEATS]
+#include "ScatteredReads.h"
+
 #include "vtkSMPTools.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -26,26 +27,6 @@
 namespace
 {
 constexpr vtkIdType Pieces = 64;
-
-double Seconds(const std::function<void()>& work)
-{
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The fastest of `repeats` runs of `work` on `threads` threads.
-double Fastest(int threads, int repeats, const std::function<void()>& work)
-{
-  double best = HUGE_VAL;
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-    for (int r = 0; r < repeats; ++r)
-    {
-      best = std::min(best, Seconds(work));
-    }
-  });
-  return best;
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -84,33 +65,15 @@ int main(int argc, char* argv[])
     });
   };
 
-  // Random reads: 16M doubles (128 MB), read at scattered places by a fixed pseudo-random walk.
-  const std::size_t size = std::size_t(1) << 24;
-  std::vector<double> data(size, 1.0);
-  constexpr std::size_t ReadsPerPiece = 1 << 19;
-  auto reads = [&]() {
-    vtkSMPTools::For(0, Pieces, 1, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        std::uint64_t state = 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(i + 1);
-        double sum = 0.0;
-        for (std::size_t r = 0; r < ReadsPerPiece; ++r)
-        {
-          state = state * 6364136223846793005ull + 1442695040888963407ull;
-          sum += data[(state >> 20) & (size - 1)];
-        }
-        sink[i] += sum;
-      }
-    });
-  };
-
-  const double overhead1 = Fastest(1, repeats, overhead) / Calls;
-  const double overhead2 = Fastest(2, repeats, overhead) / Calls;
-  const double arithmetic1 = Fastest(1, repeats, arithmetic);
-  const double arithmetic2 = Fastest(2, repeats, arithmetic);
-  const double reads1 = Fastest(1, repeats, reads);
-  const double reads2 = Fastest(2, repeats, reads);
-  double checksum = 0.0;
+  // Random reads over 128 MB (ScatteredReads.h, which LevelSetInteractive runs too).
+  lsi::ScatteredReads reads;
+  const double overhead1 = lsi::FastestOnThreads(1, repeats, overhead) / Calls;
+  const double overhead2 = lsi::FastestOnThreads(2, repeats, overhead) / Calls;
+  const double arithmetic1 = lsi::FastestOnThreads(1, repeats, arithmetic);
+  const double arithmetic2 = lsi::FastestOnThreads(2, repeats, arithmetic);
+  const double reads1 = reads.Seconds(1, repeats);
+  const double reads2 = reads.Seconds(2, repeats);
+  double checksum = reads.Checksum();
   for (double v : sink)
   {
     checksum += v;
