@@ -626,7 +626,7 @@ bool BuildNeighborhoods(
   AdviseHugePages(out.GradientStencil.get(), sizeof(float) * 3 * n * stride);
   out.StencilSlot.resize(n);
   out.NextStencilSlot.reset(new std::atomic<std::size_t>(0));
-  out.StencilState.assign(n, 0);
+  ResizeMappedInParallel(out.StencilState, n, static_cast<unsigned char>(0));
   std::vector<double> sampled; // flatness too is judged on the fixed sample
   sampled.reserve(3 * sample.size());
   for (const std::uint32_t i : sample)

@@ -173,22 +173,9 @@ struct Neighborhoods
   {
     if (this->SampleEvery != every)
     {
-      std::vector<char> chosen(this->NumberOfSamples);
-      vtkSMPTools::For(0, static_cast<vtkIdType>(this->NumberOfSamples),
-        BalancedGrain(this->NumberOfSamples, 1024), [&](vtkIdType begin, vtkIdType end) {
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            chosen[i] = this->InRadiusSample(static_cast<std::size_t>(i), every);
-          }
-        });
-      this->Sample.clear();
-      for (std::size_t i = 0; i < this->NumberOfSamples; ++i)
-      {
-        if (chosen[i])
-        {
-          this->Sample.push_back(static_cast<std::uint32_t>(i));
-        }
-      }
+      IndicesWhere<std::uint32_t>(
+        this->NumberOfSamples, [&](std::size_t i) { return this->InRadiusSample(i, every); },
+        this->Sample);
       this->SampleEvery = every;
     }
     std::vector<std::uint32_t> sample;
@@ -222,7 +209,7 @@ struct Neighborhoods
   struct RowStates
   {
     explicit RowStates(std::size_t n)
-      : State(new std::atomic<unsigned char>[n]())
+      : State(FilledAtomics<unsigned char>(n, 0)) // (in parallel: 20 MB at 20M samples)
       , Slot(new std::uint32_t[n])
     {
     }
