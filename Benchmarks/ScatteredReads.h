@@ -4,9 +4,9 @@
 // scattered reads over a 128 MB array (the pattern of the neighbour searches' tree walks and of
 // the loops over neighbour lists), in 64 pieces through vtkSMPTools with the STDThread backend
 // as the filter runs. The filter's 1 / 2 thread ratio is read against it: on a virtual machine
-// here this ratio moved between 1.71 and 2.00 from one run of LevelSetThreadCosts to the next
-// (RESULTS.md), and the filter's stages that are neighbour searches at heart (the neighbours',
-// the initialisation's) run at about that ratio or below (LevelSetInteractive --threads-only).
+// here this ratio moved between 1.67 and 2.01 within the hour (RESULTS.md), and the filter's
+// stages that are neighbour searches at heart (the neighbours', the initialisation's) run at
+// about that ratio or below (LevelSetInteractive --threads-only).
 #ifndef ScatteredReads_h
 #define ScatteredReads_h
 
