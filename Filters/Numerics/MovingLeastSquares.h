@@ -300,57 +300,104 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     return false;
   }
   const double invH = 1.0 / h;
-  auto basis = [&](std::size_t j, double& weight) {
-    const double* x = position(j);
-    const double u = (x[0] - centre[0]) * invH, v = (x[1] - centre[1]) * invH,
-                 w = (x[2] - centre[2]) * invH;
-    const double m = MLSWeight(u * u + v * v + w * w, 1.0);
-    weight = m * m;
-    Vector10 b;
-    b << 1.0, u, v, w, u * u, v * v, w * w, u * v, u * w, v * w;
-    return b;
-  };
-  // Each sample's basis, weight and value, kept for the residuals below (per thread, reused).
-  struct Term
-  {
-    Vector10 Basis;
-    double Weight, Value;
-  };
-  thread_local std::vector<Term> terms;
-  terms.resize(count);
-  // The lower triangle of the sum of weight b b^T, column by column, each column from the even
-  // row at or above its diagonal entry: fixed, branch-free pairs of rows, which the compiler
-  // turns into packed arithmetic (a loop from the diagonal itself compiled to scalar, branchy
-  // code). The entries this adds above the diagonal are never read, and each entry below it is
-  // the same sum of the same products, to the bit.
-  alignas(16) double columns[10][10] = {};
-  Vector10 right = Vector10::Zero();
-  double sumWeights = 0.0, sumSquaredWeights = 0.0;
+  // Each sample's offsets (u, v, w), weight and value, in columns (per thread, reused), padded
+  // to an even count: the sums below take the samples in pairs, in packed arithmetic.
+  thread_local std::vector<double> table;
+  const std::size_t padded = (count + 1) & ~std::size_t(1);
+  table.resize(5 * padded);
+  double* const U = table.data();
+  double* const V = U + padded;
+  double* const W = V + padded;
+  double* const Weight = W + padded;
+  double* const Value = Weight + padded;
   for (std::size_t j = 0; j < count; ++j)
   {
-    Term& t = terms[j];
-    t.Basis = basis(j, t.Weight);
-    t.Value = value(j);
-    alignas(16) double b[10];
-    for (int r = 0; r < 10; ++r)
+    const double* x = position(j);
+    U[j] = (x[0] - centre[0]) * invH;
+    V[j] = (x[1] - centre[1]) * invH;
+    W[j] = (x[2] - centre[2]) * invH;
+    const double m = MLSWeight(U[j] * U[j] + V[j] * V[j] + W[j] * W[j], 1.0);
+    Weight[j] = m * m;
+    Value[j] = value(j);
+  }
+  for (std::size_t j = count; j < padded; ++j) // (a copy of the last sample, without weight)
+  {
+    U[j] = U[j - 1];
+    V[j] = V[j - 1];
+    W[j] = W[j - 1];
+    Value[j] = Value[j - 1];
+    Weight[j] = 0.0;
+  }
+  // The normal matrix's entries are weighted moments: sum weight u^a v^b w^c with a + b + c up
+  // to 4 (35 of them for its 55 distinct entries), and the right side's sum weight f u^a v^b w^c
+  // up to 2. Summed per lane of a pair of samples (the powers' products shared along a, then
+  // b), the lanes added at the end.
+  using Pair = Eigen::Array2d;
+  Pair moments[5][5][5], rightMoments[3][3][3], squaredWeights = Pair::Zero();
+  std::fill_n(&moments[0][0][0], 125, Pair::Zero());
+  std::fill_n(&rightMoments[0][0][0], 27, Pair::Zero());
+  for (std::size_t j = 0; j < padded; j += 2)
+  {
+    using Column = Eigen::Map<const Pair>;
+    const Pair u = Column(U + j), v = Column(V + j), w = Column(W + j);
+    const Pair weight = Column(Weight + j), weightedValue = weight * Column(Value + j);
+    Pair pu[5], pv[5], pw[5];
+    pu[0] = pv[0] = pw[0] = Pair::Ones();
+#pragma GCC unroll 4
+    for (int e = 1; e < 5; ++e)
     {
-      b[r] = t.Basis[r];
+      pu[e] = pu[e - 1] * u;
+      pv[e] = pv[e - 1] * v;
+      pw[e] = pw[e - 1] * w;
     }
-#pragma GCC unroll 10
-    for (int c = 0; c < 10; ++c)
+#pragma GCC unroll 5
+    for (int a = 0; a < 5; ++a)
     {
-      const double wc = t.Weight * b[c];
-#pragma GCC unroll 10
-      for (int r = c & ~1; r < 10; ++r)
+      const Pair wa = weight * pu[a];
+#pragma GCC unroll 5
+      for (int b = 0; a + b < 5; ++b)
       {
-        columns[c][r] += wc * b[r];
+        const Pair wab = wa * pv[b];
+#pragma GCC unroll 5
+        for (int c = 0; a + b + c < 5; ++c)
+        {
+          moments[a][b][c] += wab * pw[c];
+        }
       }
     }
-    right += (t.Weight * t.Value) * t.Basis;
-    sumWeights += t.Weight;
-    sumSquaredWeights += t.Weight * t.Weight;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; ++a)
+    {
+      const Pair fa = weightedValue * pu[a];
+#pragma GCC unroll 3
+      for (int b = 0; a + b < 3; ++b)
+      {
+        const Pair fab = fa * pv[b];
+#pragma GCC unroll 3
+        for (int c = 0; a + b + c < 3; ++c)
+        {
+          rightMoments[a][b][c] += fab * pw[c];
+        }
+      }
+    }
+    squaredWeights += weight * weight;
   }
-  const Matrix10 normal = Eigen::Map<const Matrix10>(&columns[0][0]); // column-major
+  // The basis 1, u, v, w, u^2, v^2, w^2, uv, uw, vw as exponents of u, v and w.
+  static constexpr int Exponents[10][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+    { 2, 0, 0 }, { 0, 2, 0 }, { 0, 0, 2 }, { 1, 1, 0 }, { 1, 0, 1 }, { 0, 1, 1 } };
+  Matrix10 normal;
+  Vector10 right;
+  for (int r = 0; r < 10; ++r)
+  {
+    const int* er = Exponents[r];
+    right[r] = rightMoments[er[0]][er[1]][er[2]].sum();
+    for (int c = 0; c <= r; ++c)
+    {
+      const int* ec = Exponents[c];
+      normal(r, c) = normal(c, r) = moments[er[0] + ec[0]][er[1] + ec[1]][er[2] + ec[2]].sum();
+    }
+  }
+  const double sumWeights = normal(0, 0), sumSquaredWeights = squaredWeights.sum();
   // The linear fit: the leading 4 x 4 block.
   const Eigen::Matrix4d linearNormal = normal.topLeftCorner<4, 4>().selfadjointView<Eigen::Lower>();
   if (!RegularLinearNormal(linearNormal))
@@ -368,18 +415,24 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
     Vector10 full;
     if (SolveSymmetricDefinite(normal, right, 1e-7, full))
     {
-      double linearResidual = 0.0, quadraticResidual = 0.0;
-      for (std::size_t j = 0; j < count; ++j)
+      Pair linearResidual = Pair::Zero(), quadraticResidual = Pair::Zero();
+      const Vector10& q = full;
+      for (std::size_t j = 0; j < padded; j += 2)
       {
-        const Term& t = terms[j];
-        const double linear = t.Value - t.Basis.template head<4>().dot(coefficients.head<4>());
-        const double quadraticPart = t.Value - t.Basis.dot(full);
-        linearResidual += t.Weight * linear * linear;
-        quadraticResidual += t.Weight * quadraticPart * quadraticPart;
+        using Column = Eigen::Map<const Pair>;
+        const Pair u = Column(U + j), v = Column(V + j), w = Column(W + j), f = Column(Value + j);
+        const Pair weight = Column(Weight + j);
+        const Pair linear =
+          f - (coefficients[0] + coefficients[1] * u + coefficients[2] * v + coefficients[3] * w);
+        const Pair quadraticPart = f -
+          (q[0] + q[1] * u + q[2] * v + q[3] * w + q[4] * u * u + q[5] * v * v + q[6] * w * w +
+            q[7] * u * v + q[8] * u * w + q[9] * v * w);
+        linearResidual += weight * linear * linear;
+        quadraticResidual += weight * quadraticPart * quadraticPart;
       }
       // F = (reduction per added term) / (residual per remaining degree of freedom).
-      quadratic =
-        linearResidual - quadraticResidual > criticalF * 6.0 * quadraticResidual / (samples - 10.0);
+      const double reduction = linearResidual.sum() - quadraticResidual.sum();
+      quadratic = reduction > criticalF * 6.0 * quadraticResidual.sum() / (samples - 10.0);
       if (quadratic)
       {
         coefficients = full;
