@@ -235,15 +235,16 @@ void TestSolveSymmetricDefinite()
 
 void TestQuadraticFit()
 {
-  // A quadratic field on 54 scattered samples: value and gradient exact (to rounding) at a
-  // point that is not a sample, and the quadratic chosen; a linear field: exact too.
+  // A quadratic field on 54 (or 53: the fit sums samples in pairs, the last one alone)
+  // scattered samples: value, gradient and Hessian exact (to rounding) at a point that is not a
+  // sample, and the quadratic chosen; a linear field: exact too.
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::normal_distribution<double> noise(0.0, 1.0);
-  const std::size_t count = 54;
   int quadraticOnNoise = 0;
   for (int trial = 0; trial < 20; ++trial)
   {
+    const std::size_t count = trial % 2 ? 53 : 54;
     std::vector<double> xyz(3 * count);
     for (double& v : xyz)
     {
@@ -269,11 +270,14 @@ void TestQuadraticFit()
     Eigen::Vector3d gradient;
     bool quadratic = false;
     auto position = [&](std::size_t j) { return &xyz[3 * j]; };
+    Eigen::Matrix3d hessian;
     bool ok = lsi::FitLinearOrQuadratic(
       c, count, position,
       [&](std::size_t j) { return quadraticField(Eigen::Vector3d(&xyz[3 * j])); }, h, 3.5, value,
-      gradient, quadratic);
+      gradient, quadratic, &hessian);
     Check(ok && quadratic, "a quadratic field chooses the quadratic fit");
+    Check((hessian - 2.0 * q).norm() < 1e-8 * q.norm(),
+      "the quadratic fit's Hessian is exact for a quadratic field");
     Check(std::abs(value - exactValue) < 1e-8 * std::abs(exactValue),
       "the quadratic fit's value is exact for a quadratic field");
     Check((gradient - exactGradient).norm() < 1e-8 * exactGradient.norm(),
@@ -298,6 +302,36 @@ void TestQuadraticFit()
   }
   std::cout << "quadratic fits chosen on noise: " << quadraticOnNoise << " of 20\n";
   Check(quadraticOnNoise <= 2, "noise alone rarely selects the quadratic fit");
+  {
+    // An odd count (the last sample summed alone) fits as the same samples plus one beyond the
+    // support (weight zero): on a curved, noisy field, where any stray weight would show.
+    std::vector<double> xyz;
+    for (int j = 0; j < 53; ++j)
+    {
+      xyz.insert(xyz.end(), { u(random), u(random), u(random) });
+    }
+    xyz.insert(xyz.end(), { 5.0, 5.0, 5.0 }); // the 54th: beyond h
+    std::vector<double> f;
+    for (std::size_t j = 0; j < 54; ++j)
+    {
+      const double* x = &xyz[3 * j];
+      f.push_back(x[0] * x[0] - 2.0 * x[1] * x[2] + 0.3 * x[2] + 0.05 * noise(random));
+    }
+    const double c[3] = { 0.1, -0.2, 0.05 };
+    auto position = [&](std::size_t j) { return &xyz[3 * j]; };
+    auto value = [&](std::size_t j) { return f[j]; };
+    double odd = 0.0, even = 0.0;
+    Eigen::Vector3d oddGradient, evenGradient;
+    Eigen::Matrix3d oddHessian, evenHessian;
+    bool oddQuadratic = false, evenQuadratic = false;
+    const bool oddOk = lsi::FitLinearOrQuadratic(
+      c, 53, position, value, 2.0, 3.5, odd, oddGradient, oddQuadratic, &oddHessian);
+    const bool evenOk = lsi::FitLinearOrQuadratic(
+      c, 54, position, value, 2.0, 3.5, even, evenGradient, evenQuadratic, &evenHessian);
+    Check(oddOk && evenOk && oddQuadratic && evenQuadratic && std::abs(odd - even) < 1e-12 &&
+        (oddGradient - evenGradient).norm() < 1e-12 && (oddHessian - evenHessian).norm() < 1e-11,
+      "an odd count fits as with a weightless sample more");
+  }
   // Too few samples, or samples on a plane: the quadratic is ill-posed, the linear fit remains
   // (or fails where it is singular too).
   std::vector<double> plane;
