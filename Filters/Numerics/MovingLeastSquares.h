@@ -283,6 +283,31 @@ bool SolveSymmetricDefinite(const Eigen::Matrix<double, N, N>& a,
   return true;
 }
 
+/// Adds weight u^a v^b w^c to sums[a][b][c] for every a + b + c up to Degree, from the powers
+/// of u, v and w (`pu[e]` = u^e, ...), for a pair of samples at once (FitLinearOrQuadratic's
+/// moments). The products are shared along a, then b.
+template <int Degree>
+inline void AddMoments(Eigen::Array2d (&sums)[Degree + 1][Degree + 1][Degree + 1],
+  const Eigen::Array2d& weight, const Eigen::Array2d* pu, const Eigen::Array2d* pv,
+  const Eigen::Array2d* pw)
+{
+#pragma GCC unroll 5
+  for (int a = 0; a <= Degree; ++a)
+  {
+    const Eigen::Array2d wa = weight * pu[a];
+#pragma GCC unroll 5
+    for (int b = 0; a + b <= Degree; ++b)
+    {
+      const Eigen::Array2d wab = wa * pv[b];
+#pragma GCC unroll 5
+      for (int c = 0; a + b + c <= Degree; ++c)
+      {
+        sums[a][b][c] += wab * pw[c];
+      }
+    }
+  }
+}
+
 /// The weighted least-squares fit of per-sample values around `centre` that the data support:
 /// quadratic (basis 1, x, y, z and the six second-order monomials, in coordinates centred and
 /// scaled by 1/h; the linear fit's weights) where its six second-order terms explain
@@ -336,8 +361,7 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   }
   // The normal matrix's entries are weighted moments: sum weight u^a v^b w^c with a + b + c up
   // to 4 (35 of them for its 55 distinct entries), and the right side's sum weight f u^a v^b w^c
-  // up to 2. Summed per lane of a pair of samples (the powers' products shared along a, then
-  // b), the lanes added at the end.
+  // up to 2. Summed per lane of a pair of samples (AddMoments), the lanes added at the end.
   using Pair = Eigen::Array2d;
   Pair moments[5][5][5], rightMoments[3][3][3], squaredWeights = Pair::Zero();
   std::fill_n(&moments[0][0][0], 125, Pair::Zero());
@@ -356,36 +380,8 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
       pv[e] = pv[e - 1] * v;
       pw[e] = pw[e - 1] * w;
     }
-#pragma GCC unroll 5
-    for (int a = 0; a < 5; ++a)
-    {
-      const Pair wa = weight * pu[a];
-#pragma GCC unroll 5
-      for (int b = 0; a + b < 5; ++b)
-      {
-        const Pair wab = wa * pv[b];
-#pragma GCC unroll 5
-        for (int c = 0; a + b + c < 5; ++c)
-        {
-          moments[a][b][c] += wab * pw[c];
-        }
-      }
-    }
-#pragma GCC unroll 3
-    for (int a = 0; a < 3; ++a)
-    {
-      const Pair fa = weightedValue * pu[a];
-#pragma GCC unroll 3
-      for (int b = 0; a + b < 3; ++b)
-      {
-        const Pair fab = fa * pv[b];
-#pragma GCC unroll 3
-        for (int c = 0; a + b + c < 3; ++c)
-        {
-          rightMoments[a][b][c] += fab * pw[c];
-        }
-      }
-    }
+    AddMoments<4>(moments, weight, pu, pv, pw);
+    AddMoments<2>(rightMoments, weightedValue, pu, pv, pw);
     squaredWeights += weight * weight;
   }
   // The basis 1, u, v, w, u^2, v^2, w^2, uv, uw, vw as exponents of u, v and w.
