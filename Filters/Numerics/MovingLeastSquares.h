@@ -363,12 +363,12 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
   // to 4 (35 of them for its 55 distinct entries), and the right side's sum weight f u^a v^b w^c
   // up to 2. Summed per lane of a pair of samples (AddMoments), the lanes added at the end.
   using Pair = Eigen::Array2d;
+  using Column = Eigen::Map<const Pair>; // a pair of samples' entries of one column
   Pair moments[5][5][5], rightMoments[3][3][3], squaredWeights = Pair::Zero();
   std::fill_n(&moments[0][0][0], 125, Pair::Zero());
   std::fill_n(&rightMoments[0][0][0], 27, Pair::Zero());
   for (std::size_t j = 0; j < padded; j += 2)
   {
-    using Column = Eigen::Map<const Pair>;
     const Pair u = Column(U + j), v = Column(V + j), w = Column(W + j);
     const Pair weight = Column(Weight + j), weightedValue = weight * Column(Value + j);
     Pair pu[5], pv[5], pw[5];
@@ -421,7 +421,6 @@ bool FitLinearOrQuadratic(const double centre[3], std::size_t count, PositionFn 
       const Vector10& q = full;
       for (std::size_t j = 0; j < padded; j += 2)
       {
-        using Column = Eigen::Map<const Pair>;
         const Pair u = Column(U + j), v = Column(V + j), w = Column(W + j), f = Column(Value + j);
         const Pair weight = Column(Weight + j);
         const Pair linear =
