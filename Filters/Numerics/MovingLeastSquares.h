@@ -49,17 +49,17 @@ template <typename PositionFn>
 bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn position, double invH,
   Eigen::Matrix4d& normal)
 {
-  // The 10 distinct entries of the symmetric sum of w^2 q q^T, in scalars (this loop runs for
-  // every sample of every fit: the 4x4 outer product was most of its time).
-  double xx = 0.0, xy = 0.0, xz = 0.0, x1 = 0.0, yy = 0.0, yz = 0.0, y1 = 0.0, zz = 0.0, z1 = 0.0,
-         w1 = 0.0;
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double* x = position(j);
-    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
-                 qz = (x[2] - centre[2]) * invH;
-    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
-    const double w2 = w * w, wx = w2 * qx, wy = w2 * qy, wz = w2 * qz;
+  // The 10 distinct entries of the symmetric sum of w^2 q q^T, summed over pairs of samples in
+  // packed arithmetic (this loop runs for every sample of every fit), each pair's two lanes
+  // added at the end; an odd count's last sample is added alone.
+  using Pair = Eigen::Array2d;
+  Pair xx = Pair::Zero(), xy = Pair::Zero(), xz = Pair::Zero(), x1 = Pair::Zero(),
+       yy = Pair::Zero(), yz = Pair::Zero(), y1 = Pair::Zero(), zz = Pair::Zero(),
+       z1 = Pair::Zero(), w1 = Pair::Zero();
+  auto add = [&](const Pair& qx, const Pair& qy, const Pair& qz) {
+    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
+    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
+    const Pair w2 = w * w, wx = w2 * qx, wy = w2 * qy, wz = w2 * qz;
     xx += wx * qx;
     xy += wx * qy;
     xz += wx * qz;
@@ -70,8 +70,25 @@ bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn po
     zz += wz * qz;
     z1 += wz;
     w1 += w2;
+  };
+  std::size_t j = 0;
+  for (; j + 1 < count; j += 2)
+  {
+    const double* a = position(j);
+    const double* b = position(j + 1);
+    add(Pair(a[0] - centre[0], b[0] - centre[0]) * invH,
+      Pair(a[1] - centre[1], b[1] - centre[1]) * invH,
+      Pair(a[2] - centre[2], b[2] - centre[2]) * invH);
   }
-  normal << xx, xy, xz, x1, xy, yy, yz, y1, xz, yz, zz, z1, x1, y1, z1, w1;
+  if (j < count) // (the other lane's weight is zero: it lies two supports away)
+  {
+    const double* a = position(j);
+    add(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
+      Pair((a[2] - centre[2]) * invH, 0.0));
+  }
+  auto sum = [](const Pair& p) { return p[0] + p[1]; };
+  normal << sum(xx), sum(xy), sum(xz), sum(x1), sum(xy), sum(yy), sum(yz), sum(y1), sum(xz),
+    sum(yz), sum(zz), sum(z1), sum(x1), sum(y1), sum(z1), sum(w1);
   return RegularLinearNormal(normal);
 }
 
@@ -107,29 +124,48 @@ bool BuildLinearStencil(
     return false;
   }
   const Matrix4 inverse = normal.inverse();
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    // In scalars (as LinearValueWeights), in the order of Eigen's product: the same bits.
-    const double* x = position(j);
-    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
-                 qz = (x[2] - centre[2]) * invH;
-    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
-    const double w2 = w * w;
-    const double v[4] = { w2 * qx, w2 * qy, w2 * qz, w2 };
-    double c[4];
-    for (int r = 0; r < 4; ++r)
+  // Two samples at a time in packed arithmetic, each lane as the scalar code would compute it,
+  // in the order of Eigen's product: the same bits.
+  using Pair = Eigen::Array2d;
+  auto coefficients = [&](const Pair& qx, const Pair& qy, const Pair& qz, Pair(&c)[4]) {
+    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
+    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
+    const Pair w2 = w * w;
+    const Pair v[4] = { w2 * qx, w2 * qy, w2 * qz, w2 };
+    for (int row = 0; row < 4; ++row)
     {
-      c[r] = ((inverse(r, 0) * v[0] + inverse(r, 1) * v[1]) + inverse(r, 2) * v[2]) +
-        inverse(r, 3) * v[3];
+      c[row] = ((inverse(row, 0) * v[0] + inverse(row, 1) * v[1]) + inverse(row, 2) * v[2]) +
+        inverse(row, 3) * v[3];
     }
-    // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
-    out.Gradient[3 * j + 0] = c[0] * invH;
-    out.Gradient[3 * j + 1] = c[1] * invH;
-    out.Gradient[3 * j + 2] = c[2] * invH;
+  };
+  // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
+  auto store = [&](std::size_t j, const Pair(&c)[4], int lane) {
+    out.Gradient[3 * j + 0] = c[0][lane] * invH;
+    out.Gradient[3 * j + 1] = c[1][lane] * invH;
+    out.Gradient[3 * j + 2] = c[2][lane] * invH;
     if (out.Value)
     {
-      out.Value[j] = c[3];
+      out.Value[j] = c[3][lane];
     }
+  };
+  std::size_t j = 0;
+  Pair c[4];
+  for (; j + 1 < count; j += 2)
+  {
+    const double* a = position(j);
+    const double* b = position(j + 1);
+    coefficients(Pair((a[0] - centre[0]) * invH, (b[0] - centre[0]) * invH),
+      Pair((a[1] - centre[1]) * invH, (b[1] - centre[1]) * invH),
+      Pair((a[2] - centre[2]) * invH, (b[2] - centre[2]) * invH), c);
+    store(j, c, 0);
+    store(j + 1, c, 1);
+  }
+  if (j < count)
+  {
+    const double* a = position(j);
+    coefficients(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
+      Pair((a[2] - centre[2]) * invH, 0.0), c);
+    store(j, c, 0);
   }
   return true;
 }
@@ -154,15 +190,31 @@ bool LinearValueWeights(
   }
   const Eigen::Vector4d last = normal.inverse().row(3).transpose();
   const double l0 = last[0], l1 = last[1], l2 = last[2], l3 = last[3];
-  for (std::size_t j = 0; j < count; ++j)
+  // Two samples at a time in packed arithmetic (each lane as the scalar code would compute it:
+  // the same bits); not through a Vector4d per sample, which went through the stack. (The dot
+  // product's order is Eigen's.)
+  using Pair = Eigen::Array2d;
+  auto weigh = [&](const Pair& qx, const Pair& qy, const Pair& qz) {
+    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
+    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
+    return Pair((w * w) * ((l0 * qx + l2 * qz) + (l1 * qy + l3)));
+  };
+  std::size_t j = 0;
+  for (; j + 1 < count; j += 2)
   {
-    // In scalars: a Vector4d built per sample went through the stack, and reading it back
-    // whole stalled on every sample. (The dot product's order is Eigen's: the same bits.)
-    const double* x = position(j);
-    const double qx = (x[0] - centre[0]) * invH, qy = (x[1] - centre[1]) * invH,
-                 qz = (x[2] - centre[2]) * invH;
-    const double w = MLSWeight(qx * qx + qy * qy + qz * qz, 1.0);
-    weights[j] = (w * w) * ((l0 * qx + l2 * qz) + (l1 * qy + l3));
+    const double* a = position(j);
+    const double* b = position(j + 1);
+    const Pair both = weigh(Pair((a[0] - centre[0]) * invH, (b[0] - centre[0]) * invH),
+      Pair((a[1] - centre[1]) * invH, (b[1] - centre[1]) * invH),
+      Pair((a[2] - centre[2]) * invH, (b[2] - centre[2]) * invH));
+    weights[j] = both[0];
+    weights[j + 1] = both[1];
+  }
+  if (j < count)
+  {
+    const double* a = position(j);
+    weights[j] = weigh(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
+      Pair((a[2] - centre[2]) * invH, 0.0))[0];
   }
   return true;
 }

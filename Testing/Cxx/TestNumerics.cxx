@@ -131,6 +131,38 @@ void TestMLS()
     });
     Check(std::abs(div - 2.0) < 1e-10, "MLS divergence exact for a linear field");
   }
+  {
+    // An odd count (the last sample summed alone, beside a padding lane) gives the stencil and
+    // the value weights of the same samples plus one beyond the support (weight zero): a stray
+    // weight of the padding would show. The value weights are the stencil's value column.
+    std::vector<double> xyz;
+    for (int j = 0; j < 27; ++j)
+    {
+      xyz.insert(xyz.end(), { u(random), u(random), u(random) });
+    }
+    xyz.insert(xyz.end(), { 5.0, 5.0, 5.0 }); // the 28th: beyond h
+    const double c[3] = { 0.1, -0.2, 0.05 };
+    auto position = [&](std::size_t j) { return &xyz[3 * j]; };
+    std::vector<double> oddG(3 * 27), oddV(27), evenG(3 * 28), evenV(28), oddW(27), evenW(28);
+    const bool ok = lsi::BuildLinearStencil(
+                      c, 27, position, 2.0, lsi::LinearStencilView{ oddG.data(), oddV.data() }) &&
+      lsi::BuildLinearStencil(
+        c, 28, position, 2.0, lsi::LinearStencilView{ evenG.data(), evenV.data() }) &&
+      lsi::LinearValueWeights(c, 27, position, 2.0, oddW.data()) &&
+      lsi::LinearValueWeights(c, 28, position, 2.0, evenW.data());
+    double difference = std::abs(evenV[27]) + std::abs(evenW[27]);
+    for (std::size_t j = 0; j < 27; ++j)
+    {
+      difference = std::max({ difference, std::abs(oddV[j] - evenV[j]),
+        std::abs(oddW[j] - evenW[j]), std::abs(oddW[j] - oddV[j]) });
+      for (int d = 0; d < 3; ++d)
+      {
+        difference = std::max(difference, std::abs(oddG[3 * j + d] - evenG[3 * j + d]));
+      }
+    }
+    Check(ok && difference < 1e-12,
+      "an odd count gives the linear stencil and weights of a weightless sample more");
+  }
   // Coplanar, collinear and coincident neighbourhoods are reported singular.
   std::vector<double> plane, line, same;
   for (int j = 0; j < 27; ++j)
