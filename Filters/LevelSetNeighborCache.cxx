@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace lsi
@@ -27,7 +28,16 @@ std::uint64_t Mix(std::uint64_t h, std::uint64_t v)
   return h ^ (h >> 31);
 }
 
-// Items 0..count-1 hashed in fixed blocks in parallel (mixIn(i, h) mixes item i's bit patterns
+// One item's bits into a lane of BlockHash: a multiplication and a shift, each step a bijection
+// of the lane's state and of the item's bits, so that one item changed always changes its lane
+// (Mix's chain of two multiplications per item was most of the pass's time).
+std::uint64_t Step(std::uint64_t h, std::uint64_t v)
+{
+  h = (h ^ v) * 0x9e3779b97f4a7c15ull;
+  return h ^ (h >> 32);
+}
+
+// Items 0..count-1 hashed in fixed blocks in parallel (mixIn(i, h) steps item i's bit patterns
 // into h), the blocks then combined in order after `seed`: the same on any thread count.
 template <typename MixIn>
 std::uint64_t BlockHash(vtkIdType count, std::uint64_t seed, MixIn&& mixIn)
@@ -38,23 +48,29 @@ std::uint64_t BlockHash(vtkIdType count, std::uint64_t seed, MixIn&& mixIn)
     0, static_cast<vtkIdType>(blocks.size()), 1, [&](vtkIdType first, vtkIdType last) {
       for (vtkIdType b = first; b < last; ++b)
       {
-        // Four interleaved lanes (item i in lane i % 4): independent chains of the mix's
+        // Eight interleaved lanes (item i in lane i % 8): independent chains of the steps'
         // multiplications, which one chain would run one after another.
-        std::uint64_t lanes[4] = { 0, 1, 2, 3 };
+        constexpr vtkIdType Lanes = 8;
+        std::uint64_t lanes[Lanes] = { 0, 1, 2, 3, 4, 5, 6, 7 };
         const vtkIdType first = b * Block, last = std::min(count, (b + 1) * Block);
         vtkIdType i = first;
-        for (; i + 4 <= last; i += 4)
+        for (; i + Lanes <= last; i += Lanes)
         {
-          lanes[0] = mixIn(i, lanes[0]);
-          lanes[1] = mixIn(i + 1, lanes[1]);
-          lanes[2] = mixIn(i + 2, lanes[2]);
-          lanes[3] = mixIn(i + 3, lanes[3]);
+          for (vtkIdType l = 0; l < Lanes; ++l)
+          {
+            lanes[l] = mixIn(i + l, lanes[l]);
+          }
         }
         for (; i < last; ++i)
         {
-          lanes[(i - first) & 3] = mixIn(i, lanes[(i - first) & 3]);
+          lanes[(i - first) % Lanes] = mixIn(i, lanes[(i - first) % Lanes]);
         }
-        blocks[b] = Mix(Mix(Mix(lanes[0], lanes[1]), lanes[2]), lanes[3]);
+        std::uint64_t h = lanes[0];
+        for (vtkIdType l = 1; l < Lanes; ++l)
+        {
+          h = Mix(h, lanes[l]);
+        }
+        blocks[b] = h;
       }
     });
   std::uint64_t h = seed;
@@ -81,7 +97,7 @@ std::uint64_t CoordinateFingerprint(vtkPoints* points)
     points->GetPoint(i, x);
     for (double c : x)
     {
-      h = Mix(h, DoubleBits(c));
+      h = Step(h, DoubleBits(c));
     }
     return h;
   });
@@ -98,6 +114,29 @@ std::uint64_t ValueFingerprint(vtkDataArray* array)
     : nullptr;
   const std::uint64_t seed =
     Mix(static_cast<std::uint64_t>(array->GetDataType()), static_cast<std::uint64_t>(n));
+  // A value's bytes into the low bytes of a zeroed word, with the size known to the compiler
+  // (a copy of a size known only at run time is a call per value: most of the pass's time).
+  auto hashBytes = [&](auto sizeOf) {
+    constexpr std::size_t Size = decltype(sizeOf)::value;
+    return BlockHash(n, seed, [&](vtkIdType i, std::uint64_t h) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, raw + static_cast<std::size_t>(i) * Size, Size);
+      return Step(h, bits);
+    });
+  };
+  switch (raw ? size : 0)
+  {
+    case 8:
+      return hashBytes(std::integral_constant<std::size_t, 8>());
+    case 4:
+      return hashBytes(std::integral_constant<std::size_t, 4>());
+    case 2:
+      return hashBytes(std::integral_constant<std::size_t, 2>());
+    case 1:
+      return hashBytes(std::integral_constant<std::size_t, 1>());
+    default:
+      break;
+  }
   return BlockHash(n, seed, [&](vtkIdType i, std::uint64_t h) {
     std::uint64_t bits = 0;
     if (raw)
@@ -108,7 +147,7 @@ std::uint64_t ValueFingerprint(vtkDataArray* array)
     {
       bits = DoubleBits(array->GetComponent(i / components, static_cast<int>(i % components)));
     }
-    return Mix(h, bits);
+    return Step(h, bits);
   });
 }
 
@@ -116,7 +155,7 @@ std::uint64_t ValueFingerprint(const std::vector<double>& values)
 {
   const vtkIdType n = static_cast<vtkIdType>(values.size());
   return BlockHash(n, Mix(static_cast<std::uint64_t>(VTK_DOUBLE), static_cast<std::uint64_t>(n)),
-    [&](vtkIdType i, std::uint64_t h) { return Mix(h, DoubleBits(values[i])); });
+    [&](vtkIdType i, std::uint64_t h) { return Step(h, DoubleBits(values[i])); });
 }
 
 const Neighborhoods* NeighborCache::Find(vtkPoints* points, int neighbors)
