@@ -98,6 +98,24 @@ struct Neighborhoods
     this->EnsureRow(i);
     return &this->Ids[this->Rows->Slot[i] * static_cast<std::size_t>(this->Stride)];
   }
+  /// Hints to the processor for a loop that knows which lists it reads next (a walk's queue):
+  /// fetch where sample i's list lies, then, a few samples later, the list itself (if it has
+  /// been computed). They change no result.
+  void PrefetchPlace(std::size_t i) const
+  {
+    __builtin_prefetch(&this->Rows->State[i]);
+    __builtin_prefetch(&this->Rows->Slot[i]);
+  }
+  void PrefetchList(std::size_t i) const
+  {
+    if (this->Rows->State[i].load(std::memory_order_relaxed) == 2)
+    {
+      const std::uint32_t* list =
+        &this->Ids[this->Rows->Slot[i] * static_cast<std::size_t>(this->Stride)];
+      __builtin_prefetch(list);
+      __builtin_prefetch(list + this->Stride - 1);
+    }
+  }
   /// h_i: the distance to the farthest of the neighbours.
   double RadiusOf(std::size_t i) const
   {
@@ -330,6 +348,17 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
     {
       geometry.EnsureNeighbors(&queue[head], queue.size() - head);
       searched = queue.size();
+    }
+    // The lists of the samples a little further in the queue, fetched meanwhile: the walk
+    // jumps about the cloud (a quick change's flood: 7.1 ms before, 5.7-6.2 ms with this).
+    constexpr std::size_t Ahead = 8;
+    if (head + 2 * Ahead < queue.size())
+    {
+      geometry.PrefetchPlace(queue[head + 2 * Ahead]);
+    }
+    if (head + Ahead < queue.size())
+    {
+      geometry.PrefetchList(queue[head + Ahead]);
     }
     if (geometry.IsTruncated(queue[head]))
     {
