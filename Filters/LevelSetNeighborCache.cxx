@@ -115,7 +115,7 @@ std::uint64_t ValueFingerprint(vtkDataArray* array)
   const std::uint64_t seed =
     Mix(static_cast<std::uint64_t>(array->GetDataType()), static_cast<std::uint64_t>(n));
   // A value's bytes into the low bytes of a zeroed word, with the size known to the compiler
-  // (a copy of a size known only at run time is a call per value: most of the pass's time).
+  // (a copy of a size known only at run time is a call per value).
   auto hashBytes = [&](auto sizeOf) {
     constexpr std::size_t Size = decltype(sizeOf)::value;
     return BlockHash(n, seed, [&](vtkIdType i, std::uint64_t h) {
