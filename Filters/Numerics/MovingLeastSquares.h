@@ -43,49 +43,67 @@ inline bool RegularLinearNormal(const Eigen::Matrix4d& normal)
   return scale > 0.0 && std::abs(normal.determinant()) >= 1e-10 * (scale * scale) * (scale * scale);
 }
 
+/// MLSWeight (support 1) of two samples at once, from their offsets in units of h (NaN: 0).
+inline Eigen::Array2d PairWeight(
+  const Eigen::Array2d& qx, const Eigen::Array2d& qy, const Eigen::Array2d& qz)
+{
+  const Eigen::Array2d r = 1.0 - (qx * qx + qy * qy + qz * qz);
+  return (r > 0.0).select(r, 0.0);
+}
+
+/// The linear fits' loop over samples, two at a time in packed arithmetic (each lane computes
+/// what scalar code would: the same bits): body(j, qx, qy, qz, both) with the offsets from
+/// `centre` of samples j and j + 1, times invH. An odd count's last sample comes with a second
+/// lane two supports away (weight zero) and `both` false: the body must not store that lane.
+template <typename PositionFn, typename Body>
+void ForEachSamplePair(
+  const double centre[3], std::size_t count, PositionFn position, double invH, Body&& body)
+{
+  using Pair = Eigen::Array2d;
+  std::size_t j = 0;
+  for (; j + 1 < count; j += 2)
+  {
+    const double* a = position(j);
+    const double* b = position(j + 1);
+    body(j, Pair((a[0] - centre[0]) * invH, (b[0] - centre[0]) * invH),
+      Pair((a[1] - centre[1]) * invH, (b[1] - centre[1]) * invH),
+      Pair((a[2] - centre[2]) * invH, (b[2] - centre[2]) * invH), true);
+  }
+  if (j < count)
+  {
+    const double* a = position(j);
+    body(j, Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
+      Pair((a[2] - centre[2]) * invH, 0.0), false);
+  }
+}
+
 /// The normal matrix of the weighted linear fit at `centre` over `count` samples, in units of
 /// h; false when singular (RegularLinearNormal).
 template <typename PositionFn>
 bool LinearNormalMatrix(const double centre[3], std::size_t count, PositionFn position, double invH,
   Eigen::Matrix4d& normal)
 {
-  // The 10 distinct entries of the symmetric sum of w^2 q q^T, summed over pairs of samples in
-  // packed arithmetic (this loop runs for every sample of every fit), each pair's two lanes
-  // added at the end; an odd count's last sample is added alone.
+  // The 10 distinct entries of the symmetric sum of w^2 q q^T, summed over pairs of samples
+  // (this loop runs for every sample of every fit), each pair's two lanes added at the end.
   using Pair = Eigen::Array2d;
   Pair xx = Pair::Zero(), xy = Pair::Zero(), xz = Pair::Zero(), x1 = Pair::Zero(),
        yy = Pair::Zero(), yz = Pair::Zero(), y1 = Pair::Zero(), zz = Pair::Zero(),
        z1 = Pair::Zero(), w1 = Pair::Zero();
-  auto add = [&](const Pair& qx, const Pair& qy, const Pair& qz) {
-    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
-    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
-    const Pair w2 = w * w, wx = w2 * qx, wy = w2 * qy, wz = w2 * qz;
-    xx += wx * qx;
-    xy += wx * qy;
-    xz += wx * qz;
-    x1 += wx;
-    yy += wy * qy;
-    yz += wy * qz;
-    y1 += wy;
-    zz += wz * qz;
-    z1 += wz;
-    w1 += w2;
-  };
-  std::size_t j = 0;
-  for (; j + 1 < count; j += 2)
-  {
-    const double* a = position(j);
-    const double* b = position(j + 1);
-    add(Pair(a[0] - centre[0], b[0] - centre[0]) * invH,
-      Pair(a[1] - centre[1], b[1] - centre[1]) * invH,
-      Pair(a[2] - centre[2], b[2] - centre[2]) * invH);
-  }
-  if (j < count) // (the other lane's weight is zero: it lies two supports away)
-  {
-    const double* a = position(j);
-    add(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
-      Pair((a[2] - centre[2]) * invH, 0.0));
-  }
+  ForEachSamplePair(centre, count, position, invH,
+    [&](std::size_t, const Pair& qx, const Pair& qy, const Pair& qz, bool) {
+      const Pair w = PairWeight(qx, qy, qz);
+      const Pair w2 = w * w, wx = w2 * qx, wy = w2 * qy, wz = w2 * qz;
+      xx += wx * qx;
+      xy += wx * qy;
+      xz += wx * qz;
+      x1 += wx;
+      yy += wy * qy;
+      yz += wy * qz;
+      y1 += wy;
+      zz += wz * qz;
+      z1 += wz;
+      w1 += w2;
+    });
   auto sum = [](const Pair& p) { return p[0] + p[1]; };
   normal << sum(xx), sum(xy), sum(xz), sum(x1), sum(xy), sum(yy), sum(yz), sum(y1), sum(xz),
     sum(yz), sum(zz), sum(z1), sum(x1), sum(y1), sum(z1), sum(w1);
@@ -124,49 +142,31 @@ bool BuildLinearStencil(
     return false;
   }
   const Matrix4 inverse = normal.inverse();
-  // Two samples at a time in packed arithmetic, each lane as the scalar code would compute it,
-  // in the order of Eigen's product: the same bits.
+  // In the order of Eigen's product: the same bits as it.
   using Pair = Eigen::Array2d;
-  auto coefficients = [&](const Pair& qx, const Pair& qy, const Pair& qz, Pair(&c)[4]) {
-    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
-    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
-    const Pair w2 = w * w;
-    const Pair v[4] = { w2 * qx, w2 * qy, w2 * qz, w2 };
-    for (int row = 0; row < 4; ++row)
-    {
-      c[row] = ((inverse(row, 0) * v[0] + inverse(row, 1) * v[1]) + inverse(row, 2) * v[2]) +
-        inverse(row, 3) * v[3];
-    }
-  };
-  // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
-  auto store = [&](std::size_t j, const Pair(&c)[4], int lane) {
-    out.Gradient[3 * j + 0] = c[0][lane] * invH;
-    out.Gradient[3 * j + 1] = c[1][lane] * invH;
-    out.Gradient[3 * j + 2] = c[2][lane] * invH;
-    if (out.Value)
-    {
-      out.Value[j] = c[3][lane];
-    }
-  };
-  std::size_t j = 0;
-  Pair c[4];
-  for (; j + 1 < count; j += 2)
-  {
-    const double* a = position(j);
-    const double* b = position(j + 1);
-    coefficients(Pair((a[0] - centre[0]) * invH, (b[0] - centre[0]) * invH),
-      Pair((a[1] - centre[1]) * invH, (b[1] - centre[1]) * invH),
-      Pair((a[2] - centre[2]) * invH, (b[2] - centre[2]) * invH), c);
-    store(j, c, 0);
-    store(j + 1, c, 1);
-  }
-  if (j < count)
-  {
-    const double* a = position(j);
-    coefficients(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
-      Pair((a[2] - centre[2]) * invH, 0.0), c);
-    store(j, c, 0);
-  }
+  ForEachSamplePair(centre, count, position, invH,
+    [&](std::size_t j, const Pair& qx, const Pair& qy, const Pair& qz, bool both) {
+      const Pair w = PairWeight(qx, qy, qz);
+      const Pair w2 = w * w;
+      const Pair v[4] = { w2 * qx, w2 * qy, w2 * qz, w2 };
+      Pair c[4];
+      for (int row = 0; row < 4; ++row)
+      {
+        c[row] = ((inverse(row, 0) * v[0] + inverse(row, 1) * v[1]) + inverse(row, 2) * v[2]) +
+          inverse(row, 3) * v[3];
+      }
+      for (int lane = 0; lane < (both ? 2 : 1); ++lane)
+      {
+        // The fit is in scaled coordinates: d/dx = (1/h) d/dq.
+        out.Gradient[3 * (j + lane) + 0] = c[0][lane] * invH;
+        out.Gradient[3 * (j + lane) + 1] = c[1][lane] * invH;
+        out.Gradient[3 * (j + lane) + 2] = c[2][lane] * invH;
+        if (out.Value)
+        {
+          out.Value[j + lane] = c[3][lane];
+        }
+      }
+    });
   return true;
 }
 
@@ -190,32 +190,19 @@ bool LinearValueWeights(
   }
   const Eigen::Vector4d last = normal.inverse().row(3).transpose();
   const double l0 = last[0], l1 = last[1], l2 = last[2], l3 = last[3];
-  // Two samples at a time in packed arithmetic (each lane as the scalar code would compute it:
-  // the same bits); not through a Vector4d per sample, which went through the stack. (The dot
-  // product's order is Eigen's.)
+  // Not through a Vector4d per sample, which went through the stack. (The dot product's order
+  // is Eigen's.)
   using Pair = Eigen::Array2d;
-  auto weigh = [&](const Pair& qx, const Pair& qy, const Pair& qz) {
-    const Pair r = 1.0 - (qx * qx + qy * qy + qz * qz);
-    const Pair w = (r > 0.0).select(r, 0.0); // MLSWeight (NaN: 0)
-    return Pair((w * w) * ((l0 * qx + l2 * qz) + (l1 * qy + l3)));
-  };
-  std::size_t j = 0;
-  for (; j + 1 < count; j += 2)
-  {
-    const double* a = position(j);
-    const double* b = position(j + 1);
-    const Pair both = weigh(Pair((a[0] - centre[0]) * invH, (b[0] - centre[0]) * invH),
-      Pair((a[1] - centre[1]) * invH, (b[1] - centre[1]) * invH),
-      Pair((a[2] - centre[2]) * invH, (b[2] - centre[2]) * invH));
-    weights[j] = both[0];
-    weights[j + 1] = both[1];
-  }
-  if (j < count)
-  {
-    const double* a = position(j);
-    weights[j] = weigh(Pair((a[0] - centre[0]) * invH, 2.0), Pair((a[1] - centre[1]) * invH, 0.0),
-      Pair((a[2] - centre[2]) * invH, 0.0))[0];
-  }
+  ForEachSamplePair(centre, count, position, invH,
+    [&](std::size_t j, const Pair& qx, const Pair& qy, const Pair& qz, bool both) {
+      const Pair w = PairWeight(qx, qy, qz);
+      const Pair weight = (w * w) * ((l0 * qx + l2 * qz) + (l1 * qy + l3));
+      weights[j] = weight[0];
+      if (both)
+      {
+        weights[j + 1] = weight[1];
+      }
+    });
   return true;
 }
 
