@@ -15,6 +15,7 @@
 #include "LevelSetIsopoints.h"
 #include "LevelSetNeighborCache.h"
 #include "LevelSetSPHField.h"
+#include "LevelSetSplatRadii.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -173,6 +174,10 @@ struct LastOutputs
   std::vector<double> Nearby;      // under MPI, unless NearbyAreIsopoints
   bool NearbyAreIsopoints = false; // under MPI with SlideReady, outside a periodic box
   bool OnField = false;
+  // The splat radii's candidates, from the last full run's surface output (with
+  // QuickIsoValueChanges and SlideReady): re-runs that show those points slid, or again, take
+  // most radii from them.
+  SplatCandidates Splats;
   const IsopointSet& ShownPoints() const
   {
     return this->ShownAreIsopoints ? this->Isopoints : this->Shown;

@@ -6,6 +6,7 @@
 
 #include "LevelSetMLSFit.h"
 #include "LevelSetSPHField.h"
+#include "LevelSetSplatRadii.h"
 #include "NearestNeighbors.h"
 #include "Splats.h"
 
@@ -27,42 +28,6 @@
 
 namespace lsi
 {
-
-bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
-  std::vector<double>& radii, const AbortCheck& aborted, const PointCloudIndex* given)
-{
-  const std::size_t count = points.size() / 3;
-  radii.assign(count, 0.0);
-  if (count < 2)
-  {
-    return true;
-  }
-  std::unique_ptr<PointCloudIndex> built;
-  if (!given)
-  {
-    built.reset(new PointCloudIndex(points.data(), count));
-  }
-  const PointCloudIndex& index = given ? *given : *built;
-  // The point itself comes first in its own query.
-  const std::size_t k = std::min<std::size_t>(count, static_cast<std::size_t>(neighbors) + 1);
-  return ParallelForInBlocks(
-    count,
-    [&](std::size_t begin, std::size_t end) {
-      std::vector<std::uint32_t> ids(k);
-      std::vector<double> d2(k);
-      // The points are spread about evenly over the surface: the last point's k-th distance
-      // bounds the search (the same neighbours, found sooner; NearestNear).
-      double lastRadius = 0.0;
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        const std::size_t found =
-          index.NearestNear(&points[3 * i], k, lastRadius, ids.data(), d2.data());
-        radii[i] = SplatRadiusFromNeighbors(d2.data(), found, factor);
-        lastRadius = found == k ? std::sqrt(d2[k - 1]) : 0.0;
-      }
-    },
-    aborted);
-}
 
 namespace
 {
@@ -272,7 +237,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt,
-  const std::vector<double>* scalarsInStorageOrder)
+  const std::vector<double>* scalarsInStorageOrder, SplatCandidates* keptSplats)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -291,7 +256,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   surface->GetPointData()->SetNormals(normals);
 
   std::vector<double> radii;
-  if (!SplatRadii(isopoints.Points, 6, splatScale, radii, aborted, pointIndex))
+  if (!SplatRadii(isopoints.Points, 6, splatScale, radii, aborted, pointIndex, keptSplats))
   {
     return false;
   }

@@ -21,6 +21,7 @@ class vtkPolyData;
 namespace lsi
 {
 class SPHField;
+struct SplatCandidates;
 
 /// Fills `surface` with the isopoints (no cells), "Normals", "SplatRadius" (`splatScale` times
 /// the distance to the 6th nearest isopoint) and, if `interpolateArrays`, every numeric array
@@ -36,17 +37,13 @@ class SPHField;
 /// `scalarsInStorageOrder`, if given, holds the values of the array named `activeScalars` (one
 /// component) per sample in storage order, exactly: read from there instead (the same numbers;
 /// in input order the samples near a point are scattered over memory).
+/// `keptSplats`, if given, keeps or reuses the splat radii's candidates (SplatRadii).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr,
-  const std::vector<double>* scalarsInStorageOrder = nullptr);
-
-/// Splat radius of each point (3 doubles per point): `factor` times the distance to its
-/// `neighbors`-th nearest other point, searched in `index` if given (over `points`), else in
-/// one built here. Returns false only when aborted.
-bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
-  std::vector<double>& radii, const AbortCheck& aborted, const PointCloudIndex* index = nullptr);
+  const std::vector<double>* scalarsInStorageOrder = nullptr,
+  SplatCandidates* keptSplats = nullptr);
 
 /// For each point of `points`, fits every component of each array of `sources` (input point
 /// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and

@@ -325,8 +325,11 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   // One search index over those points, for the splat radii and (in one process) the Enclosed
   // table.
   const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex = lsi::IndexOfPoints(nearby.Points);
-  ok = this->MakeSurfaceOutput(
-    input, *geometry, isopoints, nearby.Points, field.get(), surfaceIndex.get(), surfaceOutput);
+  // (For re-runs that show these points slid, or again: their splat radii's candidates.)
+  last.Splats.Clear();
+  const bool keepSplats = this->QuickIsoValueChanges && last.QuickCheck;
+  ok = this->MakeSurfaceOutput(input, *geometry, isopoints, nearby.Points, field.get(),
+    surfaceIndex.get(), surfaceOutput, nullptr, keepSplats ? &last.Splats : nullptr);
   if (!ranks.All(ok))
   {
     return false;
@@ -377,6 +380,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   if (!last.SlideReady)
   {
     last.DeepInside = lsi::EnclosedDeepInside();
+    last.Splats.Clear();
   }
   last.Values.clear();
   last.ValuesAreScalars = false;

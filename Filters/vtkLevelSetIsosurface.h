@@ -91,6 +91,7 @@ struct RunParticles;
 class Distribution;
 class SPHField;
 struct SPHFieldRequest;
+struct SplatCandidates;
 struct SlideResult;
 struct SurfaceScale;
 }
@@ -705,7 +706,8 @@ private:
   bool MakeSurfaceOutput(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const lsi::IsopointSet& isopoints, const std::vector<double>& nearbyPoints,
     const lsi::SPHField* field, const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
-    const std::vector<double>* scalarsInStorageOrder = nullptr);
+    const std::vector<double>* scalarsInStorageOrder = nullptr,
+    lsi::SplatCandidates* keptSplats = nullptr);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
   // The particles' distances are measured to the points this rank keeps (`keptPoints`, in one

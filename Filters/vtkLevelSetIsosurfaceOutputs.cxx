@@ -232,7 +232,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
   const std::vector<double>& nearbyPoints, const lsi::SPHField* field,
   const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
-  const std::vector<double>* scalarsInStorageOrder)
+  const std::vector<double>* scalarsInStorageOrder, lsi::SplatCandidates* keptSplats)
 {
   const auto start = Clock::now();
   int association = -1;
@@ -256,7 +256,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, aroundSeed ? moved : isopoints,
         this->SplatScale, this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field,
         surface, this->Stage(SurfaceStage), aroundSeed ? movedIndex.get() : surfaceIndex,
-        aroundSeed ? &isopoints.Points : nullptr, scalarsInStorageOrder))
+        aroundSeed ? &isopoints.Points : nullptr, scalarsInStorageOrder, keptSplats))
   {
     return false;
   }

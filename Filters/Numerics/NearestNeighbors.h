@@ -99,6 +99,8 @@ public:
   }
 
   std::size_t Size() const { return this->Cloud.Count; }
+  /// Point j of the cloud, as the searches' indices number them.
+  const double* Point(std::uint32_t j) const { return this->Cloud.Points + 3 * std::size_t(j); }
 
 private:
   static constexpr std::size_t LeafSize = 16;
