@@ -276,8 +276,8 @@ vtkSmartPointer<vtkTable> EnclosedTable(const EnclosedInputs& inputs)
     {
       FindDeepInside(inputs, *inputs.KeepDeepInside);
     }
-    vtkSmartPointer<vtkTable> table = EnclosedTableAround(
-      inputs, inputs.KeepDeepInside ? *inputs.KeepDeepInside : *inputs.DeepInside);
+    vtkSmartPointer<vtkTable> table = EnclosedTableAround(inputs,
+      inputs.KeepDeepInside ? *inputs.KeepDeepInside : *inputs.DeepInside, inputs.KeepDeepInside);
     if (table)
     {
       return table;

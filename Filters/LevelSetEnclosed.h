@@ -16,6 +16,7 @@
 #define LevelSetEnclosed_h
 
 #include "LevelSetCommunicator.h"
+#include "LevelSetKeptCandidates.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetPeriodicImages.h"
 #include "UninitializedVector.h"
@@ -58,6 +59,11 @@ struct EnclosedDeepInside
   UninitializedVector<double> NearRecords;
   std::vector<double> Sums; // each group's sums, packed under its lowest particle id
   int Components = 0;       // the arrays' components averaged, when kept
+  // The surface points nearest to the band's samples that measured their distance by a
+  // tangent plane (SurfaceDistance): per Near sample its query in Surface (None: none), whose
+  // candidates a re-run on the slid points takes the nearest from where it surely lies there.
+  std::vector<std::uint32_t> SurfaceQuery;
+  KeptCandidates Surface;
 };
 
 struct EnclosedInputs

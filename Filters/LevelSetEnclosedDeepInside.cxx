@@ -279,7 +279,7 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep)
 }
 
 vtkSmartPointer<vtkTable> EnclosedTableAround(
-  const EnclosedInputs& in, const EnclosedDeepInside& deep)
+  const EnclosedInputs& in, const EnclosedDeepInside& deep, EnclosedDeepInside* keeping)
 {
   const Neighborhoods& geometry = *in.Geometry;
   const std::size_t n = geometry.NumberOfSamples;
@@ -371,12 +371,59 @@ vtkSmartPointer<vtkTable> EnclosedTableAround(
   }
   const SummedPlaces summed(in, band);
   const SurfaceDistance distance(in, 0.0);
+  // The band's distances: keeping the surface points nearest to each sample that measures a
+  // height (in the run that found `deep`), or from those kept, where they hold.
+  const PointCloudIndex* surfaceIndex = distance.SurfaceIndex();
+  std::vector<std::uint32_t> measured; // (keeping) the band's places of the queries
+  if (keeping)
+  {
+    keeping->SurfaceQuery.assign(deep.Near.size(), EnclosedDeepInside::None);
+    keeping->Surface.Clear();
+    if (surfaceIndex)
+    {
+      measured = IndicesWhere<std::uint32_t>(
+        band.size(), [&](std::size_t b) { return distance.MeasuresHeight(band[b]); });
+      for (std::size_t q = 0; q < measured.size(); ++q)
+      {
+        keeping->SurfaceQuery[deep.Group[band[measured[q]]] - groups] =
+          static_cast<std::uint32_t>(q);
+      }
+      keeping->Surface.Start(measured.size(), SurfaceDistance::Candidates);
+    }
+  }
+  const bool fromKept = !keeping && surfaceIndex && deep.SurfaceQuery.size() == deep.Near.size() &&
+    deep.Surface.Fits(deep.Surface.Queries(), *surfaceIndex);
+  const KeptCandidates::Moves moves =
+    fromKept ? deep.Surface.MovesSince(*surfaceIndex) : KeptCandidates::Moves();
+  auto distanceOf = [&](std::size_t i) {
+    const std::uint32_t q =
+      keeping || fromKept ? deep.SurfaceQuery[deep.Group[i] - groups] : EnclosedDeepInside::None;
+    if (q == EnclosedDeepInside::None)
+    {
+      return distance(i);
+    }
+    return keeping ? distance.Keeping(i, q, keeping->Surface)
+                   : distance.FromKept(i, q, deep.Surface, moves);
+  };
   std::vector<Sums> sums = SumsByGroup(
     in, components, summed.Of(band), key.size(),
-    [&](std::size_t k) { return componentOf[groups + summed(k)]; }, distance,
+    [&](std::size_t k) { return componentOf[groups + summed(k)]; }, distanceOf,
     [&](std::size_t k, double*) {
       return &deep.NearRecords[RecordSize(components) * inBand[summed(k)]];
     });
+  if (keeping && !measured.empty())
+  {
+    std::vector<double> at(3 * measured.size());
+    for (std::size_t q = 0; q < measured.size(); ++q)
+    {
+      const double* x = geometry.Position(band[measured[q]]);
+      std::copy(x, x + 3, &at[3 * q]);
+    }
+    if (!keeping->Surface.Finish(at.data(), *surfaceIndex))
+    {
+      keeping->SurfaceQuery.clear();
+    }
+  }
   for (std::size_t g = 0; g < groups; ++g)
   {
     if (deep.Sums[record * g] < HUGE_VAL) // (a group of ghosts alone has nothing to add)

@@ -22,8 +22,10 @@ void FindDeepInside(const EnclosedInputs& in, EnclosedDeepInside& deep);
 /// The Enclosed table of `in` (EnclosedTable's), from the band's samples and the groups of
 /// `deep` (found on a phi equal to in's at and beyond the band's half width, for the same
 /// samples and arrays); null when `deep` was kept for other samples or arrays.
+/// `keeping` (the run that found `deep`: the same object) keeps the surface points nearest to
+/// the band's samples (EnclosedDeepInside::Surface); without it, the ones kept are used.
 vtkSmartPointer<vtkTable> EnclosedTableAround(
-  const EnclosedInputs& in, const EnclosedDeepInside& deep);
+  const EnclosedInputs& in, const EnclosedDeepInside& deep, EnclosedDeepInside* keeping = nullptr);
 
 } // namespace lsi
 

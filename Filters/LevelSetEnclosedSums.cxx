@@ -297,25 +297,39 @@ SurfaceDistance::SurfaceDistance(const EnclosedInputs& in, double reach)
   }
 }
 
+bool SurfaceDistance::MeasuresHeight(std::size_t i) const
+{
+  return this->Index && MeasuresTangentDistance((*this->In.Phi)[i], this->In.Geometry->RadiusOf(i));
+}
+
 double SurfaceDistance::operator()(std::size_t i) const
 {
-  const Neighborhoods& geometry = *this->In.Geometry;
   const double phi = (*this->In.Phi)[i];
-  const double s = geometry.RadiusOf(i); // the shell's half width
-  if (!this->Index || !MeasuresTangentDistance(phi, s))
+  if (!this->MeasuresHeight(i))
   {
     return phi;
   }
-  const double reach = TangentReach * s;
+  const double reach = TangentReach * this->In.Geometry->RadiusOf(i); // (s: the shell's half width)
   std::uint32_t nearest;
   double d2;
-  const double* x = geometry.Position(i);
   // (Searched within the reach used below, and a little more for the rounding of the root: a
   // point beyond it is not used, and the walk prunes sooner.)
-  if (this->Index->NearestWithin(x, 1, reach * reach * (1.0 + 1e-9), &nearest, &d2) == 0)
+  if (this->Index->NearestWithin(
+        this->In.Geometry->Position(i), 1, reach * reach * (1.0 + 1e-9), &nearest, &d2) == 0)
   {
     return phi;
   }
+  return this->Height(i, phi, nearest, d2);
+}
+
+double SurfaceDistance::Height(std::size_t i, double phi, std::uint32_t nearest, double d2) const
+{
+  const double reach = TangentReach * this->In.Geometry->RadiusOf(i);
+  if (!(d2 < reach * reach * (1.0 + 1e-9)))
+  {
+    return phi; // (none within operator()'s search)
+  }
+  const double* x = this->In.Geometry->Position(i);
   double height = 0.0;
   for (int d = 0; d < 3; ++d)
   {
@@ -323,6 +337,65 @@ double SurfaceDistance::operator()(std::size_t i) const
   }
   // The tangent plane only holds near its point; beyond, phi's sign decides.
   return std::sqrt(d2) < reach ? height : phi;
+}
+
+double SurfaceDistance::Keeping(std::size_t i, std::size_t q, KeptCandidates& keep) const
+{
+  const double phi = (*this->In.Phi)[i];
+  if (!this->MeasuresHeight(i))
+  {
+    return phi;
+  }
+  // The nearest without a bound finds what the bounded search does first (the same walk,
+  // the same first among equals).
+  std::uint32_t ids[Candidates + 1];
+  double d2[Candidates + 1];
+  const std::size_t found =
+    this->Index->Nearest(this->In.Geometry->Position(i), Candidates + 1, ids, d2);
+  if (found == Candidates + 1)
+  {
+    std::copy(ids, ids + Candidates, keep.CandidatesOf(q));
+    keep.SetOuter(q, std::sqrt(d2[Candidates]));
+  }
+  return found ? this->Height(i, phi, ids[0], d2[0]) : phi;
+}
+
+double SurfaceDistance::FromKept(std::size_t i, std::size_t q, const KeptCandidates& kept,
+  const KeptCandidates::Moves& moves) const
+{
+  if (!this->MeasuresHeight(i))
+  {
+    return (*this->In.Phi)[i];
+  }
+  const double* x = this->In.Geometry->Position(i);
+  const double reach = kept.Reach(q, x, moves);
+  if (reach > 0.0)
+  {
+    // The nearest candidate, unless another is as near (a search takes the first it meets).
+    const std::uint32_t* ids = kept.CandidatesOf(q);
+    double best = HUGE_VAL, second = HUGE_VAL;
+    std::uint32_t nearest = 0;
+    for (std::size_t j = 0; j < Candidates; ++j)
+    {
+      const double d2 = PointCloudIndex::SquaredDistance(x, this->Index->Point(ids[j]));
+      if (d2 < best)
+      {
+        second = best;
+        best = d2;
+        nearest = ids[j];
+      }
+      else
+      {
+        second = std::min(second, d2);
+      }
+    }
+    // (StillNearest's margins for the rounding of the distances.)
+    if (best < second && std::sqrt(best) * (1.0 + 1e-9) < reach * (1.0 - 1e-9))
+    {
+      return this->Height(i, (*this->In.Phi)[i], nearest, best);
+    }
+  }
+  return (*this)(i);
 }
 
 vtkSmartPointer<vtkTable> TableOfComponents(const std::map<double, Sums>& byKey,

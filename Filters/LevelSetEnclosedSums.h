@@ -306,10 +306,29 @@ inline bool MeasuresTangentDistance(double phi, double shellWidth)
 class SurfaceDistance
 {
 public:
+  /// Surface points kept per sample (KeptCandidates): the nearest and a margin.
+  static constexpr std::size_t Candidates = 16;
+
   SurfaceDistance(const EnclosedInputs& in, double reach);
   double operator()(std::size_t i) const;
+  /// Whether sample i measures a tangent plane's height (else its distance is phi).
+  bool MeasuresHeight(std::size_t i) const;
+  /// The search index of the surface points (null: none).
+  const PointCloudIndex* SurfaceIndex() const { return this->Index; }
+  /// operator()(i) for a sample that MeasuresHeight, keeping its nearest surface points as
+  /// query q of `keep` (Start-ed for Candidates).
+  double Keeping(std::size_t i, std::size_t q, KeptCandidates& keep) const;
+  /// operator()(i) for the sample of query q of `kept` (kept over this index's points, moved
+  /// since as `moves` tells): from its candidates where the nearest surely lies among them,
+  /// else searched.
+  double FromKept(std::size_t i, std::size_t q, const KeptCandidates& kept,
+    const KeptCandidates::Moves& moves) const;
 
 private:
+  // The distance of sample i (phi there `phi`) given its nearest surface point and the squared
+  // distance to it, if within the tangent reach (as a search within it would find).
+  double Height(std::size_t i, double phi, std::uint32_t nearest, double d2) const;
+
   const EnclosedInputs& In;
   std::vector<double> Points, Normals; // with images in a periodic box
   const double* PointData = nullptr;

@@ -13,9 +13,9 @@
 #include "LevelSetEnclosed.h"
 #include "LevelSetIsoValueSlide.h"
 #include "LevelSetIsopoints.h"
+#include "LevelSetKeptCandidates.h"
 #include "LevelSetNeighborCache.h"
 #include "LevelSetSPHField.h"
-#include "LevelSetSplatRadii.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -177,7 +177,7 @@ struct LastOutputs
   // The splat radii's candidates, from the last full run's surface output (with
   // QuickIsoValueChanges and SlideReady): re-runs that show those points slid, or again, take
   // most radii from them.
-  SplatCandidates Splats;
+  KeptCandidates Splats;
   const IsopointSet& ShownPoints() const
   {
     return this->ShownAreIsopoints ? this->Isopoints : this->Shown;

@@ -237,7 +237,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt,
-  const std::vector<double>* scalarsInStorageOrder, SplatCandidates* keptSplats)
+  const std::vector<double>* scalarsInStorageOrder, KeptCandidates* keptSplats)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;

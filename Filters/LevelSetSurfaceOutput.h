@@ -21,7 +21,7 @@ class vtkPolyData;
 namespace lsi
 {
 class SPHField;
-struct SplatCandidates;
+class KeptCandidates;
 
 /// Fills `surface` with the isopoints (no cells), "Normals", "SplatRadius" (`splatScale` times
 /// the distance to the 6th nearest isopoint) and, if `interpolateArrays`, every numeric array
@@ -42,8 +42,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr,
-  const std::vector<double>* scalarsInStorageOrder = nullptr,
-  SplatCandidates* keptSplats = nullptr);
+  const std::vector<double>* scalarsInStorageOrder = nullptr, KeptCandidates* keptSplats = nullptr);
 
 /// For each point of `points`, fits every component of each array of `sources` (input point
 /// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and

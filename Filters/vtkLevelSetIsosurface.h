@@ -91,7 +91,7 @@ struct RunParticles;
 class Distribution;
 class SPHField;
 struct SPHFieldRequest;
-struct SplatCandidates;
+class KeptCandidates;
 struct SlideResult;
 struct SurfaceScale;
 }
@@ -707,7 +707,7 @@ private:
     const lsi::IsopointSet& isopoints, const std::vector<double>& nearbyPoints,
     const lsi::SPHField* field, const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
     const std::vector<double>* scalarsInStorageOrder = nullptr,
-    lsi::SplatCandidates* keptSplats = nullptr);
+    lsi::KeptCandidates* keptSplats = nullptr);
   // The particles with their LevelSet array (`original`: the input's points, `input`: with
   // images and ghosts) and the Enclosed table; `halfWidth`: the band's (phi is clamped beyond).
   // The particles' distances are measured to the points this rank keeps (`keptPoints`, in one

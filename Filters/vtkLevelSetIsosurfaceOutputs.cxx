@@ -232,7 +232,7 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
   const lsi::Neighborhoods& geometry, const lsi::IsopointSet& isopoints,
   const std::vector<double>& nearbyPoints, const lsi::SPHField* field,
   const lsi::PointCloudIndex* surfaceIndex, vtkPolyData* output,
-  const std::vector<double>* scalarsInStorageOrder, lsi::SplatCandidates* keptSplats)
+  const std::vector<double>* scalarsInStorageOrder, lsi::KeptCandidates* keptSplats)
 {
   const auto start = Clock::now();
   int association = -1;

@@ -101,6 +101,13 @@ public:
   std::size_t Size() const { return this->Cloud.Count; }
   /// Point j of the cloud, as the searches' indices number them.
   const double* Point(std::uint32_t j) const { return this->Cloud.Points + 3 * std::size_t(j); }
+  /// The squared distance between two points as the searches sum it (as nanoflann's
+  /// L2_Simple_Adaptor does): to compare with theirs, to the bit.
+  static double SquaredDistance(const double* query, const double* x)
+  {
+    const double dx = query[0] - x[0], dy = query[1] - x[1], dz = query[2] - x[2];
+    return dx * dx + dy * dy + dz * dz;
+  }
 
 private:
   static constexpr std::size_t LeafSize = 16;
@@ -340,9 +347,7 @@ inline void PointCloudIndex::SearchNode(
       const std::size_t size = std::min(Piece, node->node_type.lr.right - begin);
       for (std::size_t i = 0; i < size; ++i)
       {
-        const double* x = xyz + 3 * order[begin + i];
-        const double dx = query[0] - x[0], dy = query[1] - x[1], dz = query[2] - x[2];
-        d2[i] = dx * dx + dy * dy + dz * dz; // (as nanoflann's L2_Simple_Adaptor sums them)
+        d2[i] = SquaredDistance(query, xyz + 3 * order[begin + i]);
       }
       const double worst = found.Worst();
       std::size_t count = 0;

@@ -9,7 +9,8 @@
 //   - after the balls shrink by 1.5 spacings or grow by one inside the band (phi changed only
 //     there, as a slide shifts it, the surface moved), the table around the kept deep inside is
 //     again the full route's, and the grown balls, apart before, are one component;
-//   - the same numbers, to the bit, on 1 and 2 threads;
+//   - the same numbers, to the bit, on 1 and 2 threads, and with the surface points nearest to
+//     the band's samples taken from those the first run kept or searched;
 //   - the union-find (Links), joined from 1 or 2 threads at once, gives the sets, and roots, of
 //     a plain serial one on random joins;
 //   - every sample a slide changed is among the deep inside's near samples (where a re-run
@@ -322,6 +323,32 @@ int main()
       [&]() { grownOneThread = lsi::EnclosedTable(in); });
   }
   CheckSameTable(grownFull, grown, 1e-9, "around the kept deep inside, after a slide");
+  // The surface points nearest to the band's samples, kept by the run that found the deep
+  // inside: the distances taken from them are a search's, to the bit.
+  Check(deep.Surface.Queries() > 1000 && deep.SurfaceQuery.size() == deep.Near.size(),
+    "the band's nearest surface points kept (" + std::to_string(deep.Surface.Queries()) +
+      " samples)");
+  lsi::EnclosedDeepInside searched = deep;
+  searched.SurfaceQuery.clear();
+  in.DeepInside = &searched;
+  Check(SameBits(grown, lsi::EnclosedTable(in)),
+    "the same table to the bit with the kept surface points as with searches");
+  // The same surface points in the reverse order (each far from where it lay): all searched.
+  std::vector<double> reversed(surface.size()), reversedNormals(normals.size());
+  const std::size_t m = surface.size() / 3;
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    std::copy(&surface[3 * k], &surface[3 * k] + 3, &reversed[3 * (m - 1 - k)]);
+    std::copy(&normals[3 * k], &normals[3 * k] + 3, &reversedNormals[3 * (m - 1 - k)]);
+  }
+  surface.swap(reversed);
+  normals.swap(reversedNormals);
+  const vtkSmartPointer<vtkTable> reversedSearched = lsi::EnclosedTable(in);
+  in.DeepInside = &deep;
+  Check(SameBits(reversedSearched, lsi::EnclosedTable(in)),
+    "the surface points renumbered: the same table to the bit as with searches");
+  surface.swap(reversed);
+  normals.swap(reversedNormals);
   Check(grownFull && grownFull->GetNumberOfRows() == 2,
     "the grown balls' shells meet: one component and the total (" +
       std::to_string(grownFull ? grownFull->GetNumberOfRows() : 0) + " rows)");

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The splat radii from kept candidates (SplatRadii with SplatCandidates), which a quick isovalue
+// The splat radii from kept candidates (SplatRadii with KeptCandidates), which a quick isovalue
 // change uses on the slid points, against a search on the same points, to the last bit:
 //   - keeping the candidates changes no radius; the same points again take every radius from them;
 //   - a sheet moved as a whole (a sphere grown by a third of its spacing, with a little noise)
@@ -10,6 +10,7 @@
 //   - an index over more points than the queried (as under MPI), moved: the same;
 //   - another point count: the candidates are made anew.
 // Far from the origin too (coordinates a million spacings large).
+#include "LevelSetKeptCandidates.h"
 #include "LevelSetSplatRadii.h"
 #include "NearestNeighbors.h"
 #include "TestCheck.h"
@@ -63,13 +64,13 @@ std::vector<double> Searched(const std::vector<double>& points, const std::vecto
 // Radii from `kept` on `points` (searched in `cloud` if given) against a search; returns how
 // many came from the candidates.
 std::size_t CheckAgainstSearch(const std::string& what, const std::vector<double>& points,
-  const std::vector<double>* cloud, lsi::SplatCandidates& kept)
+  const std::vector<double>* cloud, lsi::KeptCandidates& kept)
 {
   std::vector<double> radii;
   const lsi::PointCloudIndex index(
     cloud ? cloud->data() : points.data(), (cloud ? cloud->size() : points.size()) / 3);
-  kept.Reused = 0;
-  lsi::SplatRadii(points, 6, 1.5, radii, lsi::AbortCheck(), &index, &kept);
+  std::size_t reused = 0;
+  lsi::SplatRadii(points, 6, 1.5, radii, lsi::AbortCheck(), &index, &kept, &reused);
   const std::vector<double> searched = Searched(points, cloud);
   std::size_t differ = 0;
   for (std::size_t i = 0; i < radii.size(); ++i)
@@ -78,8 +79,8 @@ std::size_t CheckAgainstSearch(const std::string& what, const std::vector<double
   }
   Check(radii.size() == searched.size() && differ == 0,
     what + ": the radii a search gives (" + std::to_string(differ) + " differ; " +
-      std::to_string(kept.Reused) + " from the candidates)");
-  return kept.Reused;
+      std::to_string(reused) + " from the candidates)");
+  return reused;
 }
 
 void CheckAt(double centre)
@@ -91,9 +92,9 @@ void CheckAt(double centre)
   const std::vector<double> start = Sphere(count, radius, centre, random);
   const double spacing = radius * std::sqrt(4.0 * Pi / count);
 
-  lsi::SplatCandidates kept;
-  CheckAgainstSearch("kept anew" + at, start, nullptr, kept);
-  Check(kept.Outer.size() == count && kept.Reused == 0, "the candidates kept" + at);
+  lsi::KeptCandidates kept;
+  const std::size_t anew = CheckAgainstSearch("kept anew" + at, start, nullptr, kept);
+  Check(kept.Queries() == count && anew == 0, "the candidates kept" + at);
   const std::size_t again = CheckAgainstSearch("the same points" + at, start, nullptr, kept);
   Check(again == count, "the same points: every radius from the candidates" + at);
 
@@ -120,14 +121,14 @@ void CheckAt(double centre)
     byDistance.emplace_back(SquaredDistance(&start[3 * j], &start[300]), j);
   }
   std::sort(byDistance.begin(), byDistance.end());
-  const std::size_t mover = byDistance[lsi::SplatCandidates::PerPoint + 1].second;
+  const std::size_t mover = byDistance[lsi::SplatCandidates + 1].second;
   // And the point nearest to point 100 outside the 27 cells around its cell moved next to it
   // (those lay a cell width away at least, and no more).
-  const std::uint32_t* around = &kept.Around[27 * kept.QueryCell[100]];
+  const std::uint32_t* around = kept.CellsAround(kept.CellOf(100));
   std::size_t outside = 0;
   for (const auto& entry : byDistance)
   {
-    if (std::find(around, around + 27, kept.QueryCell[entry.second]) == around + 27)
+    if (std::find(around, around + 27, kept.CellOf(entry.second)) == around + 27)
     {
       outside = entry.second;
       break;
@@ -159,7 +160,7 @@ void CheckAt(double centre)
   std::vector<double> cloud(start);
   std::vector<double> more = Sphere(count / 2, radius + 0.5 * spacing, centre, random);
   cloud.insert(cloud.end(), more.begin(), more.end());
-  lsi::SplatCandidates wider;
+  lsi::KeptCandidates wider;
   CheckAgainstSearch("a wider index" + at, start, &cloud, wider);
   std::vector<double> cloudMoved(cloud);
   for (std::size_t j = 0; j < cloud.size(); ++j)
@@ -178,8 +179,8 @@ void CheckAt(double centre)
 
   // Fewer points: kept anew.
   const std::vector<double> fewer(start.begin(), start.end() - 3);
-  CheckAgainstSearch("one point fewer" + at, fewer, nullptr, kept);
-  Check(kept.Reused == 0 && kept.Outer.size() == count - 1, "one point fewer: kept anew" + at);
+  const std::size_t fewerReused = CheckAgainstSearch("one point fewer" + at, fewer, nullptr, kept);
+  Check(fewerReused == 0 && kept.Queries() == count - 1, "one point fewer: kept anew" + at);
 }
 } // namespace
 
