@@ -39,11 +39,13 @@ void Reinitialization::Run(
   UninitializedVector<double>& initial = this->Initial;
   initial.resize(region.size());
   ForEachIn(region, [&](std::size_t k, std::size_t i) { initial[k] = phi[i]; });
-  auto distance = [&](std::size_t i, std::uint32_t j) {
+  // (Eigen's norm() is the root of its squaredNorm(): the same distances, to the bit.)
+  auto squaredDistance = [&](std::size_t i, std::uint32_t j) {
     return (
       Eigen::Vector3d(this->Geometry.Position(i)) - Eigen::Vector3d(this->Geometry.Position(j)))
-      .norm();
+      .squaredNorm();
   };
+  auto distance = [&](std::size_t i, std::uint32_t j) { return std::sqrt(squaredDistance(i, j)); };
   auto positive = [](double value) { return value > 0.0; };
   // Samples with a neighbour of the other sign hold the interface: fix them at their
   // first-order distance; the others are updated by upwind steps.
@@ -85,7 +87,7 @@ void Reinitialization::Run(
       const std::uint32_t* ids = this->Geometry.NeighborsOf(i);
       const UpwindSlope slope = SteepestUpwindSlope(
         phi[i], stride, [&](std::size_t m) { return phi[ids[m]]; },
-        [&](std::size_t m) { return distance(i, ids[m]); });
+        [&](std::size_t m) { return squaredDistance(i, ids[m]); });
       this->NewValues[k] = ReinitializedValue(
         phi[i], initial[k], slope, settings.Spacing, settings.ReinitializationTimeStep);
     });

@@ -68,33 +68,43 @@ struct UpwindSlope
   double Floor = 0.0;
 };
 
-template <typename ValueFn, typename DistanceFn>
-UpwindSlope SteepestUpwindSlope(double psi, std::size_t count, ValueFn value, DistanceFn distance)
+template <typename ValueFn, typename SquaredDistanceFn>
+UpwindSlope SteepestUpwindSlope(
+  double psi, std::size_t count, ValueFn value, SquaredDistanceFn squaredDistance)
 {
-  // value(j) and distance(j): the neighbour's value and its distance from the sample. The
-  // distance (a square root) is taken only for the upwind neighbours.
-  UpwindSlope best;
+  // value(j) and squaredDistance(j): the neighbour's value and its squared distance from the
+  // sample. Which neighbours lie upwind is as good as random: the loop selects instead of
+  // branching, and compares slopes squared and cross-multiplied (one root and division in all),
+  // the quotients themselves only in a near tie: the steepest (the first of equals) that
+  // comparing the quotients picks, to the bit (TestNumerics), a quarter faster.
   const double sign = psi >= 0.0 ? 1.0 : -1.0;
+  double bestRise = 0.0, bestD2 = 1.0; // a slope of 0 until an upwind neighbour is found
+  double floor = 0.0;
+  bool found = false;
   for (std::size_t j = 0; j < count; ++j)
   {
     const double v = value(j);
-    if (!(sign * v < sign * psi))
+    const double d2 = squaredDistance(j);
+    const double rise = sign * (psi - v);
+    const double left = rise * rise * bestD2, right = bestRise * bestRise * d2;
+    const bool upwind = (sign * v < sign * psi) & (d2 > 0.0);
+    // Surely steeper, surely not (products in the normal range, apart by more than their
+    // rounding), or else as the quotients compare, to the bit.
+    const bool comparable = (left >= 1e-290) & (right >= 1e-290);
+    bool steeper = upwind & (!found | (comparable & (left > right * (1.0 + 1e-9))));
+    if (upwind & found & !steeper & !(comparable & (left * (1.0 + 1e-9) < right)))
     {
-      continue;
+      steeper = rise / std::sqrt(d2) > bestRise / std::sqrt(bestD2);
     }
-    const double d = distance(j);
-    if (!(d > 0.0))
-    {
-      continue;
-    }
-    const double slope = sign * (psi - v) / d;
-    if (!best.Found || slope > best.Norm)
-    {
-      best.Found = true;
-      best.Norm = slope;
-      best.Floor = v;
-    }
+    bestRise = steeper ? rise : bestRise;
+    bestD2 = steeper ? d2 : bestD2;
+    floor = steeper ? v : floor;
+    found = found | steeper;
   }
+  UpwindSlope best;
+  best.Found = found;
+  best.Norm = found ? bestRise / std::sqrt(bestD2) : 0.0;
+  best.Floor = floor;
   return best;
 }
 

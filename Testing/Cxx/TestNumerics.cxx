@@ -481,7 +481,7 @@ void TestTheorem1()
 void TestReinitialization()
 {
   // Upwind slope of an exact 1D distance (neighbours at +-1 of psi = 5) is 1: nothing moves.
-  auto unit = [](std::size_t) { return 1.0; };
+  auto unit = [](std::size_t) { return 1.0; }; // (squared distances)
   auto neighbors = [](double a, double b) {
     return [a, b](std::size_t j) { return j == 0 ? a : b; };
   };
@@ -498,6 +498,60 @@ void TestReinitialization()
   s = lsi::SteepestUpwindSlope(-9.0, 2, neighbors(-4.0, -10.0), unit);
   const double negative = lsi::ReinitializedValue(-9.0, -9.0, s, 1.0, 100.0);
   Check(negative > -9.0 && negative <= -4.0, "negative side mirrors");
+  // The steepest upwind slope as the quotients sign (psi - v) / |x - x_j| pick it (the first
+  // of equals), to the bit: random neighbours, slopes equal or a rounding or a millionth apart,
+  // at lengths of 1, 1e-80 (the products compared then fall below the normal range) and 1e80.
+  auto quotientsPick = [](double psi, const std::vector<double>& v, const std::vector<double>& d2) {
+    lsi::UpwindSlope best;
+    const double sign = psi >= 0.0 ? 1.0 : -1.0;
+    for (std::size_t j = 0; j < v.size(); ++j)
+    {
+      const double d = std::sqrt(d2[j]);
+      if (!(sign * v[j] < sign * psi) || !(d > 0.0))
+      {
+        continue;
+      }
+      const double slope = sign * (psi - v[j]) / d;
+      if (!best.Found || slope > best.Norm)
+      {
+        best = lsi::UpwindSlope{ true, slope, v[j] };
+      }
+    }
+    return best;
+  };
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::size_t differ = 0, cases = 0;
+  for (const double length : { 1.0, 1e-80, 1e80 })
+  {
+    for (int trial = 0; trial < 20000; ++trial)
+    {
+      const double psi = length * uniform(random);
+      std::vector<double> v(26), d2(26);
+      for (std::size_t j = 0; j < v.size(); ++j)
+      {
+        const double d = length * (0.5 + std::abs(uniform(random)));
+        d2[j] = d * d;
+        v[j] = psi - (trial % 3 == 0 ? 1.0 : uniform(random)) * d; // (equal slopes every third)
+        if (j % 5 == 4)
+        {
+          // The one before at twice the distance and rise (the same slope), a rounding
+          // steeper, or at the same distance a millionth steeper.
+          const double scale = trial % 3 == 0 ? 2.0 : (trial % 3 == 1 ? 1.0 + 1e-12 : 1.0 + 1e-6);
+          v[j] = psi - scale * (psi - v[j - 1]);
+          d2[j] = (trial % 3 == 2 ? 1.0 : scale * scale) * d2[j - 1];
+        }
+      }
+      const lsi::UpwindSlope a = lsi::SteepestUpwindSlope(
+        psi, v.size(), [&](std::size_t j) { return v[j]; }, [&](std::size_t j) { return d2[j]; });
+      const lsi::UpwindSlope b = quotientsPick(psi, v, d2);
+      differ += a.Found != b.Found || a.Norm != b.Norm || a.Floor != b.Floor;
+      ++cases;
+    }
+  }
+  const std::string picked = "the steepest upwind slope is the quotients' pick, to the bit (" +
+    std::to_string(differ) + " of " + std::to_string(cases) + " differ)";
+  Check(differ == 0, picked.c_str());
   Check(lsi::InterfaceDistance(0.6, 2.0, 1.0) == 0.3, "interface distance phi / |grad phi|");
   Check(lsi::InterfaceDistance(-28.0, 1.0, 2.5) == -2.5,
     "interface distance at most the distance to the other side");
