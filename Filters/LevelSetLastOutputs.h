@@ -178,6 +178,7 @@ struct LastOutputs
   // QuickIsoValueChanges and SlideReady): re-runs that show those points slid, or again, take
   // most radii from them.
   KeptCandidates Splats;
+  KeptCandidates* SplatsIfKept() { return this->Splats.Empty() ? nullptr : &this->Splats; }
   const IsopointSet& ShownPoints() const
   {
     return this->ShownAreIsopoints ? this->Isopoints : this->Shown;

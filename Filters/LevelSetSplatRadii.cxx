@@ -51,10 +51,6 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
   }
   if (count < 2)
   {
-    if (kept)
-    {
-      kept->Clear();
-    }
     return true;
   }
   std::unique_ptr<PointCloudIndex> built;
@@ -65,17 +61,15 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
   const PointCloudIndex& index = given ? *given : *built;
   // The point itself comes first in its own query.
   const std::size_t k = std::min<std::size_t>(count, static_cast<std::size_t>(neighbors) + 1);
-  // (A cloud of no more than the candidates, or a fit wider than them: searched each time.)
-  const bool keeps = kept && index.Size() > SplatCandidates && k <= SplatCandidates;
-  const bool reuses = keeps && kept->Fits(count, index) && kept->Candidates() == SplatCandidates;
-  if (kept && !reuses)
-  {
-    kept->Clear();
-  }
+  // Candidates kept anew when none are (a cloud of no more than them, or a fit wider than
+  // them: none), used when kept for as many points and index points, else left as they are.
+  const bool usable = kept && index.Size() > SplatCandidates && k <= SplatCandidates;
+  const bool keeps = usable && kept->Empty();
+  const bool reuses = usable && kept->Fits(count, index) && kept->Candidates() == SplatCandidates;
   const KeptCandidates::Moves moves = reuses ? kept->MovesSince(index) : KeptCandidates::Moves();
   // Kept anew: the candidates, and the first one left out.
-  const std::size_t wanted = keeps && !reuses ? SplatCandidates + 1 : k;
-  if (keeps && !reuses)
+  const std::size_t wanted = keeps ? SplatCandidates + 1 : k;
+  if (keeps)
   {
     kept->Start(count, SplatCandidates);
   }
@@ -113,7 +107,7 @@ bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
       reused += taken;
     },
     aborted);
-  if (keeps && !reuses && (!done || !kept->Finish(points.data(), index)))
+  if (keeps && (!done || !kept->Finish(points.data(), index)))
   {
     kept->Clear();
   }

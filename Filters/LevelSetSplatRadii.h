@@ -23,11 +23,11 @@ constexpr std::size_t SplatCandidates = 12;
 /// Splat radius of each point (3 doubles per point): `factor` times the distance to its
 /// `neighbors`-th nearest other point, searched in `index` if given (over `points`, or over
 /// more points near them), else in one built here. Returns false only when aborted.
-/// `kept`, if given and empty (or kept for other counts), receives each point's
-/// SplatCandidates nearest (a search of a few more points); if given and kept for as many
-/// points and index points, a point whose neighbours surely lie among its candidates takes its
-/// radius from them (`fromCandidates`, if given, counts those), the others are searched: the
-/// radii of a search either way.
+/// `kept`, if given and empty, receives each point's SplatCandidates nearest (a search of a few
+/// more points); if given and kept for as many points and index points, a point whose
+/// neighbours surely lie among its candidates takes its radius from them (`fromCandidates`, if
+/// given, counts those), the others are searched: the radii of a search either way. Kept for
+/// other counts, it is left as it is.
 bool SplatRadii(const std::vector<double>& points, int neighbors, double factor,
   std::vector<double>& radii, const AbortCheck& aborted, const PointCloudIndex* index = nullptr,
   KeptCandidates* kept = nullptr, std::size_t* fromCandidates = nullptr);

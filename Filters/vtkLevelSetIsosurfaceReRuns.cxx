@@ -150,7 +150,7 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   const std::unique_ptr<lsi::PointCloudIndex> nearbyIndex = lsi::IndexOfPoints(nearby);
   last.Valid = false; // until the surface is made
   if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, last.ShownPoints(), nearby, field,
-        nearbyIndex.get(), surfaceOutput, last.ScalarsInStorageOrder(), &last.Splats)))
+        nearbyIndex.get(), surfaceOutput, last.ScalarsInStorageOrder(), last.SplatsIfKept())))
   {
     return false;
   }
@@ -563,7 +563,7 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const lsi::PointCloudIndex* nearbyIndex =
     nearbyInCell ? inCellIndex.get() : (ranks.Distributed() ? surfaceIndex.get() : shownIndex);
   if (!ranks.All(this->MakeSurfaceOutput(work, *geometry, *shown, nearby.Points, last.Field.get(),
-        nearbyIndex, surfaceOutput, last.ScalarsInStorageOrder(), &last.Splats)))
+        nearbyIndex, surfaceOutput, last.ScalarsInStorageOrder(), last.SplatsIfKept())))
   {
     return false;
   }

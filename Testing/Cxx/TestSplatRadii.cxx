@@ -8,7 +8,7 @@
 //   - one point moved next to a far point, one point moved next to a near one, every point
 //     moved a few spacings at random: the radii a search gives (the bounds catch each);
 //   - an index over more points than the queried (as under MPI), moved: the same;
-//   - another point count: the candidates are made anew.
+//   - another point count: searched, the candidates left as they are (made anew once cleared).
 // Far from the origin too (coordinates a million spacings large).
 #include "LevelSetKeptCandidates.h"
 #include "LevelSetSplatRadii.h"
@@ -177,10 +177,13 @@ void CheckAt(double centre)
   CheckAgainstSearch("a wider index, one of its points moved onto a point" + at,
     std::vector<double>(cloudMoved.begin(), cloudMoved.begin() + 3 * count), &cloudMoved, wider);
 
-  // Fewer points: kept anew.
+  // Fewer points: searched, the candidates left as they are; kept anew once cleared.
   const std::vector<double> fewer(start.begin(), start.end() - 3);
   const std::size_t fewerReused = CheckAgainstSearch("one point fewer" + at, fewer, nullptr, kept);
-  Check(fewerReused == 0 && kept.Queries() == count - 1, "one point fewer: kept anew" + at);
+  Check(fewerReused == 0 && kept.Queries() == count, "one point fewer: searched, kept as is" + at);
+  kept.Clear();
+  CheckAgainstSearch("one point fewer, cleared" + at, fewer, nullptr, kept);
+  Check(kept.Queries() == count - 1, "one point fewer, cleared: kept anew" + at);
 }
 } // namespace
 
