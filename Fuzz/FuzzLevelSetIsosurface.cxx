@@ -4,7 +4,9 @@
 // or a surface, never read out of bounds, crash or hang; and never NaN in the surface, nor an
 // empty or non-converged surface, nor a zero normal, without a warning or an error (checked here:
 // abort otherwise). Layout (all optional, short inputs are
-// padded with zeros): a flags byte, a neighbour-count byte, eight float64 parameters (raw bits,
+// padded with zeros): a flags byte, a neighbour-count byte (from 160 up it also asks for
+// re-runs: QuickIsoValueChanges, a small isovalue change, a SplatScale change, each checked
+// as the first run is), eight float64 parameters (raw bits,
 // so NaN, infinities and extremes occur), then up to 1,000 points of four float32 each
 // (x, y, z, value).
 #include "MessageCounter.h"
@@ -82,6 +84,33 @@ bool HasNaN(vtkDataArray* array)
   }
   return false;
 }
+// The promise of issue 14, checked after every run: no NaN in the surface's points or normals,
+// and no empty or non-converged surface without a warning or an error (`messages` counts them
+// over the runs so far).
+void Check(vtkLevelSetIsosurface* filter, lsi::test::MessageCounter* messages, vtkIdType count)
+{
+  vtkPolyData* surface = filter->GetOutput(0);
+  if (HasNaN(surface->GetPoints() ? surface->GetPoints()->GetData() : nullptr) ||
+    HasNaN(surface->GetPointData()->GetNormals()))
+  {
+    std::fprintf(stderr, "NaN in the surface's points or normals\n");
+    std::abort();
+  }
+  // (An empty input gives an empty output without a word, as in VTK's filters: under MPI a rank
+  // may hold no particles.)
+  if (messages->Count == 0 && count > 0 &&
+    (surface->GetNumberOfPoints() == 0 || HasZeroNormal(surface->GetPointData()->GetNormals()) ||
+      (filter->GetNumberOfIterationsPerformed() > 0 && !filter->GetConverged())))
+  {
+    std::fprintf(stderr,
+      "an empty or non-converged surface without a message: %lld input points, %lld output "
+      "points, %lld isopoints, %d iterations, converged %d\n",
+      static_cast<long long>(count), static_cast<long long>(surface->GetNumberOfPoints()),
+      static_cast<long long>(filter->GetNumberOfIsopoints()),
+      filter->GetNumberOfIterationsPerformed(), filter->GetConverged() ? 1 : 0);
+    std::abort();
+  }
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -91,7 +120,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   Bytes in{ data, size };
   const std::uint8_t flags = in.Next<std::uint8_t>();
-  const int neighbors = 4 + in.Next<std::uint8_t>() % 40;
+  const std::uint8_t neighborByte = in.Next<std::uint8_t>();
+  const int neighbors = 4 + neighborByte % 40;
+  // Its high values also re-run: QuickIsoValueChanges on, then a small isovalue change (a
+  // slide, or the method) and a change of SplatScale (the output made anew from the last run).
+  const bool reRuns = neighborByte >= 160;
   double parameters[8];
   for (double& p : parameters)
   {
@@ -172,30 +205,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   vtkNew<lsi::test::MessageCounter> messages; // warnings and errors
   filter->AddObserver(vtkCommand::ErrorEvent, messages);
   filter->AddObserver(vtkCommand::WarningEvent, messages);
+  filter->SetQuickIsoValueChanges(reRuns);
   filter->Update();
-
-  // The promise of issue 14, checked on every input: no NaN in the surface's points or normals,
-  // and no empty or non-converged surface without a warning or an error.
-  vtkPolyData* surface = filter->GetOutput(0);
-  if (HasNaN(surface->GetPoints() ? surface->GetPoints()->GetData() : nullptr) ||
-    HasNaN(surface->GetPointData()->GetNormals()))
+  Check(filter, messages, count);
+  if (reRuns)
   {
-    std::fprintf(stderr, "NaN in the surface's points or normals\n");
-    std::abort();
-  }
-  // (An empty input gives an empty output without a word, as in VTK's filters: under MPI a rank
-  // may hold no particles.)
-  if (messages->Count == 0 && count > 0 &&
-    (surface->GetNumberOfPoints() == 0 || HasZeroNormal(surface->GetPointData()->GetNormals()) ||
-      (filter->GetNumberOfIterationsPerformed() > 0 && !filter->GetConverged())))
-  {
-    std::fprintf(stderr,
-      "an empty or non-converged surface without a message: %lld input points, %lld output "
-      "points, %lld isopoints, %d iterations, converged %d\n",
-      static_cast<long long>(count), static_cast<long long>(surface->GetNumberOfPoints()),
-      static_cast<long long>(filter->GetNumberOfIsopoints()),
-      filter->GetNumberOfIterationsPerformed(), filter->GetConverged() ? 1 : 0);
-    std::abort();
+    // A hundredth of the values' finite range above (the surface moves a little).
+    double low = HUGE_VAL, high = -HUGE_VAL;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const double v = values->GetValue(i);
+      low = std::isfinite(v) ? std::min(low, v) : low;
+      high = std::isfinite(v) ? std::max(high, v) : high;
+    }
+    const double change = high > low ? 0.01 * (high - low) : 0.0;
+    if (std::isfinite(parameters[0] + change))
+    {
+      filter->SetIsoValue(parameters[0] + change);
+      filter->Update();
+      Check(filter, messages, count);
+    }
+    filter->SetSplatScale(2.0 * filter->GetSplatScale());
+    filter->Update();
+    Check(filter, messages, count);
   }
   return 0;
 }
