@@ -35,7 +35,8 @@ public:
   void SetOuter(std::size_t q, double outer) { this->Outer[q] = outer; }
   /// Once every query's candidates are set (an outer distance of 0: none kept for it): keeps
   /// where the queries (3 doubles each, as many as Start's) and the index's points lie. False
-  /// (and nothing kept) if they span too many cells to number.
+  /// (and nothing kept) if no query kept any, a position is not finite, or they span too many
+  /// cells to number.
   bool Finish(const double* queries, const PointCloudIndex& index);
 
   bool Empty() const { return this->Outer.empty(); }
