@@ -22,14 +22,12 @@ bool Positive(double phi)
 }
 } // namespace
 
-LevelSetEvolution::LevelSetEvolution(const Neighborhoods& geometry,
-  const std::vector<double>& dataSign, const std::vector<double>& dataOffsets,
-  std::vector<double>& phi)
+LevelSetEvolution::LevelSetEvolution(
+  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double>& phi)
   : Geometry(geometry)
-  , DataSign(dataSign)
   , DataOffsets(dataOffsets)
   , Phi(phi)
-  , Gradient(FilledInParallel(3 * geometry.NumberOfSamples, 0.0))
+  , Gradient(3 * geometry.NumberOfSamples)
   , Collector(geometry)
   , Reinitializer(geometry, Collector)
 {
@@ -108,7 +106,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
         ? this->Geometry.DivergenceAt(i, [&](std::size_t m) { return distanceFlux(ids[m]); })
         : 0.0;
       this->NewValues[k] =
-        EvolvedValue(this->Phi[i], this->DataSign[i], curvature, regularization, c);
+        EvolvedValue(this->Phi[i], Sign(this->DataOffsets[i]), curvature, regularization, c);
     });
   }
 
@@ -132,7 +130,7 @@ void LevelSetEvolution::Measure(const EvolutionSettings& settings, IterationReco
           continue;
         }
         const double s = Positive(this->Phi[i]) ? 1.0 : -1.0;
-        local += std::abs(s - this->DataSign[i]);
+        local += std::abs(s - Sign(this->DataOffsets[i]));
       }
     });
   double total = 0.0;

@@ -271,17 +271,15 @@ std::string CheckSeedSpheres(
 }
 
 void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>& values,
-  double isoValue, std::vector<double>& dataOffsets, std::vector<double>& dataSign)
+  double isoValue, std::vector<double>& dataOffsets)
 {
   const std::size_t n = geometry.NumberOfSamples;
   ResizeMappedInParallel(dataOffsets, n);
-  ResizeMappedInParallel(dataSign, n);
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         dataOffsets[i] = values[geometry.Order[i]] - isoValue;
-        dataSign[i] = Sign(dataOffsets[i]);
       }
     });
 }

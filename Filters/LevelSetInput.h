@@ -49,9 +49,9 @@ std::string CheckNeighborhoods(const Neighborhoods& geometry);
 std::string CheckSeedSpheres(
   const std::vector<double>& spheres, const std::vector<std::size_t>& samplesPerSphere);
 
-/// dataOffsets = f - f_iso and dataSign = its sign, per sample in storage order.
+/// dataOffsets = f - f_iso per sample, in storage order.
 void DataInStorageOrder(const Neighborhoods& geometry, const std::vector<double>& values,
-  double isoValue, std::vector<double>& dataOffsets, std::vector<double>& dataSign);
+  double isoValue, std::vector<double>& dataOffsets);
 
 } // namespace lsi
 

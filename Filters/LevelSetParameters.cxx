@@ -25,7 +25,7 @@ std::vector<std::uint32_t> OwnedRadiusSample(
 }
 
 SurfaceScale ScaleAtSurface(
-  const Neighborhoods& geometry, const std::vector<double>& dataSign, const Communicator& ranks)
+  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, const Communicator& ranks)
 {
   // Sums: of the radii at the surface, their count, and of all radii and theirs; over the
   // fixed sample of the particles (InRadiusSample), the same whatever the ranks.
@@ -45,11 +45,12 @@ SurfaceScale ScaleAtSurface(
         {
           const std::size_t i = sample[k];
           const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
+          const double sign = Sign(dataOffsets[i]);
           part[2] += row.Radius;
           part[3] += 1.0;
           for (int m = 1; m < geometry.Stride; ++m)
           {
-            if (dataSign[row.Ids[m]] != dataSign[i])
+            if (Sign(dataOffsets[row.Ids[m]]) != sign)
             {
               part[0] += row.Radius;
               part[1] += 1.0;

@@ -48,9 +48,9 @@ struct SurfaceScale
 
 /// Adaptive data (SPH) is sampled far more densely in some places than at the isosurface, so
 /// the scale is measured on the samples with a neighbour on the other side of the isovalue
-/// (`dataSign`, the sign of f - f_iso per sample), or on all samples if there is none; both
-/// among the fixed sample of OwnedRadiusSample (every particle up to 131,072 particles).
-SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataSign,
+/// (by the sign of `dataOffsets`, f - f_iso per sample), or on all samples if there is none;
+/// both among the fixed sample of OwnedRadiusSample (every particle up to 131,072 particles).
+SurfaceScale ScaleAtSurface(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const Communicator& ranks = SingleProcess());
 
 EvolutionSettings ChooseEvolutionSettings(

@@ -458,18 +458,16 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
 }
 
 bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,
-  std::vector<double>& dataOffsets, std::vector<double>& dataSign, const AbortCheck& aborted)
+  std::vector<double>& dataOffsets, const AbortCheck& aborted)
 {
   const std::size_t n = geometry.NumberOfSamples;
   dataOffsets.resize(n);
-  dataSign.resize(n);
   return ParallelForInBlocks(
     n,
     [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j)
       {
         dataOffsets[j] = field.ValueAt(geometry.Position(j)) - isoValue;
-        dataSign[j] = Sign(dataOffsets[j]);
       }
     },
     aborted, 8192);

@@ -216,7 +216,7 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
 /// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
 /// sign at the samples as the field itself gives it. Returns false only when aborted.
 bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,
-  std::vector<double>& dataOffsets, std::vector<double>& dataSign, const AbortCheck& aborted);
+  std::vector<double>& dataOffsets, const AbortCheck& aborted);
 
 } // namespace lsi
 

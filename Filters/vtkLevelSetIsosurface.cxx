@@ -242,16 +242,16 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
     return false;
   }
   this->CheckPeriodicMargin(*geometry, field.get());
-  std::vector<double> dataOffsets, dataSign; // f - f_iso and its sign, in storage order
+  std::vector<double> dataOffsets; // f - f_iso, in storage order
   bool ok = true;
   if (!field)
   {
-    lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets, dataSign);
+    lsi::DataInStorageOrder(*geometry, values, this->IsoValue, dataOffsets);
   }
   else
   {
     ok = lsi::SPHOffsetsAtSamples(
-      *geometry, *field, this->IsoValue, dataOffsets, dataSign, this->Stage(SPHFieldStage));
+      *geometry, *field, this->IsoValue, dataOffsets, this->Stage(SPHFieldStage));
   }
   if (!ranks.All(ok))
   {
@@ -259,8 +259,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   }
   // A ghost at the halo's edge misses part of its kernel sum: its owner's value is the serial one.
   ranks.RefreshGhosts(dataOffsets);
-  ranks.RefreshGhosts(dataSign);
-  const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataSign, ranks);
+  const lsi::SurfaceScale scale = lsi::ScaleAtSurface(*geometry, dataOffsets, ranks);
   const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
   this->InputSeconds += SecondsSince(inputStart);
   std::vector<double> phi;
@@ -288,7 +287,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.DataOffsets = std::vector<double>(); // (this run's, moved there at its end: no copy)
   last.Spacing = settings.Spacing;
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
-  if (!this->Evolve(*geometry, dataSign, dataOffsets, settings, phi, iterations))
+  if (!this->Evolve(*geometry, dataOffsets, settings, phi, iterations))
   {
     return false;
   }

@@ -694,9 +694,8 @@ private:
     std::vector<double>& phi);
   bool BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field);
-  bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataSign,
-    const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-    std::vector<double>& phi, vtkTable* iterations);
+  bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
+    const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations);
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
     const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);

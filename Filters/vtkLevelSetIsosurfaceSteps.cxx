@@ -287,11 +287,11 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
 }
 
 bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataSign, const std::vector<double>& dataOffsets,
-  const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations)
+  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
+  std::vector<double>& phi, vtkTable* iterations)
 {
   const auto start = Clock::now();
-  lsi::LevelSetEvolution evolution(geometry, dataSign, dataOffsets, phi);
+  lsi::LevelSetEvolution evolution(geometry, dataOffsets, phi);
   evolution.SetCommunicator(*this->Internal->Ranks);
   const lsi::AbortCheck progress = this->Stage(EvolutionStage);
   const bool finished = evolution.Run(
