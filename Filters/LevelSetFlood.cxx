@@ -345,7 +345,10 @@ bool SignedDistanceToCrossings(const Neighborhoods& geometry,
   // distances throughout (the same order, no square roots in the inner loop).
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
-  std::vector<double> distance; // squared
+  // The squared distances are kept in phi itself, turned into phi at the end (no second array
+  // of n values to fault in).
+  std::vector<double>& distance = phi;
+  distance.clear();
   ResizeMappedInParallel(distance, n, HUGE_VAL);
   std::vector<Eigen::Vector3d> closest(n);
   using Entry = std::pair<double, std::uint32_t>;
@@ -418,12 +421,11 @@ bool SignedDistanceToCrossings(const Neighborhoods& geometry,
   {
     return false;
   }
-  phi.resize(n);
   vtkSMPTools::For(
     0, static_cast<vtkIdType>(n), BalancedGrain(n, 16384), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const double d = std::min(std::sqrt(distance[i]), halfWidth);
+        const double d = std::min(std::sqrt(distance[i]), halfWidth); // (phi[i] squared)
         phi[i] = inside[i] ? std::max(d, 1e-12 * halfWidth) : -d;
       }
     });

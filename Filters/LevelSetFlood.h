@@ -45,7 +45,7 @@ std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<
 /// distance (positive inside) to the crossings between inside and outside neighbours (placed
 /// where `dataOffsets` interpolates to zero), up to `halfWidth` and clamped to +-halfWidth
 /// beyond. Meanwhile a helper thread computes the MLS stencils of the band the evolution
-/// starts on. False if aborted (phi is then left as it was).
+/// starts on. False if aborted (phi then holds no level set).
 bool SignedDistanceToCrossings(const Neighborhoods& geometry,
   const std::vector<double>& dataOffsets, const std::vector<char>& inside, double halfWidth,
   std::vector<double>& phi, const AbortCheck& aborted);
