@@ -274,17 +274,25 @@ std::vector<std::size_t> FrontNearOwned(const Neighborhoods& geometry, const Com
 }
 
 // Every sample of a pocket disagrees with the data, so only the (few) disagreeing samples are
-// searched.
-std::vector<double> WithoutSpuriousPockets(
-  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double> phi)
+// searched: found in parallel, then taken in ascending order (as a serial scan meets them).
+FlippedSamples FlipSpuriousPockets(
+  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double>& phi)
 {
   const std::size_t n = geometry.NumberOfSamples;
   auto positive = [&](std::size_t i) { return phi[i] > 0.0; };
   auto disagrees = [&](std::size_t i) { return positive(i) != (dataOffsets[i] > 0.0); };
+  FlippedSamples flipped;
+  const std::vector<std::uint32_t> starts = IndicesWhere<std::uint32_t>(n, disagrees);
+  if (starts.empty())
+  {
+    return flipped;
+  }
   std::vector<char> state(n, 0); // 1: in the region being searched, 2: done
   std::vector<std::uint32_t> region;
-  for (std::size_t start = 0; start < n; ++start)
+  for (const std::uint32_t start : starts)
   {
+    // (A flip below only makes samples agree: a later start still disagrees, or was flipped
+    // with its region and is done.)
     if (state[start] || !disagrees(start))
     {
       continue;
@@ -314,12 +322,13 @@ std::vector<double> WithoutSpuriousPockets(
       state[i] = 2;
       if (pocket)
       {
+        flipped.Before.emplace_back(i, phi[i]);
         // A sample at phi = 0 gets a tiny positive value, relative to the spacing (no unit).
         phi[i] = phi[i] > 0.0 ? -phi[i] : std::max(-phi[i], 1e-12 * geometry.MeanRadius);
       }
     }
   }
-  return phi;
+  return flipped;
 }
 
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lsi
@@ -85,13 +86,28 @@ struct IsopointSet
 /// projections with MLS fits takes a few tens of milliseconds on one core.
 constexpr std::size_t IsopointBlock = 8192;
 
-/// phi without its spurious pockets: a connected region of samples with one sign of phi in which
-/// no sample has that sign in the data (`dataOffsets`, f - f_iso) cannot hold a piece of the
-/// isosurface, so its sign is flipped and Newton's method is not drawn to zeros around it.
-std::vector<double> WithoutSpuriousPockets(
-  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double> phi);
+/// The samples whose sign FlipSpuriousPockets flipped, with the values they had.
+struct FlippedSamples
+{
+  std::vector<std::pair<std::uint32_t, double>> Before;
+  /// Puts the values back: phi is again what FlipSpuriousPockets was given.
+  void Restore(std::vector<double>& phi) const
+  {
+    for (const auto& sample : this->Before)
+    {
+      phi[sample.first] = sample.second;
+    }
+  }
+};
 
-/// The isopoints of `phi` (after WithoutSpuriousPockets): rough points, one Newton projection
+/// Removes phi's spurious pockets, in place: a connected region of samples with one sign of phi
+/// in which no sample has that sign in the data (`dataOffsets`, f - f_iso) cannot hold a piece
+/// of the isosurface, so its sign is flipped and Newton's method is not drawn to zeros around
+/// it. (In place, with what it changed returned: a copy of phi would be n fresh values.)
+FlippedSamples FlipSpuriousPockets(
+  const Neighborhoods& geometry, const std::vector<double>& dataOffsets, std::vector<double>& phi);
+
+/// The isopoints of `phi` (after FlipSpuriousPockets): rough points, one Newton projection
 /// per voxel of side CellSize, thinned to one point per voxel. Under MPI only near this rank's
 /// own samples (FrontNearOwned). Returns false only when aborted.
 bool ExtractIsopoints(const Neighborhoods& geometry, const std::vector<double>& phi,

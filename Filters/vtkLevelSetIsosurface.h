@@ -696,9 +696,10 @@ private:
     const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field);
   bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations);
+  /// (phi: the evolved level set, changed meanwhile and put back before it returns.)
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    const std::vector<double>& evolvedPhi, const lsi::SurfaceScale& scale,
-    const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);
+    std::vector<double>& phi, const lsi::SurfaceScale& scale, const lsi::SPHField* field,
+    lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings);
   // (`nearbyPoints`: the points whose distances set the splat radii, the isopoints or, under
   // MPI, every point the rank found; `surfaceIndex`: a search index over them, or null when
   // there are none.)

@@ -320,9 +320,8 @@ bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
 }
 
 bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const std::vector<double>& evolvedPhi,
-  const lsi::SurfaceScale& scale, const lsi::SPHField* field, lsi::IsopointSet& isopoints,
-  lsi::IsopointSettings& settings)
+  const std::vector<double>& dataOffsets, std::vector<double>& phi, const lsi::SurfaceScale& scale,
+  const lsi::SPHField* field, lsi::IsopointSet& isopoints, lsi::IsopointSettings& settings)
 {
   // Sub-stages in proportion to their times at 2M samples: isopoints 28%, completion 48%,
   // refinement on the data 24%.
@@ -336,7 +335,14 @@ bool vtkLevelSetIsosurface::ExtractIsopoints(const lsi::Neighborhoods& geometry,
     // where the particles are sparse.
     settings.CellSize *= 0.5;
   }
-  const std::vector<double> phi = lsi::WithoutSpuriousPockets(geometry, dataOffsets, evolvedPhi);
+  // The isopoints come from phi without its spurious pockets; the evolved phi is put back on
+  // every way out (the particle outputs and later re-runs read it).
+  struct PutBack
+  {
+    std::vector<double>& Phi;
+    const lsi::FlippedSamples Flipped;
+    ~PutBack() { this->Flipped.Restore(this->Phi); }
+  } putBack{ phi, lsi::FlipSpuriousPockets(geometry, dataOffsets, phi) };
   if (!lsi::ExtractIsopoints(geometry, phi, settings, isopoints, lsi::SubRange(stage, 0.0, 0.28),
         *this->Internal->Ranks))
   {
