@@ -702,31 +702,16 @@ double Neighborhoods::SearchRow(std::size_t i, double nearbyRadius, std::uint32_
 Neighborhoods::SampleRow Neighborhoods::FixedSampleRow(std::size_t i) const
 {
   this->EnsureFixedSampleRows();
-  const auto at = std::lower_bound(this->Sample.begin(), this->Sample.end(), i);
-  const std::size_t k = static_cast<std::size_t>(at - this->Sample.begin());
-  return { &this->SampleIds[k * static_cast<std::size_t>(this->Stride)], this->SampleRadii[k] };
+  return { this->NeighborsOf(i), this->RadiusOf(i) };
 }
 
 void Neighborhoods::EnsureFixedSampleRows() const
 {
   if (this->SampleRowsEvery != this->SampleEvery)
   {
-    // First use of this sample: its lists, in parallel. Main thread only (as RadiusSampleWhere).
-    const std::size_t stride = static_cast<std::size_t>(this->Stride);
-    this->SampleIds.resize(this->Sample.size() * stride);
-    this->SampleRadii.resize(this->Sample.size());
-    // Each search bounded first by the radius of the one before it (SearchRow: the lists are
-    // exact either way).
-    vtkSMPTools::For(0, static_cast<vtkIdType>(this->Sample.size()),
-      BalancedGrain(this->Sample.size(), 32), [&](vtkIdType begin, vtkIdType end) {
-        double nearby = 0.0;
-        for (vtkIdType m = begin; m < end; ++m)
-        {
-          this->SampleRadii[m] =
-            this->SearchRow(this->Sample[m], nearby, &this->SampleIds[m * stride]);
-          nearby = this->SampleRadii[m];
-        }
-      });
+    // First use of this sample: its missing lists, in parallel (main thread only, as
+    // RadiusSampleWhere).
+    this->EnsureNeighbors(this->Sample.data(), this->Sample.size());
     this->SampleRowsEvery = this->SampleEvery;
   }
 }

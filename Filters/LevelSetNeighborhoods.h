@@ -206,11 +206,11 @@ struct Neighborhoods
     }
     return sample;
   }
-  /// The list and radius of sample i of the fixed sample that RadiusSampleWhere chose last
-  /// (the same as NeighborsOf and RadiusOf give). They are kept apart from the main lists: the
-  /// sample is spread over all samples, and its lists written there would make nearly every
-  /// page of that array resident. Computed on first use (EnsureFixedSampleRows); main thread
-  /// only, except once they are computed.
+  /// The list and radius of sample i of the fixed sample that RadiusSampleWhere chose last: its
+  /// main list (NeighborsOf, RadiusOf), computed with the sample's others on first use
+  /// (EnsureFixedSampleRows), where the method's later stages find those they visit (the
+  /// lists take dense slots, so a sample spread over all samples costs no more memory than
+  /// they do). Main thread only, except once they are computed.
   struct SampleRow
   {
     const std::uint32_t* Ids;
@@ -241,9 +241,7 @@ struct Neighborhoods
   // The last fixed sample RadiusSampleWhere chose, and its `every` (0: none yet).
   mutable std::vector<std::uint32_t> Sample;
   mutable std::uint64_t SampleEvery = 0;
-  // The fixed sample's lists (FixedSampleRow), for the sample of SampleRowsEvery.
-  mutable UninitializedVector<std::uint32_t> SampleIds; // filled in parallel
-  mutable UninitializedVector<double> SampleRadii;
+  // The `every` of the fixed sample whose lists are computed (EnsureFixedSampleRows).
   mutable std::uint64_t SampleRowsEvery = 0;
 
   /// Sample i's list into `ids` (Stride entries), not kept; returns its radius.
