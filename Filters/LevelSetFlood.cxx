@@ -251,38 +251,11 @@ std::vector<std::uint32_t> PrefetchBand(const Neighborhoods& geometry,
   return reachedAll;
 }
 
-// The neighbours of `band` outside it, in storage order: the ring that the evolution's first
-// reinitialisation adds to the band (its region's one ring of neighbours).
-std::vector<std::uint32_t> OuterRing(const Neighborhoods& geometry,
-  const std::vector<std::uint32_t>& band, const std::atomic<bool>& stop)
-{
-  std::vector<char> mark(geometry.NumberOfSamples, 0); // 1: in the band, 2: in the ring
-  for (const std::uint32_t i : band)
-  {
-    mark[i] = 1;
-  }
-  for (std::size_t k = 0; k < band.size() && !stop.load(std::memory_order_relaxed); ++k)
-  {
-    const std::uint32_t* ids = geometry.NeighborsOf(band[k]);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      mark[ids[m]] = mark[ids[m]] == 0 ? 2 : mark[ids[m]];
-    }
-  }
-  std::vector<std::uint32_t> ring;
-  for (std::size_t i = 0; i < mark.size() && !stop.load(std::memory_order_relaxed); ++i)
-  {
-    if (mark[i] == 2)
-    {
-      ring.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  return ring;
-}
-
-// A thread that computes the MLS stencils of `samples` (Neighborhoods::PrecomputeStencils), then
-// those of their outer ring, until Finish, which stops and joins it; so does the destructor,
-// also when the caller throws.
+// A thread that computes the MLS stencils of `samples` (Neighborhoods::PrecomputeStencils),
+// nearest the front first, until Finish, which stops and joins it; so does the destructor, also
+// when the caller throws. (The evolution's region, its band and one ring, lies inside the
+// reinitialisation's band that `samples` covers; the reinitialisation itself needs stencils only
+// at the interface.)
 class StencilHelper
 {
 public:
@@ -292,9 +265,6 @@ public:
     {
       this->Worker = std::thread([&geometry, &samples, this]() {
         geometry.PrecomputeStencils(samples.data(), samples.size(), this->Stop);
-        // (The propagation often outlasts the band's stencils: the ring's are needed next.)
-        const std::vector<std::uint32_t> ring = OuterRing(geometry, samples, this->Stop);
-        geometry.PrecomputeStencils(ring.data(), ring.size(), this->Stop);
       });
     }
   }

@@ -39,7 +39,7 @@ public:
 private:
   const Neighborhoods& Geometry;
   BandCollector& Band;
-  std::vector<std::size_t> Core, Updated;
+  std::vector<std::size_t> Core, Updated, Interface;
   std::vector<double> NewValues;
   // Per region sample, kept between runs so that their pages are mapped once (every element is
   // written before it is read).
