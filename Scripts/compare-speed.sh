@@ -3,7 +3,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Is a change faster? Times LevelSetBenchmark as built from another commit (BASE) and as built
 # in ./build (the working tree), in turn, RUNS times each, and prints the fastest time of each
-# stage for both, with their outputs (isopoints, mean distance) to show whether they changed.
+# stage for both, with their outputs (isopoints, mean distance) to show whether they changed,
+# then the mean of each stage's times (a change that spares page faults, whose cost here varies
+# from run to run, shows in the mean more than in the fastest run).
 # Runs taken one after the other mislead here: this machine's speed drifts by 5-10% over
 # minutes, more than most single changes gain. BASE is built in a git worktree under /tmp (a
 # few minutes the first time; `git worktree remove` it when done). Run after
@@ -44,11 +46,19 @@ done | awk -v base="$base" '
     if (!(key in seen)) { seen[key] = 1; order[++n] = key }
     slot = build SUBSEP key
     if (!(slot in best) || value + 0 < best[slot] + 0) best[slot] = value
+    sum[slot] += value; count[slot] += 1
   }
   END {
     printf "%-20s %12s %12s %8s\n", "fastest of each", base, "work tree", "ratio"
     for (i = 1; i <= n; ++i) {
       k = order[i]; a = best["base" SUBSEP k]; b = best["work" SUBSEP k]
       printf "%-20s %12s %12s %8s\n", k, a, b, (a + 0 > 0 ? sprintf("%.3f", b / a) : "")
+    }
+    printf "%-20s %12s %12s %8s\n", "mean of each", base, "work tree", "ratio"
+    for (i = 1; i <= n; ++i) {
+      k = order[i]
+      if (k == "isopoints (count)" || k == "mean distance") continue
+      a = sum["base" SUBSEP k] / count["base" SUBSEP k]; b = sum["work" SUBSEP k] / count["work" SUBSEP k]
+      printf "%-20s %12.4g %12.4g %8s\n", k, a, b, (a > 0 ? sprintf("%.3f", b / a) : "")
     }
   }'
