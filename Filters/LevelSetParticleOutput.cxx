@@ -19,12 +19,20 @@ namespace lsi
 
 namespace
 {
-// The input's points as vertices, with its point data.
+// The input's points as vertices, with its point data. Where the input holds the same vertex
+// cells (this project's readers make them), they are shared with it, as the points are.
 void PassParticles(
   vtkPointSet* input, vtkPolyData* particles, vtkSmartPointer<vtkCellArray>& vertices)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   particles->SetPoints(input->GetPoints());
+  vtkPolyData* polyInput = vtkPolyData::SafeDownCast(input);
+  if (polyInput && n > 0 && AreVertexCells(polyInput->GetVerts(), n))
+  {
+    particles->SetVerts(polyInput->GetVerts()); // (not kept: the input may change them)
+    particles->GetPointData()->PassData(input->GetPointData());
+    return;
+  }
   if (!vertices || vertices->GetNumberOfCells() != n)
   {
     vertices = VertexCells(n);

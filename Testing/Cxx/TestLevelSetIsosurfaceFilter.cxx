@@ -7,9 +7,12 @@
 #include "MessageCounter.h"
 #include "TestCheck.h"
 
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -585,6 +588,74 @@ void TestReuseOfNeighbours()
     "convergence table");
 }
 
+// The particle output's vertex cells: shared with the input where it holds one vertex per point
+// in order (as this project's readers make them, 64-bit ids; or 32-bit), else made anew, one per
+// point, never the input's other cells.
+void TestParticleVertexCells()
+{
+  vtkNew<vtkPolyData> data = Ball(3000);
+  const vtkIdType n = data->GetNumberOfPoints();
+  auto verticesOf = [](vtkIdType count, auto idOf) {
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetNumberOfValues(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      ids->SetValue(i, idOf(i));
+    }
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(1, ids);
+    return cells;
+  };
+  auto isVertexPerPoint = [n](vtkCellArray* cells) {
+    if (!cells || cells->GetNumberOfCells() != n)
+    {
+      return false;
+    }
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < n; ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      if (ids->GetNumberOfIds() != 1 || ids->GetId(0) != c)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  vtkNew<vtkLevelSetIsosurface> filter;
+  Configure(filter, data);
+  filter->Update(); // no cells in the input: made anew
+  Check(isVertexPerPoint(filter->GetOutput(1)->GetVerts()), "no input cells: a vertex per point");
+  vtkSmartPointer<vtkCellArray> own = verticesOf(n, [](vtkIdType i) { return i; });
+  data->SetVerts(own);
+  filter->Update();
+  Check(filter->GetOutput(1)->GetVerts() == own.GetPointer(), "the input's vertex cells shared");
+  own->ConvertTo32BitStorage();
+  data->Modified();
+  filter->Update();
+  Check(filter->GetOutput(1)->GetVerts() == own.GetPointer(), "32-bit ids shared too");
+  // Cells of the same count but two swapped, or the last one naming point 0: made anew.
+  const std::vector<std::function<vtkIdType(vtkIdType)>> others = {
+    [](vtkIdType i) { return i == 1 ? 2 : (i == 2 ? 1 : i); },
+    [n](vtkIdType i) { return i == n - 1 ? 0 : i; }
+  };
+  for (const auto& idOf : others)
+  {
+    vtkSmartPointer<vtkCellArray> other = verticesOf(n, idOf);
+    data->SetVerts(other);
+    filter->Update();
+    Check(filter->GetOutput(1)->GetVerts() != other.GetPointer() &&
+        isVertexPerPoint(filter->GetOutput(1)->GetVerts()),
+      "other vertex cells: not shared, a vertex per point");
+  }
+  vtkSmartPointer<vtkCellArray> fewer = verticesOf(n - 1, [](vtkIdType i) { return i; });
+  data->SetVerts(fewer);
+  filter->Update();
+  Check(filter->GetOutput(1)->GetVerts() != fewer.GetPointer() &&
+      isVertexPerPoint(filter->GetOutput(1)->GetVerts()),
+    "fewer vertex cells than points: not shared, a vertex per point");
+}
+
 // The stage timers (the benchmarks' profiles) cover the run: disjoint parts of it, together
 // nearly all of it, so that no stage goes untimed or is counted twice.
 void TestStageTimesCoverTheRun()
@@ -1013,6 +1084,7 @@ int main()
   TestRemakeOfSurfaceOutput();
   TestProgressThroughStages();
   TestStageTimesCoverTheRun();
+  TestParticleVertexCells();
   TestSeedRadiusMeanings();
   TestBadInput();
   std::cout << (lsi::test::Failures() ? "filter tests FAILED\n" : "filter tests passed\n");
