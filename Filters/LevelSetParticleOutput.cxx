@@ -30,14 +30,15 @@ void PassParticles(
   if (polyInput && n > 0 && AreVertexCells(polyInput->GetVerts(), n))
   {
     particles->SetVerts(polyInput->GetVerts()); // (not kept: the input may change them)
-    particles->GetPointData()->PassData(input->GetPointData());
-    return;
   }
-  if (!vertices || vertices->GetNumberOfCells() != n)
+  else
   {
-    vertices = VertexCells(n);
+    if (!vertices || vertices->GetNumberOfCells() != n)
+    {
+      vertices = VertexCells(n);
+    }
+    particles->SetVerts(vertices);
   }
-  particles->SetVerts(vertices);
   particles->GetPointData()->PassData(input->GetPointData());
 }
 

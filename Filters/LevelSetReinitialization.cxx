@@ -62,7 +62,7 @@ void Reinitialization::Run(
       }
     }
     atInterface[k] = opposite < HUGE_VAL;
-    this->NewValues[k] = opposite;
+    this->NewValues[k] = opposite; // (the interface's new value is made from it below)
   });
   // Only the interface needs a gradient, so only its stencils (it lies inside the evolution's
   // band, which has them already): a stencil for every sample of the region, most of which

@@ -4,14 +4,15 @@
 #ifndef LevelSetVertexCells_h
 #define LevelSetVertexCells_h
 
+#include "LevelSetParallel.h"
 #include "UninitializedVector.h"
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
 #include "vtkSMPTools.h"
-
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
+
 #include <atomic>
 
 namespace lsi
