@@ -98,20 +98,28 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
   const std::size_t count = out.Points.size() / 3;
   std::vector<char> onLevel(count, 0);
   auto slide = [&](std::size_t begin, std::size_t end) {
-    SPHCandidates candidates;
+    SPHCandidates group, candidates;
+    double reaches[SPHPointGroup];
     for (std::size_t i = begin; i < end; ++i)
     {
-      Eigen::Vector3d p(&out.Points[3 * i]);
-      const Eigen::Vector3d n(&out.Normals[3 * i]);
       // The reach is local: the kernel support of the sample nearest to the point. At a free
       // boundary the field's level lies up to a support beyond the outermost particles, where
-      // the level set (which lives on the particles) cannot reach.
-      std::uint32_t nearest;
-      double d2;
-      geometry.Index->Nearest(p.data(), 1, &nearest, &d2);
-      const double reach = settings.SPHMaximumMove * field.Support(nearest);
+      // the level set (which lives on the particles) cannot reach. One gather serves a group
+      // of consecutive points (each then takes its own candidates from it).
+      GatherForGroupAt(
+        field, out.Points.data(), begin, end, i,
+        [&](std::size_t k) {
+          std::uint32_t nearest;
+          double d2;
+          geometry.Index->Nearest(&out.Points[3 * k], 1, &nearest, &d2);
+          return settings.SPHMaximumMove * field.Support(nearest);
+        },
+        reaches, group);
+      Eigen::Vector3d p(&out.Points[3 * i]);
+      const Eigen::Vector3d n(&out.Normals[3 * i]);
+      const double reach = reaches[(i - begin) % SPHPointGroup];
       Eigen::Vector3d normal;
-      if (GatherAndSolveOntoLevel(field, isoValue, p, n, reach, candidates, normal))
+      if (GatherAndSolveOntoLevel(field, isoValue, p, n, reach, candidates, normal, &group))
       {
         for (int d = 0; d < 3; ++d)
         {

@@ -410,18 +410,34 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch
   {
-    SPHCandidates Candidates;
+    SPHCandidates Group, Candidates; // a group of points' (GatherForGroupAt), and one point's
   };
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {
     Scratch& s = scratch.Local();
+    // The group's nearest samples (none: the cloud is empty) and reaches.
+    std::uint32_t nearestOf[SPHPointGroup];
+    double reaches[SPHPointGroup];
+    constexpr std::uint32_t NoNearest = ~std::uint32_t(0);
     for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
     {
+      GatherForGroupAt(
+        field, points.data(), begin, end, i,
+        [&](std::size_t k) {
+          std::uint32_t& nearest = nearestOf[k - i];
+          double d2;
+          if (geometry.Index->Nearest(&points[3 * k], 1, &nearest, &d2) == 0)
+          {
+            nearest = NoNearest;
+            return 0.0;
+          }
+          return settings.SPHMaximumMove * field.Support(nearest);
+        },
+        reaches, s.Group);
       Eigen::Vector3d p(&points[3 * i]);
       const Eigen::Vector3d start = p, n(&normals[3 * i]);
-      std::uint32_t nearest;
-      double d2;
-      if (geometry.Index->Nearest(p.data(), 1, &nearest, &d2) == 0)
+      const std::uint32_t nearest = nearestOf[(i - begin) % SPHPointGroup];
+      if (nearest == NoNearest)
       {
         refusal = OneSide;
         break;
@@ -445,9 +461,9 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         refusal = OneSide;
         break;
       }
-      const double reach = settings.SPHMaximumMove * field.Support(nearest);
+      const double reach = reaches[(i - begin) % SPHPointGroup];
       Eigen::Vector3d normal;
-      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal))
+      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal, &s.Group))
       {
         refusal = TooFar;
         break;

@@ -77,6 +77,15 @@ struct SPHCandidates
     H.clear();
     Coefficient.clear();
   }
+  /// Appends a particle at x with support h and coefficient c.
+  void Add(const double* x, double h, double c)
+  {
+    X.push_back(x[0]);
+    Y.push_back(x[1]);
+    Z.push_back(x[2]);
+    H.push_back(h);
+    Coefficient.push_back(c);
+  }
 };
 
 /// The SPH field over the samples, stored in their storage order (Neighborhoods::Order).
@@ -105,10 +114,38 @@ public:
   void EvaluateAmong(
     const SPHCandidates& candidates, const double* x, double& value, double* gradient) const;
 
+  /// The samples whose support reaches within `extra` of the box [lower, upper]: every sample
+  /// that contributes anywhere within `extra` of it, in the order ValueAt meets them. One walk of
+  /// the hierarchy then serves a group of points near each other: at each, ValueAmong and
+  /// EvaluateAmong over these give ValueAt's and Gather's numbers, to the bit (a few candidates
+  /// more to skip).
+  void GatherForBox(
+    const double lower[3], const double upper[3], double extra, SPHCandidates& candidates) const;
+
+  /// Gather(x, extra)'s samples, in its order, taken from `from` (GatherForBox's, for a box
+  /// that holds x, with at least that extra): a walk of the hierarchy for a group of points,
+  /// then a pass over its candidates for each.
+  static void GatherAmong(
+    const SPHCandidates& from, const double* x, double extra, SPHCandidates& candidates);
+
+  /// The field alone at x from `candidates` (GatherForBox's or Gather's, for a region that holds
+  /// x): ValueAt's value, to the bit.
+  double ValueAmong(const SPHCandidates& candidates, const double* x) const;
+
   /// Calls visit(sample, weight) for every sample j whose support holds x, with weight
   /// (m_j / rho_j) W(|x - x_j|, H_j): the interpolation weights of any array.
   template <typename Visit>
   void ForEachWeight(const double* x, Visit&& visit) const;
+
+  /// The samples whose support reaches the box [lower, upper], in ForEachWeight's order (one
+  /// walk of the hierarchy for a group of points near each other; GatherForBox's, as indices).
+  void SamplesReaching(
+    const double lower[3], const double upper[3], std::vector<std::uint32_t>& samples) const;
+  /// ForEachWeight(x, visit) over `samples` (SamplesReaching's, for a box that holds x): the
+  /// same weights in the same order.
+  template <typename Visit>
+  void ForEachWeightAmong(
+    const std::vector<std::uint32_t>& samples, const double* x, Visit&& visit) const;
 
   /// Particles whose stored density was not positive and finite, so summed from the masses.
   std::size_t SummedDensities = 0;
@@ -128,6 +165,15 @@ private:
   void Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end);
   template <typename Visit>
   void ForEachSupportHolding(const double* x, Visit&& visit, double extra = 0.0) const;
+  // Visits every sample whose support reaches within `extra` of the box [lower, upper], in the
+  // order ForEachSupportHolding meets them: the same walk, entering a node when the box lies
+  // within its largest support plus `extra`.
+  template <typename Visit>
+  void ForEachSupportReaching(
+    const double lower[3], const double upper[3], double extra, Visit&& visit) const;
+  // The density at samples [begin, end) (storage order) by summation over `mass`, into rho.
+  void SumDensities(const std::vector<double>& mass, std::size_t begin, std::size_t end,
+    double* rho, std::vector<std::uint32_t>& scratch) const;
 
   const Neighborhoods& Geometry;
   SPHKernel Kernel;
@@ -174,6 +220,52 @@ void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extr
 }
 
 template <typename Visit>
+void SPHField::ForEachSupportReaching(
+  const double lower[3], const double upper[3], double extra, Visit&& visit) const
+{
+  // The squared distance between a box and the query box, per axis the gap between them.
+  auto gap2 = [&](const double* low, const double* high) {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double gap = std::max(low[k] - upper[k], lower[k] - high[k]);
+      d2 += gap > 0.0 ? gap * gap : 0.0;
+    }
+    return d2;
+  };
+  // (A billionth wider than the supports: whatever the rounding of a distance, every sample
+  // that weighs anything at a point of the box is visited.)
+  constexpr double Wider = 1.0 + 1e-9;
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    const double reach = node.MaximumSupport + extra;
+    if (!(gap2(node.Lower, node.Upper) < Wider * reach * reach))
+    {
+      continue;
+    }
+    if (node.Left == 0)
+    {
+      for (std::uint32_t j = node.Begin; j < node.End; ++j)
+      {
+        const double* xj = this->Geometry.Position(j);
+        const double own = this->H[j] + extra;
+        if (gap2(xj, xj) < Wider * own * own)
+        {
+          visit(j);
+        }
+      }
+      continue;
+    }
+    stack[top++] = node.Left;
+    stack[top++] = node.Left + 1;
+  }
+}
+
+template <typename Visit>
 void SPHField::ForEachWeight(const double* x, Visit&& visit) const
 {
   this->ForEachSupportHolding(x, [&](std::uint32_t j) {
@@ -185,6 +277,23 @@ void SPHField::ForEachWeight(const double* x, Visit&& visit) const
       visit(j, this->Volume[j] * SPHKernelValue(this->Kernel, r, this->H[j]));
     }
   });
+}
+
+template <typename Visit>
+void SPHField::ForEachWeightAmong(
+  const std::vector<std::uint32_t>& samples, const double* x, Visit&& visit) const
+{
+  for (const std::uint32_t j : samples)
+  {
+    // (ForEachWeight's test and weight, to the bit.)
+    const double* xj = this->Geometry.Position(j);
+    const double d[3] = { x[0] - xj[0], x[1] - xj[1], x[2] - xj[2] };
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (r < this->H[j])
+    {
+      visit(j, this->Volume[j] * SPHKernelValue(this->Kernel, r, this->H[j]));
+    }
+  }
 }
 
 /// Moves p along the line with `direction` (unit, out of f > f_iso) onto the field's level
@@ -201,9 +310,49 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
 /// of the reach from the level, and the small gather holds every sample that contributes
 /// within its quarter, in the same order: the same steps give the same point to the bit, from
 /// a quarter of the candidates (at reach = one support: a ball of 1.25 supports, not 2).
+/// `group`, if given, holds GatherForBox's candidates for a box that holds p, at least
+/// NearGatherExtra(reach) wide: the small gather is then taken from them (GatherAmong).
 bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vector3d& p,
   const Eigen::Vector3d& direction, double reach, SPHCandidates& candidates,
-  Eigen::Vector3d& normal);
+  Eigen::Vector3d& normal, const SPHCandidates* group = nullptr);
+
+/// Consecutive surface points (near each other) whose small gathers one walk of the hierarchy
+/// serves (GatherForPoints).
+constexpr std::size_t SPHPointGroup = 16;
+
+/// How far around a point GatherAndSolveOntoLevel's small gather reaches, for `reach`.
+inline double NearGatherExtra(double reach)
+{
+  // (A millionth wider: a direction a rounding off unit length moves a little further.)
+  return 1.000001 * (0.25 * reach);
+}
+
+/// GatherForBox over the box of points [first, last) of `points` (3 doubles each), `extra`
+/// wider: the candidates of a group of consecutive points (near each other: the surface's
+/// points come in spatial order), from which each point's own are taken (GatherAmong).
+void GatherForPoints(const SPHField& field, const double* points, std::size_t first,
+  std::size_t last, double extra, SPHCandidates& group);
+
+/// The group of points that point i starts when it is the SPHPointGroup-th after `begin`
+/// (up to `end`): their reaches, reachOf(k) into reaches[k - i], and the group's candidates for
+/// GatherAndSolveOntoLevel (GatherForPoints for the widest reach). Does nothing for the others.
+template <typename ReachOf>
+void GatherForGroupAt(const SPHField& field, const double* points, std::size_t begin,
+  std::size_t end, std::size_t i, ReachOf&& reachOf, double* reaches, SPHCandidates& group)
+{
+  if ((i - begin) % SPHPointGroup != 0)
+  {
+    return;
+  }
+  const std::size_t last = std::min(end, i + SPHPointGroup);
+  double widest = 0.0;
+  for (std::size_t k = i; k < last; ++k)
+  {
+    reaches[k - i] = reachOf(k);
+    widest = std::max(widest, reaches[k - i]);
+  }
+  GatherForPoints(field, points, i, last, NearGatherExtra(widest), group);
+}
 
 /// The median kernel support over the median neighbourhood radius (distance to the n-th
 /// neighbour), among the samples next to the surface (a neighbour on the other side of

@@ -102,6 +102,10 @@ vtkSmartPointer<vtkDataArray> CornerNormalsArray(
 }
 } // namespace
 
+// Consecutive splats (near each other: the points come in spatial order) whose corners one
+// gather of the SPH field's samples serves.
+constexpr std::size_t SplatGroup = 32;
+
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
   vtkPolyData* splats, const AbortCheck& aborted)
 {
@@ -119,7 +123,8 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   const bool completed = ParallelForInBlocks(
     static_cast<std::size_t>(count),
     [&](std::size_t begin, std::size_t end) {
-      SPHCandidates candidates;
+      SPHCandidates group, candidates;
+      std::size_t gatheredTo = begin; // the splats the group's candidates serve: up to here
       for (std::size_t i = begin; i < end; ++i)
       {
         double c[3], n[3];
@@ -128,9 +133,28 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         const double radius = radii->GetComponent(static_cast<vtkIdType>(i), 0);
         const Eigen::Vector3d normal = Eigen::Vector3d(n).normalized();
         DiskCorners(Eigen::Vector3d(c), normal, radius, sides, &xyz[3 * i * sides]);
-        if (field) // the corners are within a radius of the centre: one gather serves all
+        if (field && i == gatheredTo)
         {
-          field->Gather(c, 1.5 * radius, candidates); // a slid corner is within sqrt(2) radii
+          // The corners are within sqrt(2) radii of their centre (a slid one too): one gather
+          // within 1.5 radii of the centres of a few consecutive splats serves them all.
+          gatheredTo = std::min(end, i + SplatGroup);
+          double lower[3], upper[3], widest = 0.0;
+          for (std::size_t k = i; k < gatheredTo; ++k)
+          {
+            double x[3];
+            isopoints->GetPoint(static_cast<vtkIdType>(k), x);
+            for (int d = 0; d < 3; ++d)
+            {
+              lower[d] = k == i ? x[d] : std::min(lower[d], x[d]);
+              upper[d] = k == i ? x[d] : std::max(upper[d], x[d]);
+            }
+            widest = std::max(widest, radii->GetComponent(static_cast<vtkIdType>(k), 0));
+          }
+          field->GatherForBox(lower, upper, 1.5 * widest, group);
+        }
+        if (field) // (this splat's: fewer to sum at each corner)
+        {
+          SPHField::GatherAmong(group, c, 1.5 * radius, candidates);
         }
         for (int k = 0; field && k < sides; ++k)
         {

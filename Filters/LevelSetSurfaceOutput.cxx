@@ -210,10 +210,31 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
     count,
     [&](std::size_t begin, std::size_t end) {
       std::vector<std::pair<vtkIdType, double>> weights; // input ids and weights
+      std::vector<std::uint32_t> reaching;               // the samples reaching a group of points
       for (std::size_t i = begin; i < end; ++i)
       {
+        if ((i - begin) % SPHPointGroup == 0)
+        {
+          // One walk of the field's hierarchy for a group of consecutive points (near each
+          // other); each point then weighs its own samples among them, in the same order.
+          const std::size_t last = std::min(end, i + SPHPointGroup);
+          double lower[3], upper[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            lower[k] = upper[k] = points[3 * i + k];
+          }
+          for (std::size_t q = i + 1; q < last; ++q)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              lower[k] = std::min(lower[k], points[3 * q + k]);
+              upper[k] = std::max(upper[k], points[3 * q + k]);
+            }
+          }
+          field.SamplesReaching(lower, upper, reaching);
+        }
         weights.clear();
-        field.ForEachWeight(&points[3 * i],
+        field.ForEachWeightAmong(reaching, &points[3 * i],
           [&](std::uint32_t j, double w) { weights.emplace_back(geometry.Order[j], w); });
         for (std::size_t a = 0; a < sources.size(); ++a)
         {

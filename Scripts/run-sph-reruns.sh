@@ -7,6 +7,7 @@
 # turn, RUNS times each (this machine's speed drifts by 5-10% over minutes: compare runs taken
 # side by side). BASE is built in a git worktree under /tmp (a few minutes the first time).
 # About 2 minutes per run and build here. Run after Scripts/setup-debian12.sh.
+# PLUMMER_SAMPLES=N adds a synthetic case of N particles (Scripts/sph_reruns.py).
 #   bash Scripts/run-sph-reruns.sh [BASE [RUNS [SHARED_DATA_DIR]]]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)

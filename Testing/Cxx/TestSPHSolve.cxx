@@ -8,14 +8,26 @@
 //   - the same success, point and normal, to the bit, for every start;
 //   - both ways taken: starts the quarter-reach gather settles and starts it hands over;
 // and ValueAt (the field without its gradient) against Evaluate's value, to the bit.
+// Then the gathers made once for a group of points near each other (GatherForBox,
+// GatherForPoints, SamplesReaching), which the surface's stages use, against each point's own:
+//   - SPHOffsetsAtSamples (grouped) against ValueAt at every sample, to the bit;
+//   - each point's candidates taken from its group's (GatherAmong) against Gather's, the same
+//     candidates in the same order, and GatherAndSolveOntoLevel from them the same point and
+//     normal, to the bit; ForEachWeightAmong's weights against ForEachWeight's, to the bit;
+//   - densities summed where the stored ones are zero (in groups, in parallel) against a sum
+//     over every particle (1e-12), through the interpolant of a constant array.
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetSPHField.h"
+#include "NearestNeighbors.h"
+#include "SPHKernels.h"
 #include "TestCheck.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <iostream>
@@ -122,11 +134,175 @@ void TestSameAsWholeReach()
   Check(sameValue == tried && positive > tried / 2,
     "ValueAt gives Evaluate's value to the bit (" + std::to_string(tried) + " points)");
 }
+
+bool SameCandidates(const lsi::SPHCandidates& a, const lsi::SPHCandidates& b)
+{
+  return a.X == b.X && a.Y == b.Y && a.Z == b.Z && a.H == b.H && a.Coefficient == b.Coefficient;
+}
+
+void TestGroupedGathers()
+{
+  // A jittered lattice, denser towards the centre (smoothing lengths that follow), as
+  // TestSameAsWholeReach's; every third stored density a placeholder zero.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-0.5, 0.5);
+  const int side = 20;
+  const double spacing = 1.0 / side;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> h, mass, density, ones;
+  for (int i = 0; i < side * side * side; ++i)
+  {
+    const int a = i % side, b = (i / side) % side, c = i / (side * side);
+    const double x[3] = { (a + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
+      (b + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
+      (c + 0.5 + 0.3 * unit(random)) * spacing - 0.5 };
+    points->InsertNextPoint(x);
+    const double r2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    mass->InsertNextValue(std::exp(-6.0 * r2));
+    h->InsertNextValue((1.5 + 0.8 * (unit(random) + 0.5)) * spacing * (1.0 + r2));
+    density->InsertNextValue(i % 3 == 0 ? 0.0 : 1.0 + r2);
+    ones->InsertNextValue(1.0);
+  }
+  lsi::Neighborhoods geometry;
+  Check(lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck()), "lattice built");
+  lsi::SPHFieldArrays arrays;
+  arrays.SmoothingLength = h;
+  arrays.Mass = mass;
+  arrays.Density = density;
+  arrays.SupportPerSmoothingLength = 2.0;
+  const std::size_t n = geometry.NumberOfSamples;
+  std::vector<double> values(n, 1.0); // the constant array: its interpolant is sum V_j W
+  std::string problem;
+  const lsi::SPHField field(geometry, arrays, values, problem);
+  Check(field.Valid() && field.SummedDensities == (n + 2) / 3, "the field, densities summed");
+
+  // The densities summed where stored ones are zero, against a sum over every particle: the
+  // interpolant of the constant 1 at a point, with those volumes.
+  std::vector<double> volume(n);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const vtkIdType id = geometry.Order[j];
+    double rho = density->GetValue(id);
+    if (rho == 0.0)
+    {
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        const double r = std::sqrt(
+          lsi::PointCloudIndex::SquaredDistance(geometry.Position(j), geometry.Position(k)));
+        rho += mass->GetValue(geometry.Order[k]) *
+          lsi::SPHKernelValue(arrays.Kernel, r, field.Support(k));
+      }
+    }
+    volume[j] = mass->GetValue(id) / rho;
+  }
+  double worst = 0.0;
+  for (int t = 0; t < 200; ++t)
+  {
+    const double x[3] = { 0.8 * unit(random), 0.8 * unit(random), 0.8 * unit(random) };
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const double r = std::sqrt(lsi::PointCloudIndex::SquaredDistance(x, geometry.Position(k)));
+      sum += volume[k] * lsi::SPHKernelValue(arrays.Kernel, r, field.Support(k));
+    }
+    double value, gradient[3];
+    field.Evaluate(x, value, gradient);
+    worst = std::max(worst, std::abs(value - sum) / std::max(sum, 1e-300));
+  }
+  Check(worst < 1e-12,
+    "summed densities as a sum over every particle (" + std::to_string(worst) + " relative)");
+
+  // The field at every sample, grouped, on 1 and 2 threads, against ValueAt's.
+  for (int threads : { 1, 2 })
+  {
+    std::vector<double> offsets;
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false },
+      [&]() { lsi::SPHOffsetsAtSamples(geometry, field, 0.25, offsets, lsi::AbortCheck()); });
+    std::size_t same = 0;
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      same += offsets[j] == field.ValueAt(geometry.Position(j)) - 0.25 ? 1 : 0;
+    }
+    Check(same == n,
+      "SPHOffsetsAtSamples is ValueAt at every sample, to the bit, on " + std::to_string(threads) +
+        " thread(s) (" + std::to_string(same) + " of " + std::to_string(n) + ")");
+  }
+
+  // Groups of points along short random walks (a surface's consecutive points), each with its
+  // own reach.
+  double peak, g[3];
+  const double centre[3] = { 0.0, 0.0, 0.0 };
+  field.Evaluate(centre, peak, g);
+  const double isoValue = 0.5 * peak;
+  int groups = 0, sameGather = 0, sameSolve = 0, sameWeights = 0, tried = 0, solved = 0;
+  lsi::SPHCandidates group, fromGroup, own;
+  std::vector<std::uint32_t> reaching;
+  for (int w = 0; w < 40; ++w, ++groups)
+  {
+    std::vector<double> walk;
+    Eigen::Vector3d x(0.6 * unit(random), 0.6 * unit(random), 0.6 * unit(random));
+    std::vector<double> reaches;
+    for (std::size_t k = 0; k < lsi::SPHPointGroup; ++k)
+    {
+      x += 0.5 * spacing * Eigen::Vector3d(unit(random), unit(random), unit(random));
+      walk.insert(walk.end(), x.data(), x.data() + 3);
+      reaches.push_back((2.0 + 2.0 * (unit(random) + 0.5)) * spacing);
+    }
+    const double widest = *std::max_element(reaches.begin(), reaches.end());
+    lsi::GatherForPoints(
+      field, walk.data(), 0, reaches.size(), lsi::NearGatherExtra(widest), group);
+    double lower[3], upper[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      lower[d] = upper[d] = walk[d];
+      for (std::size_t k = 1; k < reaches.size(); ++k)
+      {
+        lower[d] = std::min(lower[d], walk[3 * k + d]);
+        upper[d] = std::max(upper[d], walk[3 * k + d]);
+      }
+    }
+    field.SamplesReaching(lower, upper, reaching);
+    for (std::size_t k = 0; k < reaches.size(); ++k, ++tried)
+    {
+      const double* p = &walk[3 * k];
+      const double extra = lsi::NearGatherExtra(reaches[k]);
+      lsi::SPHField::GatherAmong(group, p, extra, fromGroup);
+      field.Gather(p, extra, own);
+      sameGather += SameCandidates(fromGroup, own) && !own.X.empty() ? 1 : 0;
+      // The solve from the group's candidates and from its own gather.
+      const Eigen::Vector3d direction =
+        Eigen::Vector3d(p[0] + 0.2 * unit(random), p[1], p[2]).normalized();
+      Eigen::Vector3d a(p), b(p), na(0, 0, 0), nb(0, 0, 0);
+      const bool okA =
+        lsi::GatherAndSolveOntoLevel(field, isoValue, a, direction, reaches[k], own, na, &group);
+      const bool okB =
+        lsi::GatherAndSolveOntoLevel(field, isoValue, b, direction, reaches[k], own, nb);
+      sameSolve += okA == okB && a == b && na == nb ? 1 : 0;
+      solved += okA ? 1 : 0;
+      // The interpolation weights.
+      std::vector<std::pair<std::uint32_t, double>> grouped, alone;
+      field.ForEachWeightAmong(
+        reaching, p, [&](std::uint32_t j, double weight) { grouped.emplace_back(j, weight); });
+      field.ForEachWeight(
+        p, [&](std::uint32_t j, double weight) { alone.emplace_back(j, weight); });
+      sameWeights += grouped == alone && !alone.empty() ? 1 : 0;
+    }
+  }
+  Check(sameGather == tried,
+    "a point's candidates from its group's are Gather's, in order (" + std::to_string(sameGather) +
+      " of " + std::to_string(tried) + ")");
+  Check(sameSolve == tried && solved > tried / 10,
+    "GatherAndSolveOntoLevel from the group's candidates: the same point and normal, to the bit (" +
+      std::to_string(solved) + " of " + std::to_string(tried) + " reach the level)");
+  Check(sameWeights == tried, "ForEachWeightAmong gives ForEachWeight's weights, to the bit");
+}
 } // namespace
 
 int main()
 {
   TestSameAsWholeReach();
+  TestGroupedGathers();
   const int failures = lsi::test::Failures();
   std::cout << (failures ? "SPH solve tests FAILED\n" : "SPH solve tests passed\n");
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
