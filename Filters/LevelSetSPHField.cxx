@@ -27,25 +27,6 @@ namespace
 // the tree gathers what reaches their box, which a few more candidates per sample repay.
 constexpr std::size_t SPHSampleGroup = 32;
 
-// The box of samples [begin, end) (storage order).
-void BoxOfSamples(const Neighborhoods& geometry, std::size_t begin, std::size_t end,
-  double lower[3], double upper[3])
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    lower[k] = upper[k] = geometry.Position(begin)[k];
-  }
-  for (std::size_t j = begin + 1; j < end; ++j)
-  {
-    const double* x = geometry.Position(j);
-    for (int k = 0; k < 3; ++k)
-    {
-      lower[k] = std::min(lower[k], x[k]);
-      upper[k] = std::max(upper[k], x[k]);
-    }
-  }
-}
-
 // The array named by the user, else by the marker, else by one of the usual names.
 vtkDataArray* FindArray(vtkPointSet* input, const std::string& requested, const char* marker,
   std::initializer_list<const char*> usual, std::string& name)
@@ -263,7 +244,7 @@ void SPHField::SumDensities(const std::vector<double>& mass, std::size_t begin, 
   double* rho, std::vector<std::uint32_t>& scratch) const
 {
   double lower[3], upper[3];
-  BoxOfSamples(this->Geometry, begin, end, lower, upper);
+  BoxOfPoints(this->Geometry.Positions.data(), begin, end, lower, upper);
   scratch.clear();
   this->ForEachSupportReaching(lower, upper, 0.0, [&](std::uint32_t k) { scratch.push_back(k); });
   for (std::size_t j = begin; j < end; ++j)
@@ -514,10 +495,9 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   return true;
 }
 
-void GatherForPoints(const SPHField& field, const double* points, std::size_t first,
-  std::size_t last, double extra, SPHCandidates& group)
+void BoxOfPoints(
+  const double* points, std::size_t first, std::size_t last, double lower[3], double upper[3])
 {
-  double lower[3], upper[3];
   for (int k = 0; k < 3; ++k)
   {
     lower[k] = upper[k] = points[3 * first + k];
@@ -530,6 +510,13 @@ void GatherForPoints(const SPHField& field, const double* points, std::size_t fi
       upper[k] = std::max(upper[k], points[3 * i + k]);
     }
   }
+}
+
+void GatherForPoints(const SPHField& field, const double* points, std::size_t first,
+  std::size_t last, double extra, SPHCandidates& group)
+{
+  double lower[3], upper[3];
+  BoxOfPoints(points, first, last, lower, upper);
   field.GatherForBox(lower, upper, extra, group);
 }
 
@@ -611,7 +598,7 @@ bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, d
       {
         const std::size_t last = std::min(end, first + SPHSampleGroup);
         double lower[3], upper[3];
-        BoxOfSamples(geometry, first, last, lower, upper);
+        BoxOfPoints(geometry.Positions.data(), first, last, lower, upper);
         field.GatherForBox(lower, upper, 0.0, candidates);
         for (std::size_t j = first; j < last; ++j)
         {

@@ -327,6 +327,10 @@ inline double NearGatherExtra(double reach)
   return 1.000001 * (0.25 * reach);
 }
 
+/// The box of points [first, last) of `points` (3 doubles each).
+void BoxOfPoints(
+  const double* points, std::size_t first, std::size_t last, double lower[3], double upper[3]);
+
 /// GatherForBox over the box of points [first, last) of `points` (3 doubles each), `extra`
 /// wider: the candidates of a group of consecutive points (near each other: the surface's
 /// points come in spatial order), from which each point's own are taken (GatherAmong).

@@ -217,20 +217,8 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
         {
           // One walk of the field's hierarchy for a group of consecutive points (near each
           // other); each point then weighs its own samples among them, in the same order.
-          const std::size_t last = std::min(end, i + SPHPointGroup);
           double lower[3], upper[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            lower[k] = upper[k] = points[3 * i + k];
-          }
-          for (std::size_t q = i + 1; q < last; ++q)
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              lower[k] = std::min(lower[k], points[3 * q + k]);
-              upper[k] = std::max(upper[k], points[3 * q + k]);
-            }
-          }
+          BoxOfPoints(points.data(), i, std::min(end, i + SPHPointGroup), lower, upper);
           field.SamplesReaching(lower, upper, reaching);
         }
         weights.clear();

@@ -39,17 +39,22 @@ namespace
 {
 using lsi::test::Check;
 
-void TestSameAsWholeReach()
+// A jittered lattice of side^3 particles in the unit cube about 0 (each coordinate moved by up
+// to 0.15 spacings), each with a mass and a smoothing length from massOf(x) and hOf(x), called
+// in that order (hOf may draw from `random`).
+struct Lattice
 {
-  std::mt19937 random(11);
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkDoubleArray> H, Mass;
+};
+template <typename MassOf, typename HOf>
+void MakeLattice(int side, std::mt19937& random, MassOf&& massOf, HOf&& hOf, Lattice& lattice)
+{
   std::uniform_real_distribution<double> unit(-0.5, 0.5);
-  const int side = 24;
   const double spacing = 1.0 / side;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> h, mass;
-  h->SetName("h");
-  mass->SetName("m");
+  lattice.Points->SetDataTypeToDouble();
+  lattice.H->SetName("h");
+  lattice.Mass->SetName("m");
   for (int i = 0; i < side; ++i)
   {
     for (int j = 0; j < side; ++j)
@@ -59,13 +64,30 @@ void TestSameAsWholeReach()
         const double x[3] = { (i + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
           (j + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
           (k + 0.5 + 0.3 * unit(random)) * spacing - 0.5 };
-        points->InsertNextPoint(x);
-        const double r2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-        mass->InsertNextValue(std::exp(-8.0 * r2)); // density peaks at the centre
-        h->InsertNextValue((1.6 + 0.4 * unit(random)) * spacing);
+        lattice.Points->InsertNextPoint(x);
+        lattice.Mass->InsertNextValue(massOf(x));
+        lattice.H->InsertNextValue(hOf(x));
       }
     }
   }
+}
+
+void TestSameAsWholeReach()
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-0.5, 0.5);
+  const int side = 24;
+  const double spacing = 1.0 / side;
+  Lattice lattice;
+  MakeLattice(
+    side, random,
+    [](const double* x) { // density peaks at the centre
+      return std::exp(-8.0 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
+    },
+    [&](const double*) { return (1.6 + 0.4 * unit(random)) * spacing; }, lattice);
+  vtkPoints* points = lattice.Points;
+  vtkDoubleArray* h = lattice.H;
+  vtkDoubleArray* mass = lattice.Mass;
   lsi::Neighborhoods geometry;
   Check(lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck()), "neighbourhoods built");
   lsi::SPHFieldArrays arrays;
@@ -148,22 +170,19 @@ void TestGroupedGathers()
   std::uniform_real_distribution<double> unit(-0.5, 0.5);
   const int side = 20;
   const double spacing = 1.0 / side;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> h, mass, density, ones;
-  for (int i = 0; i < side * side * side; ++i)
-  {
-    const int a = i % side, b = (i / side) % side, c = i / (side * side);
-    const double x[3] = { (a + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
-      (b + 0.5 + 0.3 * unit(random)) * spacing - 0.5,
-      (c + 0.5 + 0.3 * unit(random)) * spacing - 0.5 };
-    points->InsertNextPoint(x);
-    const double r2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-    mass->InsertNextValue(std::exp(-6.0 * r2));
-    h->InsertNextValue((1.5 + 0.8 * (unit(random) + 0.5)) * spacing * (1.0 + r2));
-    density->InsertNextValue(i % 3 == 0 ? 0.0 : 1.0 + r2);
-    ones->InsertNextValue(1.0);
-  }
+  Lattice lattice;
+  vtkNew<vtkDoubleArray> density;
+  auto r2Of = [](const double* x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
+  MakeLattice(
+    side, random, [&](const double* x) { return std::exp(-6.0 * r2Of(x)); },
+    [&](const double* x) {
+      density->InsertNextValue(density->GetNumberOfTuples() % 3 == 0 ? 0.0 : 1.0 + r2Of(x));
+      return (1.5 + 0.8 * (unit(random) + 0.5)) * spacing * (1.0 + r2Of(x));
+    },
+    lattice);
+  vtkPoints* points = lattice.Points;
+  vtkDoubleArray* h = lattice.H;
+  vtkDoubleArray* mass = lattice.Mass;
   lsi::Neighborhoods geometry;
   Check(lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck()), "lattice built");
   lsi::SPHFieldArrays arrays;
