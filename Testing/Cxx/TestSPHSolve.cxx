@@ -46,6 +46,16 @@ struct Lattice
 {
   vtkNew<vtkPoints> Points;
   vtkNew<vtkDoubleArray> H, Mass;
+  lsi::Neighborhoods Geometry; // built by MakeLattice (24 neighbours)
+  // Its SPH arrays, each support two smoothing lengths.
+  lsi::SPHFieldArrays Arrays() const
+  {
+    lsi::SPHFieldArrays arrays;
+    arrays.SmoothingLength = this->H;
+    arrays.Mass = this->Mass;
+    arrays.SupportPerSmoothingLength = 2.0;
+    return arrays;
+  }
 };
 template <typename MassOf, typename HOf>
 void MakeLattice(int side, std::mt19937& random, MassOf&& massOf, HOf&& hOf, Lattice& lattice)
@@ -70,6 +80,8 @@ void MakeLattice(int side, std::mt19937& random, MassOf&& massOf, HOf&& hOf, Lat
       }
     }
   }
+  Check(lsi::BuildNeighborhoods(lattice.Points, 24, lattice.Geometry, lsi::AbortCheck()),
+    "neighbourhoods built");
 }
 
 void TestSameAsWholeReach()
@@ -85,16 +97,9 @@ void TestSameAsWholeReach()
       return std::exp(-8.0 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
     },
     [&](const double*) { return (1.6 + 0.4 * unit(random)) * spacing; }, lattice);
-  vtkPoints* points = lattice.Points;
-  vtkDoubleArray* h = lattice.H;
-  vtkDoubleArray* mass = lattice.Mass;
-  lsi::Neighborhoods geometry;
-  Check(lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck()), "neighbourhoods built");
-  lsi::SPHFieldArrays arrays;
-  arrays.SmoothingLength = h;
-  arrays.Mass = mass;
+  const lsi::Neighborhoods& geometry = lattice.Geometry;
+  lsi::SPHFieldArrays arrays = lattice.Arrays();
   arrays.ValuesAreDensity = true;
-  arrays.SupportPerSmoothingLength = 2.0;
   std::string problem;
   const lsi::SPHField field(geometry, arrays, std::vector<double>(), problem);
   Check(field.Valid() && problem.empty(), "the SPH field is valid");
@@ -180,16 +185,10 @@ void TestGroupedGathers()
       return (1.5 + 0.8 * (unit(random) + 0.5)) * spacing * (1.0 + r2Of(x));
     },
     lattice);
-  vtkPoints* points = lattice.Points;
-  vtkDoubleArray* h = lattice.H;
   vtkDoubleArray* mass = lattice.Mass;
-  lsi::Neighborhoods geometry;
-  Check(lsi::BuildNeighborhoods(points, 24, geometry, lsi::AbortCheck()), "lattice built");
-  lsi::SPHFieldArrays arrays;
-  arrays.SmoothingLength = h;
-  arrays.Mass = mass;
+  const lsi::Neighborhoods& geometry = lattice.Geometry;
+  lsi::SPHFieldArrays arrays = lattice.Arrays();
   arrays.Density = density;
-  arrays.SupportPerSmoothingLength = 2.0;
   const std::size_t n = geometry.NumberOfSamples;
   std::vector<double> values(n, 1.0); // the constant array: its interpolant is sum V_j W
   std::string problem;
