@@ -98,28 +98,26 @@ bool RefineIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& fi
   const std::size_t count = out.Points.size() / 3;
   std::vector<char> onLevel(count, 0);
   auto slide = [&](std::size_t begin, std::size_t end) {
-    SPHCandidates group, candidates;
-    double reaches[SPHPointGroup];
+    SPHPointGroup group;
+    SPHCandidates candidates;
     for (std::size_t i = begin; i < end; ++i)
     {
       // The reach is local: the kernel support of the sample nearest to the point. At a free
       // boundary the field's level lies up to a support beyond the outermost particles, where
       // the level set (which lives on the particles) cannot reach. One gather serves a group
       // of consecutive points (each then takes its own candidates from it).
-      GatherForGroupAt(
-        field, out.Points.data(), begin, end, i,
-        [&](std::size_t k) {
-          std::uint32_t nearest;
-          double d2;
-          geometry.Index->Nearest(&out.Points[3 * k], 1, &nearest, &d2);
-          return settings.SPHMaximumMove * field.Support(nearest);
-        },
-        reaches, group);
+      group.Hold(field, out.Points.data(), i, end, [&](std::size_t k) {
+        std::uint32_t nearest;
+        double d2;
+        geometry.Index->Nearest(&out.Points[3 * k], 1, &nearest, &d2);
+        return settings.SPHMaximumMove * field.Support(nearest);
+      });
       Eigen::Vector3d p(&out.Points[3 * i]);
       const Eigen::Vector3d n(&out.Normals[3 * i]);
-      const double reach = reaches[(i - begin) % SPHPointGroup];
+      const double reach = group.Reach(i);
       Eigen::Vector3d normal;
-      if (GatherAndSolveOntoLevel(field, isoValue, p, n, reach, candidates, normal, &group))
+      if (GatherAndSolveOntoLevel(
+            field, isoValue, p, n, reach, candidates, normal, &group.Candidates))
       {
         for (int d = 0; d < 3; ++d)
         {

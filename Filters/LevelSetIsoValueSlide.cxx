@@ -410,33 +410,30 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch
   {
-    SPHCandidates Group, Candidates; // a group of points' (GatherForGroupAt), and one point's
+    SPHPointGroup Group;      // the group of consecutive points the current one is in
+    SPHCandidates Candidates; // one point's
+    std::uint32_t NearestOf[SPHPointGroup::Most]; // the group's nearest samples (none: ~0u)
   };
   vtkSMPThreadLocal<Scratch> scratch;
   auto slide = [&](std::size_t begin, std::size_t end) {
     Scratch& s = scratch.Local();
-    // The group's nearest samples (none: the cloud is empty) and reaches.
-    std::uint32_t nearestOf[SPHPointGroup];
-    double reaches[SPHPointGroup];
     constexpr std::uint32_t NoNearest = ~std::uint32_t(0);
+    s.Group.First = s.Group.Last = 0; // (none held: a block's groups start at its first point)
     for (std::size_t i = begin; i < end && refusal.load(std::memory_order_relaxed) == None; ++i)
     {
-      GatherForGroupAt(
-        field, points.data(), begin, end, i,
-        [&](std::size_t k) {
-          std::uint32_t& nearest = nearestOf[k - i];
-          double d2;
-          if (geometry.Index->Nearest(&points[3 * k], 1, &nearest, &d2) == 0)
-          {
-            nearest = NoNearest;
-            return 0.0;
-          }
-          return settings.SPHMaximumMove * field.Support(nearest);
-        },
-        reaches, s.Group);
+      s.Group.Hold(field, points.data(), i, end, [&](std::size_t k) {
+        std::uint32_t& nearest = s.NearestOf[k - s.Group.First];
+        double d2;
+        if (geometry.Index->Nearest(&points[3 * k], 1, &nearest, &d2) == 0)
+        {
+          nearest = NoNearest;
+          return 0.0;
+        }
+        return settings.SPHMaximumMove * field.Support(nearest);
+      });
       Eigen::Vector3d p(&points[3 * i]);
       const Eigen::Vector3d start = p, n(&normals[3 * i]);
-      const std::uint32_t nearest = nearestOf[(i - begin) % SPHPointGroup];
+      const std::uint32_t nearest = s.NearestOf[i - s.Group.First];
       if (nearest == NoNearest)
       {
         refusal = OneSide;
@@ -461,9 +458,10 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         refusal = OneSide;
         break;
       }
-      const double reach = reaches[(i - begin) % SPHPointGroup];
+      const double reach = s.Group.Reach(i);
       Eigen::Vector3d normal;
-      if (!GatherAndSolveOntoLevel(field, isoValue, p, n, reach, s.Candidates, normal, &s.Group))
+      if (!GatherAndSolveOntoLevel(
+            field, isoValue, p, n, reach, s.Candidates, normal, &s.Group.Candidates))
       {
         refusal = TooFar;
         break;

@@ -23,8 +23,9 @@ namespace lsi
 {
 namespace
 {
-// Samples evaluated together (consecutive in storage order, so near each other): one walk of
-// the tree gathers what reaches their box, which a few more candidates per sample repay.
+// Samples evaluated together (consecutive in storage order, so near each other, within the
+// first one's support: GroupEnd): one walk of the tree gathers what reaches their box, which a
+// few more candidates per sample repay.
 constexpr std::size_t SPHSampleGroup = 32;
 
 // The array named by the user, else by the marker, else by one of the usual names.
@@ -202,27 +203,28 @@ SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
     stored[j] = arrays.Density ? arrays.Density->GetTuple1(geometry.Order[j]) : 0.0;
   }
   auto summed = [&](std::size_t j) { return !(stored[j] > 0.0) || !std::isfinite(stored[j]); };
-  const std::size_t groups = (n + SPHSampleGroup - 1) / SPHSampleGroup;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(groups), BalancedGrain(groups, 64),
-    [&](vtkIdType first, vtkIdType last) {
+  vtkSMPTools::For(
+    0, static_cast<vtkIdType>(n), BalancedGrain(n, 8192), [&](vtkIdType begin, vtkIdType end) {
       std::vector<std::uint32_t> scratch;
       double rho[SPHSampleGroup];
-      for (vtkIdType g = first; g < last; ++g)
+      for (std::size_t first = static_cast<std::size_t>(begin), last = first;
+           first < static_cast<std::size_t>(end); first = last)
       {
-        const std::size_t begin = static_cast<std::size_t>(g) * SPHSampleGroup;
-        const std::size_t end = std::min(n, begin + SPHSampleGroup);
+        double lower[3], upper[3];
+        last = GroupEnd(geometry.Positions.data(), first, static_cast<std::size_t>(end),
+          SPHSampleGroup, this->H[first], lower, upper);
         bool any = false;
-        for (std::size_t j = begin; j < end && !any; ++j)
+        for (std::size_t j = first; j < last && !any; ++j)
         {
           any = summed(j);
         }
         if (any)
         {
-          this->SumDensities(mass, begin, end, rho, scratch);
+          this->SumDensities(mass, first, last, lower, upper, rho, scratch);
         }
-        for (std::size_t j = begin; j < end; ++j)
+        for (std::size_t j = first; j < last; ++j)
         {
-          const double density = summed(j) ? rho[j - begin] : stored[j];
+          const double density = summed(j) ? rho[j - first] : stored[j];
           // A particle with no density at all (massless and alone) carries no volume.
           this->Volume[j] = density > 0.0 ? mass[j] / density : 0.0;
           this->Coefficient[j] =
@@ -241,10 +243,9 @@ SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
 }
 
 void SPHField::SumDensities(const std::vector<double>& mass, std::size_t begin, std::size_t end,
-  double* rho, std::vector<std::uint32_t>& scratch) const
+  const double lower[3], const double upper[3], double* rho,
+  std::vector<std::uint32_t>& scratch) const
 {
-  double lower[3], upper[3];
-  BoxOfPoints(this->Geometry.Positions.data(), begin, end, lower, upper);
   scratch.clear();
   this->ForEachSupportReaching(lower, upper, 0.0, [&](std::uint32_t k) { scratch.push_back(k); });
   for (std::size_t j = begin; j < end; ++j)
@@ -495,29 +496,33 @@ bool SolveOntoLevel(const SPHField& field, const SPHCandidates& candidates, doub
   return true;
 }
 
-void BoxOfPoints(
-  const double* points, std::size_t first, std::size_t last, double lower[3], double upper[3])
+std::size_t GroupEnd(const double* points, std::size_t first, std::size_t end, std::size_t most,
+  double limit, double lower[3], double upper[3])
 {
   for (int k = 0; k < 3; ++k)
   {
     lower[k] = upper[k] = points[3 * first + k];
   }
-  for (std::size_t i = first + 1; i < last; ++i)
+  std::size_t last = first + 1;
+  for (; last < end && last - first < most; ++last)
   {
+    const double* x = &points[3 * last];
+    bool within = true;
     for (int k = 0; k < 3; ++k)
     {
-      lower[k] = std::min(lower[k], points[3 * i + k]);
-      upper[k] = std::max(upper[k], points[3 * i + k]);
+      within = within && std::max(upper[k], x[k]) - std::min(lower[k], x[k]) <= limit;
+    }
+    if (!within)
+    {
+      break;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], x[k]);
+      upper[k] = std::max(upper[k], x[k]);
     }
   }
-}
-
-void GatherForPoints(const SPHField& field, const double* points, std::size_t first,
-  std::size_t last, double extra, SPHCandidates& group)
-{
-  double lower[3], upper[3];
-  BoxOfPoints(points, first, last, lower, upper);
-  field.GatherForBox(lower, upper, extra, group);
+  return last;
 }
 
 bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vector3d& p,
@@ -594,11 +599,11 @@ bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, d
     n,
     [&](std::size_t begin, std::size_t end) {
       SPHCandidates candidates;
-      for (std::size_t first = begin; first < end; first += SPHSampleGroup)
+      for (std::size_t first = begin, last = begin; first < end; first = last)
       {
-        const std::size_t last = std::min(end, first + SPHSampleGroup);
         double lower[3], upper[3];
-        BoxOfPoints(geometry.Positions.data(), first, last, lower, upper);
+        last = GroupEnd(geometry.Positions.data(), first, end, SPHSampleGroup, field.Support(first),
+          lower, upper);
         field.GatherForBox(lower, upper, 0.0, candidates);
         for (std::size_t j = first; j < last; ++j)
         {

@@ -171,9 +171,11 @@ private:
   template <typename Visit>
   void ForEachSupportReaching(
     const double lower[3], const double upper[3], double extra, Visit&& visit) const;
-  // The density at samples [begin, end) (storage order) by summation over `mass`, into rho.
+  // The density at samples [begin, end) (storage order, within the box [lower, upper]) by
+  // summation over `mass`, into rho.
   void SumDensities(const std::vector<double>& mass, std::size_t begin, std::size_t end,
-    double* rho, std::vector<std::uint32_t>& scratch) const;
+    const double lower[3], const double upper[3], double* rho,
+    std::vector<std::uint32_t>& scratch) const;
 
   const Neighborhoods& Geometry;
   SPHKernel Kernel;
@@ -316,10 +318,6 @@ bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vect
   const Eigen::Vector3d& direction, double reach, SPHCandidates& candidates,
   Eigen::Vector3d& normal, const SPHCandidates* group = nullptr);
 
-/// Consecutive surface points (near each other) whose small gathers one walk of the hierarchy
-/// serves (GatherForPoints).
-constexpr std::size_t SPHPointGroup = 16;
-
 /// How far around a point GatherAndSolveOntoLevel's small gather reaches, for `reach`.
 inline double NearGatherExtra(double reach)
 {
@@ -327,36 +325,47 @@ inline double NearGatherExtra(double reach)
   return 1.000001 * (0.25 * reach);
 }
 
-/// The box of points [first, last) of `points` (3 doubles each).
-void BoxOfPoints(
-  const double* points, std::size_t first, std::size_t last, double lower[3], double upper[3]);
+/// The end of the group of consecutive points of `points` (3 doubles each) that starts at
+/// `first`: at most `most` of them, before `end`, while their box stays within `limit` on every
+/// side (at least the first), so that one walk of the field's hierarchy serves them and its
+/// gather stays local where consecutive points jump (at the seams of the spatial order).
+/// Their box into lower, upper.
+std::size_t GroupEnd(const double* points, std::size_t first, std::size_t end, std::size_t most,
+  double limit, double lower[3], double upper[3]);
 
-/// GatherForBox over the box of points [first, last) of `points` (3 doubles each), `extra`
-/// wider: the candidates of a group of consecutive points (near each other: the surface's
-/// points come in spatial order), from which each point's own are taken (GatherAmong).
-void GatherForPoints(const SPHField& field, const double* points, std::size_t first,
-  std::size_t last, double extra, SPHCandidates& group);
-
-/// The group of points that point i starts when it is the SPHPointGroup-th after `begin`
-/// (up to `end`): their reaches, reachOf(k) into reaches[k - i], and the group's candidates for
-/// GatherAndSolveOntoLevel (GatherForPoints for the widest reach). Does nothing for the others.
-template <typename ReachOf>
-void GatherForGroupAt(const SPHField& field, const double* points, std::size_t begin,
-  std::size_t end, std::size_t i, ReachOf&& reachOf, double* reaches, SPHCandidates& group)
+/// Consecutive surface points (near each other) whose small gathers one walk of the hierarchy
+/// serves: at most SPHPointGroup::Most, within the first one's reach of each other.
+struct SPHPointGroup
 {
-  if ((i - begin) % SPHPointGroup != 0)
+  static constexpr std::size_t Most = 16;
+  std::size_t First = 0, Last = 0; // its points [First, Last)
+  double Reaches[Most];
+  SPHCandidates Candidates; // for GatherAndSolveOntoLevel at each (GatherForBox)
+  /// Forms the group that starts at point i of `points` (up to `end`) unless i is in this
+  /// one: reachOf(k) for each of its points k, in order (First already i), and the candidates
+  /// for the widest.
+  template <typename ReachOf>
+  void Hold(
+    const SPHField& field, const double* points, std::size_t i, std::size_t end, ReachOf&& reachOf)
   {
-    return;
+    if (i >= this->First && i < this->Last)
+    {
+      return;
+    }
+    this->First = i;
+    this->Reaches[0] = reachOf(i);
+    double lower[3], upper[3];
+    this->Last = GroupEnd(points, i, end, Most, this->Reaches[0], lower, upper);
+    double widest = this->Reaches[0];
+    for (std::size_t k = i + 1; k < this->Last; ++k)
+    {
+      this->Reaches[k - i] = reachOf(k);
+      widest = std::max(widest, this->Reaches[k - i]);
+    }
+    field.GatherForBox(lower, upper, NearGatherExtra(widest), this->Candidates);
   }
-  const std::size_t last = std::min(end, i + SPHPointGroup);
-  double widest = 0.0;
-  for (std::size_t k = i; k < last; ++k)
-  {
-    reaches[k - i] = reachOf(k);
-    widest = std::max(widest, reaches[k - i]);
-  }
-  GatherForPoints(field, points, i, last, NearGatherExtra(widest), group);
-}
+  double Reach(std::size_t i) const { return this->Reaches[i - this->First]; }
+};
 
 /// The median kernel support over the median neighbourhood radius (distance to the n-th
 /// neighbour), among the samples next to the surface (a neighbour on the other side of

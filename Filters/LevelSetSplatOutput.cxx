@@ -103,8 +103,10 @@ vtkSmartPointer<vtkDataArray> CornerNormalsArray(
 } // namespace
 
 // Consecutive splats (near each other: the points come in spatial order) whose corners one
-// gather of the SPH field's samples serves.
+// gather of the SPH field's samples serves: at most this many, their centres within
+// SplatGroupWidth radii of the first one's of each other (GroupEnd).
 constexpr std::size_t SplatGroup = 32;
+constexpr double SplatGroupWidth = 8.0;
 
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
   vtkPolyData* splats, const AbortCheck& aborted)
@@ -120,6 +122,13 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   cornerPoints->SetNumberOfPoints(corners);
   double* xyz = static_cast<double*>(cornerPoints->GetData()->GetVoidPointer(0));
   std::vector<float> cornerNormals(field ? 3 * static_cast<std::size_t>(corners) : 0);
+  std::vector<double> centres; // (on the SPH field, for the groups' boxes)
+  for (vtkIdType i = 0; field && i < count; ++i)
+  {
+    double c[3];
+    isopoints->GetPoint(i, c);
+    centres.insert(centres.end(), c, c + 3);
+  }
   const bool completed = ParallelForInBlocks(
     static_cast<std::size_t>(count),
     [&](std::size_t begin, std::size_t end) {
@@ -137,17 +146,11 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         {
           // The corners are within sqrt(2) radii of their centre (a slid one too): one gather
           // within 1.5 radii of the centres of a few consecutive splats serves them all.
-          gatheredTo = std::min(end, i + SplatGroup);
           double lower[3], upper[3], widest = 0.0;
+          gatheredTo =
+            GroupEnd(centres.data(), i, end, SplatGroup, SplatGroupWidth * radius, lower, upper);
           for (std::size_t k = i; k < gatheredTo; ++k)
           {
-            double x[3];
-            isopoints->GetPoint(static_cast<vtkIdType>(k), x);
-            for (int d = 0; d < 3; ++d)
-            {
-              lower[d] = k == i ? x[d] : std::min(lower[d], x[d]);
-              upper[d] = k == i ? x[d] : std::max(upper[d], x[d]);
-            }
             widest = std::max(widest, radii->GetComponent(static_cast<vtkIdType>(k), 0));
           }
           field->GatherForBox(lower, upper, 1.5 * widest, group);

@@ -211,14 +211,19 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
     [&](std::size_t begin, std::size_t end) {
       std::vector<std::pair<vtkIdType, double>> weights; // input ids and weights
       std::vector<std::uint32_t> reaching;               // the samples reaching a group of points
+      std::size_t groupEnd = begin; // where the group ends: the next starts there
       for (std::size_t i = begin; i < end; ++i)
       {
-        if ((i - begin) % SPHPointGroup == 0)
+        if (i == groupEnd)
         {
           // One walk of the field's hierarchy for a group of consecutive points (near each
-          // other); each point then weighs its own samples among them, in the same order.
-          double lower[3], upper[3];
-          BoxOfPoints(points.data(), i, std::min(end, i + SPHPointGroup), lower, upper);
+          // other: within the support of the sample nearest to the first); each point then
+          // weighs its own samples among them, in the same order.
+          std::uint32_t nearest;
+          double d2, lower[3], upper[3];
+          geometry.Index->Nearest(&points[3 * i], 1, &nearest, &d2);
+          groupEnd = GroupEnd(
+            points.data(), i, end, SPHPointGroup::Most, field.Support(nearest), lower, upper);
           field.SamplesReaching(lower, upper, reaching);
         }
         weights.clear();

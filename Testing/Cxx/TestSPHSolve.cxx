@@ -9,7 +9,7 @@
 //   - both ways taken: starts the quarter-reach gather settles and starts it hands over;
 // and ValueAt (the field without its gradient) against Evaluate's value, to the bit.
 // Then the gathers made once for a group of points near each other (GatherForBox,
-// GatherForPoints, SamplesReaching), which the surface's stages use, against each point's own:
+// SPHPointGroup, SamplesReaching), which the surface's stages use, against each point's own:
 //   - SPHOffsetsAtSamples (grouped) against ValueAt at every sample, to the bit;
 //   - each point's candidates taken from its group's (GatherAmong) against Gather's, the same
 //     candidates in the same order, and GatherAndSolveOntoLevel from them the same point and
@@ -254,46 +254,47 @@ void TestGroupedGathers()
   field.Evaluate(centre, peak, g);
   const double isoValue = 0.5 * peak;
   int groups = 0, sameGather = 0, sameSolve = 0, sameWeights = 0, tried = 0, solved = 0;
-  lsi::SPHCandidates group, fromGroup, own;
+  lsi::SPHCandidates fromGroup, own;
   std::vector<std::uint32_t> reaching;
+  int split = 0; // groups ended by a jump before their most points
   for (int w = 0; w < 40; ++w, ++groups)
   {
+    // A walk of 2 * Most points with a jump inside the first group (a seam of the order).
     std::vector<double> walk;
     Eigen::Vector3d x(0.6 * unit(random), 0.6 * unit(random), 0.6 * unit(random));
     std::vector<double> reaches;
-    for (std::size_t k = 0; k < lsi::SPHPointGroup; ++k)
+    for (std::size_t k = 0; k < 2 * lsi::SPHPointGroup::Most; ++k)
     {
       x += 0.5 * spacing * Eigen::Vector3d(unit(random), unit(random), unit(random));
+      x[0] -= k == lsi::SPHPointGroup::Most / 2 ? (x[0] > 0.0 ? 0.45 : -0.45) : 0.0;
       walk.insert(walk.end(), x.data(), x.data() + 3);
       reaches.push_back((2.0 + 2.0 * (unit(random) + 0.5)) * spacing);
     }
-    const double widest = *std::max_element(reaches.begin(), reaches.end());
-    lsi::GatherForPoints(
-      field, walk.data(), 0, reaches.size(), lsi::NearGatherExtra(widest), group);
-    double lower[3], upper[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      lower[d] = upper[d] = walk[d];
-      for (std::size_t k = 1; k < reaches.size(); ++k)
-      {
-        lower[d] = std::min(lower[d], walk[3 * k + d]);
-        upper[d] = std::max(upper[d], walk[3 * k + d]);
-      }
-    }
-    field.SamplesReaching(lower, upper, reaching);
+    lsi::SPHPointGroup group;
+    std::size_t samplesEnd = 0; // the interpolation's groups: the next starts there
     for (std::size_t k = 0; k < reaches.size(); ++k, ++tried)
     {
+      group.Hold(field, walk.data(), k, reaches.size(), [&](std::size_t q) { return reaches[q]; });
+      split += group.First == k && group.Last == lsi::SPHPointGroup::Most / 2 ? 1 : 0;
+      if (k == samplesEnd)
+      {
+        double lower[3], upper[3];
+        samplesEnd = lsi::GroupEnd(
+          walk.data(), k, reaches.size(), lsi::SPHPointGroup::Most, 2.0 * spacing, lower, upper);
+        field.SamplesReaching(lower, upper, reaching);
+      }
       const double* p = &walk[3 * k];
       const double extra = lsi::NearGatherExtra(reaches[k]);
-      lsi::SPHField::GatherAmong(group, p, extra, fromGroup);
+      lsi::SPHField::GatherAmong(group.Candidates, p, extra, fromGroup);
       field.Gather(p, extra, own);
-      sameGather += SameCandidates(fromGroup, own) && !own.X.empty() ? 1 : 0;
+      sameGather +=
+        SameCandidates(fromGroup, own) && !own.X.empty() && group.Reach(k) == reaches[k] ? 1 : 0;
       // The solve from the group's candidates and from its own gather.
       const Eigen::Vector3d direction =
         Eigen::Vector3d(p[0] + 0.2 * unit(random), p[1], p[2]).normalized();
       Eigen::Vector3d a(p), b(p), na(0, 0, 0), nb(0, 0, 0);
-      const bool okA =
-        lsi::GatherAndSolveOntoLevel(field, isoValue, a, direction, reaches[k], own, na, &group);
+      const bool okA = lsi::GatherAndSolveOntoLevel(
+        field, isoValue, a, direction, reaches[k], own, na, &group.Candidates);
       const bool okB =
         lsi::GatherAndSolveOntoLevel(field, isoValue, b, direction, reaches[k], own, nb);
       sameSolve += okA == okB && a == b && na == nb ? 1 : 0;
@@ -307,6 +308,7 @@ void TestGroupedGathers()
       sameWeights += grouped == alone && !alone.empty() ? 1 : 0;
     }
   }
+  Check(split >= groups, "the jumps end groups early (" + std::to_string(split) + " groups)");
   Check(sameGather == tried,
     "a point's candidates from its group's are Gather's, in order (" + std::to_string(sameGather) +
       " of " + std::to_string(tried) + ")");
