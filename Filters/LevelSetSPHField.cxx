@@ -594,7 +594,7 @@ bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, d
   const std::size_t n = geometry.NumberOfSamples;
   dataOffsets.resize(n);
   // By groups of samples near each other (consecutive in storage order), each group's
-  // contributors gathered by one walk of the tree: ValueAt's numbers for a fifth of its time.
+  // contributors gathered by one walk of the tree: ValueAt's numbers for a third of its time.
   return ParallelForInBlocks(
     n,
     [&](std::size_t begin, std::size_t end) {
