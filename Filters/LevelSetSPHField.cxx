@@ -195,7 +195,7 @@ SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
   }
   // rho_j: stored, or summed here (the tree is ready) where none is stored or the stored one
   // is not positive and finite (real files hold zeros: boundary or placeholder particles).
-  // In parallel, by groups of samples near each other (SPHSampleGroup), each group's
+  // In parallel, by groups of samples near each other (SampleGroupEnd), each group's
   // contributors gathered by one walk of the tree.
   std::vector<double> stored(n);
   for (std::size_t j = 0; j < n; ++j)
@@ -211,8 +211,7 @@ SPHField::SPHField(const Neighborhoods& geometry, const SPHFieldArrays& arrays,
            first < static_cast<std::size_t>(end); first = last)
       {
         double lower[3], upper[3];
-        last = GroupEnd(geometry.Positions.data(), first, static_cast<std::size_t>(end),
-          SPHSampleGroup, this->H[first], lower, upper);
+        last = this->SampleGroupEnd(first, static_cast<std::size_t>(end), lower, upper);
         bool any = false;
         for (std::size_t j = first; j < last && !any; ++j)
         {
@@ -246,8 +245,7 @@ void SPHField::SumDensities(const std::vector<double>& mass, std::size_t begin, 
   const double lower[3], const double upper[3], double* rho,
   std::vector<std::uint32_t>& scratch) const
 {
-  scratch.clear();
-  this->ForEachSupportReaching(lower, upper, 0.0, [&](std::uint32_t k) { scratch.push_back(k); });
+  this->SamplesReaching(lower, upper, scratch);
   for (std::size_t j = begin; j < end; ++j)
   {
     // (The sum a walk from x_j alone makes: the same weights in the same order, and zeros.)
@@ -436,6 +434,13 @@ void SPHField::GatherForBox(
   });
 }
 
+std::size_t SPHField::SampleGroupEnd(
+  std::size_t first, std::size_t end, double lower[3], double upper[3]) const
+{
+  return GroupEnd(
+    this->Geometry.Positions.data(), first, end, SPHSampleGroup, this->H[first], lower, upper);
+}
+
 void SPHField::SamplesReaching(
   const double lower[3], const double upper[3], std::vector<std::uint32_t>& samples) const
 {
@@ -602,8 +607,7 @@ bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, d
       for (std::size_t first = begin, last = begin; first < end; first = last)
       {
         double lower[3], upper[3];
-        last = GroupEnd(geometry.Positions.data(), first, end, SPHSampleGroup, field.Support(first),
-          lower, upper);
+        last = field.SampleGroupEnd(first, end, lower, upper);
         field.GatherForBox(lower, upper, 0.0, candidates);
         for (std::size_t j = first; j < last; ++j)
         {

@@ -141,6 +141,10 @@ public:
   /// walk of the hierarchy for a group of points near each other; GatherForBox's, as indices).
   void SamplesReaching(
     const double lower[3], const double upper[3], std::vector<std::uint32_t>& samples) const;
+  /// The end of the group of consecutive samples (storage order) from `first` (before `end`)
+  /// that one walk serves: GroupEnd within the first one's support. Their box into lower, upper.
+  std::size_t SampleGroupEnd(
+    std::size_t first, std::size_t end, double lower[3], double upper[3]) const;
   /// ForEachWeight(x, visit) over `samples` (SamplesReaching's, for a box that holds x): the
   /// same weights in the same order.
   template <typename Visit>
