@@ -12,7 +12,9 @@ GADGET-4 isovalue and the seeds can differ slightly from the comparison's:
            neighbours kept: what an isovalue change costs with QuickIsoValueChanges off);
   quick    a change that moves 2% (FRACTION) of the particles above the isovalue across it, with
            QuickIsoValueChanges on, from a fresh filter's first run; `slid` says whether the
-           last surface was slid (1) or the method ran (0);
+           last surface was slid (1) or the method ran (0); `vs method` compares its output
+           with the method's at that isovalue (a fresh filter): the relative differences of the
+           enclosed volume (the Enclosed table's total) and of the number of points;
   seed     after the method's re-run, the seed centre moved by a thousandth of the data's
            extent (the same flood); `reused` says whether the last outputs were handed on;
   output   then OutputType changed to the other one (splats <-> isopoints): the surface output
@@ -46,6 +48,13 @@ def fetch(proxy):
 
 
 KEPT = []
+
+
+def enclosed_volume(proxy):
+    """The Enclosed table's total volume (its last row)."""
+    table = servermanager.Fetch(proxy, idx=3)
+    column = table.GetColumnByName("Volume")
+    return column.GetValue(table.GetNumberOfRows() - 1) if column else float("nan")
 
 
 def plummer(count):
@@ -102,9 +111,9 @@ def main():
     if plummer_samples > 0:
         cases.append(("plummer-%d" % plummer_samples, lambda: plummer(plummer_samples), None,
                       quantile(0.5)))
-    print("%-22s %-9s %9s %9s %9s %5s %9s %6s %9s %9s %14s" % (
-        "case", "output", "first s", "method s", "quick s", "slid", "seed s", "reused",
-        "output s", "points", "checksum"))
+    print("%-22s %-9s %9s %9s %9s %5s %17s %9s %6s %9s %9s %14s" % (
+        "case", "output", "first s", "method s", "quick s", "slid", "vs method vol pts",
+        "seed s", "reused", "output s", "points", "checksum"))
     for name, make, scalar, rule in cases:
         source = make()
         particles = fetch(source)
@@ -122,6 +131,7 @@ def main():
                             SeedCenter=seed, OutputType=output_type)
             first = method = quick = moved_seed = remake = float("inf")
             slid = reused = -1
+            versus = (float("nan"), float("nan"))
             for r in range(1 if name.startswith("plummer") else repeats):
                 f = LevelSetIsosurface(**settings)
                 t = time.time()
@@ -151,12 +161,19 @@ def main():
                 quick = min(quick, time.time() - t)
                 g.UpdatePropertyInformation()
                 slid = g.GetProperty("SlidLastSurface").GetData()
+                if r == 0:
+                    m = LevelSetIsosurface(**dict(settings, IsoValue=moved))
+                    m.UpdatePipeline()
+                    volume = [enclosed_volume(x) for x in (g, m)]
+                    counts = [fetch(x).GetNumberOfPoints() for x in (g, m)]
+                    versus = (volume[0] / volume[1] - 1.0, counts[0] / max(1, counts[1]) - 1.0)
+                    Delete(m)
                 Delete(g)
             points = vtk_to_numpy(out.GetPoints().GetData()) if out.GetNumberOfPoints() else []
             checksum = float(np.sum(np.asarray(points, dtype=float) * [1.0, 2.0, 3.0]))
-            print("%-22s %-9s %9.3f %9.3f %9.3f %5d %9.4f %6d %9.4f %9d %14.8g" % (
-                name, label, first, method, quick, slid, moved_seed, reused, remake,
-                out.GetNumberOfPoints(), checksum), flush=True)
+            print("%-22s %-9s %9.3f %9.3f %9.3f %5d %8.1e %8.1e %9.4f %6d %9.4f %9d %14.8g" % (
+                name, label, first, method, quick, slid, versus[0], versus[1], moved_seed,
+                reused, remake, out.GetNumberOfPoints(), checksum), flush=True)
         Delete(source)
 
 
