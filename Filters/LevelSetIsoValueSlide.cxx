@@ -558,9 +558,16 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   // On the SPH field a sample on the cloud's edge may lie up to a kernel support from the
   // surface beyond it (the free boundary): such a sample whose value crosses the isovalue (the
   // edge's are lower, their kernels cut) counts as near within that support more.
-  auto edgeReach = [&](std::uint32_t i) {
+  // And on the SPH field, whose points lie closer than the samples, a sample within its
+  // neighbourhood radius of the surface may change sides of the flood unmoved: the flood joins
+  // samples through their neighbourhoods, and there its paths run beside the level, through
+  // samples whose values lie near the isovalue (a noisy field's crossings join or cut them).
+  auto extraReach = [&](std::uint32_t i) {
     Eigen::Vector3d outward;
-    return field && OutwardOfCloud(geometry, i, outward) ? field->Support(i) : 0.0;
+    return !field
+      ? 0.0
+      : (OutwardOfCloud(geometry, i, outward) ? field->Support(i)
+                                              : std::max(0.0, geometry.RadiusOf(i) - margin));
   };
   const double largestMove = *std::max_element(moves.begin(), moves.end());
   // A sample between the old and the new level lies within the move there (plus the points'
@@ -574,7 +581,7 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
       double d2[Candidates];
       for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
       {
-        const double extra = edgeReach(moved[m]);
+        const double extra = extraReach(moved[m]);
         const double reach = largestMove + margin + extra;
         const std::size_t found =
           index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);

@@ -90,17 +90,9 @@ struct SlideResult
   // (left where it was, its move the reach it searched), to be removed (RemoveDroppedPoints)
   // once the flood's check has counted it. Empty: none.
   std::vector<char> Dropped;
-  double LargestMove() const // of any point that was not dropped (0 without points)
+  double LargestMove() const // of any point (0 without points)
   {
-    double largest = 0.0;
-    for (std::size_t i = 0; i < this->Moves.size(); ++i)
-    {
-      if (i >= this->Dropped.size() || !this->Dropped[i])
-      {
-        largest = std::max(largest, this->Moves[i]);
-      }
-    }
-    return largest;
+    return this->Moves.empty() ? 0.0 : *std::max_element(this->Moves.begin(), this->Moves.end());
   }
 };
 
@@ -155,7 +147,12 @@ std::size_t RemoveDroppedPoints(
 /// neighbourhoods are cut, has no surface). On the SPH `field` (null: the MLS fit) a sample on
 /// the cloud's edge (OutwardOfCloud) may lie up to its kernel support further: the surface
 /// beyond the edge (the free boundary) lies up to a support past the outermost particles, and
-/// their values, their kernels cut by the edge, may lie at the isovalue.
+/// their values, their kernels cut by the edge, may lie at the isovalue. Any other sample there
+/// may lie up to its neighbourhood radius from the points (when that exceeds `margin`: the
+/// points lie closer than the samples there): the flood joins samples through their
+/// neighbourhoods, and beside the level its paths run through samples whose values lie near the
+/// isovalue, which a field noisy at the particle scale crosses here and there, joining or
+/// cutting thin arms of the flood that the surface never showed.
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
   double margin, std::size_t& changed, vtkIdType particles, const SPHField* field = nullptr);

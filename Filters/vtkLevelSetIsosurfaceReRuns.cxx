@@ -275,7 +275,7 @@ bool vtkLevelSetIsosurface::AcceptSlide(const lsi::Neighborhoods& geometry,
   // The points the ranks keep (under MPI each keeps those nearest its own samples: together the
   // serial run's points; its others, towards its halo's edge, may have slid on cut
   // neighbourhoods): the LevelSet shift is capped by their largest move, and only they are
-  // checked against the samples beyond the band. (Points dropped did not move.)
+  // checked against the samples beyond the band.
   double keptLargestMove = slid.LargestMove();
   if (ranks.Distributed())
   {
@@ -284,7 +284,7 @@ bool vtkLevelSetIsosurface::AcceptSlide(const lsi::Neighborhoods& geometry,
     for (std::size_t i = 0; i < pointCount; ++i)
     {
       keptPoints[i] = lsi::OwnsNearestSample(geometry, ranks, &isopoints.Points[3 * i]);
-      if (keptPoints[i] && (i >= slid.Dropped.size() || !slid.Dropped[i]))
+      if (keptPoints[i])
       {
         keptLargestMove = std::max(keptLargestMove, slid.Moves[i]);
       }

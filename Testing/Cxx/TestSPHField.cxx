@@ -761,13 +761,12 @@ vtkSmartPointer<vtkPolyData> NoisyPlummerSphere(vtkIdType count)
 
 // QuickIsoValueChanges on noisy data (the median density's surface of a random Plummer sphere):
 // a higher isovalue closes small bumps of the surface, whose points find the level nowhere along
-// their lines, or cuts them off the flood: those points are dropped, as the method's refinement
-// drops them, and the flood's check counts them at their reach. Of ten changes that move 0.4% to
-// 5% of the particles above the isovalue across it, at least half slide (before, none did: a
-// point without a level refused the slide), and every one that slides has its points on the
-// field's new level, as many as the method's within 5%, enclosing its mass within 0.5%. (The
-// others run the method: changed samples of the flood lie further from the points than the
-// check allows.)
+// their lines (dropped, as the method's refinement drops them), and cuts thin arms off the flood
+// outside the surface (which the method's evolution had smoothed away), and joins or cuts the
+// flood beside the surface, where its paths run through samples near the isovalue. A change
+// that moves 0.5%, 1%, 2% or 5% of the particles above the isovalue across it still slides: the
+// points on the field's new level, as many as the method's within 5%, enclosing its mass within
+// 0.5%.
 void TestQuickOnNoisyData()
 {
   vtkSmartPointer<vtkPolyData> cloud = NoisyPlummerSphere(20000);
@@ -781,35 +780,27 @@ void TestQuickOnNoisyData()
   std::sort(values.begin(), values.end());
   const double iso = values[values.size() / 2], seed[3] = { 0, 0, 0 };
   const std::vector<double> above(values.begin() + values.size() / 2 + 1, values.end());
-  int slides = 0, changes = 0;
-  for (const double fraction : { 0.004, 0.006, 0.008, 0.01, 0.015, 0.02, 0.025, 0.03, 0.04, 0.05 })
+  for (const double fraction : { 0.005, 0.01, 0.02, 0.05 })
   {
-    ++changes;
     const double changed = above[static_cast<std::size_t>(fraction * above.size())];
     const std::string what =
       "noisy Plummer sphere, " + std::to_string(fraction * 100.0).substr(0, 3) + "% across";
     QuickAndMethod runs(cloud, iso, changed, seed, 0.1);
-    const double count = static_cast<double>(runs.Slid->GetNumberOfPoints());
-    std::cout << what << ": slid " << runs.Quick->GetSlidLastSurface() << ", points " << count
-              << ", method " << runs.Method->GetNumberOfPoints() << "; enclosed mass "
-              << EnclosedMass(runs.Quick) << ", method " << EnclosedMass(runs.Full) << "\n";
-    if (!runs.Quick->GetSlidLastSurface())
-    {
-      continue;
-    }
-    ++slides;
     const Scores s = Score(p, runs.Slid, changed, 400);
     Report(what + ", slid", s, runs.Slid->GetNumberOfPoints());
+    Check(runs.Quick->GetSlidLastSurface(), what + ": the change slides the surface");
     Check(s.MeanDistance < 1e-3 && s.MaxDistance < 1e-2,
       what + ": slid points on the field's new level (mean < 0.001 H, max < 0.01 H)");
+    const double count = static_cast<double>(runs.Slid->GetNumberOfPoints());
+    std::cout << what << ": points slid " << count << ", method "
+              << runs.Method->GetNumberOfPoints() << "; enclosed mass slid "
+              << EnclosedMass(runs.Quick) << ", method " << EnclosedMass(runs.Full) << "\n";
     Check(std::abs(count - runs.Method->GetNumberOfPoints()) < 0.05 * count,
       what + ": as many points as the method's, within 5%");
     Check(std::abs(EnclosedMass(runs.Quick) - EnclosedMass(runs.Full)) <
         0.005 * EnclosedMass(runs.Full),
       what + ": the slid surface encloses the method's mass within 0.5%");
   }
-  std::cout << "noisy Plummer sphere: " << slides << " of " << changes << " changes slid\n";
-  Check(2 * slides >= changes, "noisy Plummer sphere: at least half the changes slide");
 }
 
 int main(int argc, char* argv[])
