@@ -405,7 +405,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   const std::size_t count = isopoints.Points.size() / 3;
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count),
     bounds(count);
-  std::vector<char> nearEdge(count), dropped(count);
+  std::vector<char> nearEdge(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch
@@ -440,13 +440,12 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         break;
       }
       // The samples around where the point starts (the nearest and its neighbours: their lists
-      // are kept, a quarter of a search of as many) must lie on both sides of the new flood, or
-      // the point is dropped, its piece of surface cut off the flood or closed. Or, where they
-      // all lay inside the last flood too, all inside it: where the cloud itself ends inside the
+      // are kept, a quarter of a search of as many) must lie on both sides of the new flood:
+      // checked before the solve, so that a refused slide costs little. Or, where they all lay
+      // inside the last flood too, all inside it: where the cloud itself ends inside the
       // component (the free boundary: a tube's wall or end), the level lies beyond its
       // outermost particles, which are all inside. (A cavity that closes leaves a point whose
-      // samples straddled the last flood and lie all inside the new one: dropped; the flood's
-      // check then finds whether the cavity was small enough to lie within the points' reach.)
+      // samples straddled the last flood and lie all inside the new one: refused.)
       const std::uint32_t* around = geometry.NeighborsOf(nearest);
       bool in = false, out = false, outBefore = false;
       for (std::size_t j = 0; j < stride; ++j)
@@ -454,15 +453,18 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         (inside[around[j]] ? in : out) = true;
         outBefore = outBefore || !lastInside[around[j]];
       }
+      if (!in || (!out && outBefore))
+      {
+        refusal = OneSide;
+        break;
+      }
       const double reach = s.Group.Reach(i);
       Eigen::Vector3d normal;
-      if (!in || (!out && outBefore) ||
-        !GatherAndSolveOntoLevel(
-          field, isoValue, p, n, reach, s.Candidates, normal, &s.Group.Candidates))
+      if (!GatherAndSolveOntoLevel(
+            field, isoValue, p, n, reach, s.Candidates, normal, &s.Group.Candidates))
       {
-        dropped[i] = 1;
-        moves[i] = reach;
-        continue;
+        refusal = TooFar;
+        break;
       }
       const double way = (p - start).norm(); // (along a straight line)
       const double bound = BoundAt(drift, i, p, way);
@@ -490,47 +492,8 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
     result.Moves.swap(moves);
     result.NearBandEdge.swap(nearEdge);
     result.Bounds.swap(bounds);
-    if (std::find(dropped.begin(), dropped.end(), 1) != dropped.end())
-    {
-      result.Dropped.swap(dropped);
-    }
   }
   return result;
-}
-
-std::size_t RemoveDroppedPoints(
-  SlideResult& slid, IsopointSet& isopoints, BandDrift& drift, std::vector<char>& kept)
-{
-  const std::vector<char>& dropped = slid.Dropped;
-  // Keeps the rows (of `width` values) of the points not dropped, in order; rows beyond
-  // `dropped` (points added after the slide's) all stay.
-  auto compact = [&](auto& perPoint, std::size_t width) {
-    std::size_t to = 0;
-    for (std::size_t i = 0; i < perPoint.size() / width; ++i)
-    {
-      if (i >= dropped.size() || !dropped[i])
-      {
-        std::copy_n(perPoint.begin() + width * i, width, perPoint.begin() + width * to++);
-      }
-    }
-    perPoint.resize(width * to);
-  };
-  const std::size_t before = isopoints.Points.size() / 3;
-  compact(isopoints.Points, 3);
-  compact(isopoints.Normals, 3);
-  compact(drift.Origins, 3);
-  compact(drift.Bounds, 1);
-  compact(slid.Moves, 1);
-  compact(slid.NearBandEdge, 1);
-  compact(slid.Bounds, 1);
-  compact(kept, 1);
-  isopoints.FitSamples.clear(); // (they matched the points before)
-  isopoints.FitModels.clear();
-  isopoints.FitSize = 0;
-  const std::size_t removed = before - isopoints.Points.size() / 3;
-  isopoints.DroppedCount += removed;
-  slid.Dropped.clear();
-  return removed;
 }
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
@@ -558,16 +521,9 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   // On the SPH field a sample on the cloud's edge may lie up to a kernel support from the
   // surface beyond it (the free boundary): such a sample whose value crosses the isovalue (the
   // edge's are lower, their kernels cut) counts as near within that support more.
-  // And on the SPH field, whose points lie closer than the samples, a sample within its
-  // neighbourhood radius of the surface may change sides of the flood unmoved: the flood joins
-  // samples through their neighbourhoods, and there its paths run beside the level, through
-  // samples whose values lie near the isovalue (a noisy field's crossings join or cut them).
-  auto extraReach = [&](std::uint32_t i) {
+  auto edgeReach = [&](std::uint32_t i) {
     Eigen::Vector3d outward;
-    return !field
-      ? 0.0
-      : (OutwardOfCloud(geometry, i, outward) ? field->Support(i)
-                                              : std::max(0.0, geometry.RadiusOf(i) - margin));
+    return field && OutwardOfCloud(geometry, i, outward) ? field->Support(i) : 0.0;
   };
   const double largestMove = *std::max_element(moves.begin(), moves.end());
   // A sample between the old and the new level lies within the move there (plus the points'
@@ -581,7 +537,7 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
       double d2[Candidates];
       for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
       {
-        const double extra = extraReach(moved[m]);
+        const double extra = edgeReach(moved[m]);
         const double reach = largestMove + margin + extra;
         const std::size_t found =
           index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);

@@ -86,10 +86,6 @@ struct SlideResult
   std::vector<char> NearBandEdge;
   // Per point, when accepted: its BandDrift bound where it ended (the next slide's Bounds).
   std::vector<double> Bounds;
-  // On the SPH field, per point, when accepted: 1 where it found no level within its reach
-  // (left where it was, its move the reach it searched), to be removed (RemoveDroppedPoints)
-  // once the flood's check has counted it. Empty: none.
-  std::vector<char> Dropped;
   double LargestMove() const // of any point (0 without points)
   {
     return this->Moves.empty() ? 0.0 : *std::max_element(this->Moves.begin(), this->Moves.end());
@@ -116,26 +112,14 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
 /// The same on the SPH field (the points the refinement solved onto its level): each point is
 /// solved along its normal onto the field's new level `isoValue` within SPHMaximumMove kernel
 /// supports of the sample nearest to it (RefineIsopointsOnSPHField's step), the normal becoming
-/// the field's. A point is dropped (SlideResult::Dropped) where it finds no level within that
-/// reach, as the refinement drops it, or where the samples nearest to it do not lie on both
-/// sides of the new flood (unless they all lay inside the last flood, `lastInside`, too and
-/// still do: the free boundary, where the level lies beyond the cloud's outermost particles):
-/// on a field noisy at the particle scale a small bump of the surface closes when the isovalue
-/// rises (or a dimple when it falls), or is cut off the flood. Its move is that reach: every
-/// sample that changed sides of the flood about it must lie within it (FloodChangesNearPoints),
-/// as a closed bump's do; a component lost or a cavity closed that is larger leaves samples
-/// further. Refused when a point's level leaves the band (`drift`, SlideSettings::Drift).
+/// the field's. Refused as above when a point finds no level within that reach or the band
+/// (`drift`, SlideSettings::Drift), or when the samples nearest to it are not on both sides of
+/// the new flood, unless they all lay inside the last flood (`lastInside`) too and still do:
+/// the free boundary, where the level lies beyond the cloud's outermost particles.
 SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHField& field,
   double isoValue, const std::vector<char>& inside, const std::vector<char>& lastInside,
   const IsopointSettings& settings, const BandDrift* drift, IsopointSet& isopoints,
   const AbortCheck& aborted);
-
-/// Removes the points `slid` dropped (SlideResult::Dropped; a slide's points come first in
-/// `isopoints`, any added after them stay) from `isopoints`, from the result's per-point
-/// vectors (Moves, NearBandEdge, Bounds), from `drift`'s origins and from `kept` (per point,
-/// if not empty), keeping the others' order. Returns how many.
-std::size_t RemoveDroppedPoints(
-  SlideResult& slid, IsopointSet& isopoints, BandDrift& drift, std::vector<char>& kept);
 
 /// Whether every sample flooded in `before` and not in `after`, or the other way round, lies
 /// within its move (`moves`, per point) plus `margin` of one of the points that `points` indexes
@@ -147,12 +131,7 @@ std::size_t RemoveDroppedPoints(
 /// neighbourhoods are cut, has no surface). On the SPH `field` (null: the MLS fit) a sample on
 /// the cloud's edge (OutwardOfCloud) may lie up to its kernel support further: the surface
 /// beyond the edge (the free boundary) lies up to a support past the outermost particles, and
-/// their values, their kernels cut by the edge, may lie at the isovalue. Any other sample there
-/// may lie up to its neighbourhood radius from the points (when that exceeds `margin`: the
-/// points lie closer than the samples there): the flood joins samples through their
-/// neighbourhoods, and beside the level its paths run through samples whose values lie near the
-/// isovalue, which a field noisy at the particle scale crosses here and there, joining or
-/// cutting thin arms of the flood that the surface never showed.
+/// their values, their kernels cut by the edge, may lie at the isovalue.
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
   double margin, std::size_t& changed, vtkIdType particles, const SPHField* field = nullptr);

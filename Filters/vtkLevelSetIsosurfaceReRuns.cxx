@@ -501,25 +501,18 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   // A sample that changed sides lies between the old and the new level: within the way there
   // and the points' spacing (two cells) of a slid point. (The free boundary's points, shot
   // anew along the cloud's edge, count as moved the most, and as away from the band's edge.)
-  std::size_t pointCount = isopoints.Points.size() / 3;
+  const std::size_t pointCount = isopoints.Points.size() / 3;
   slid.Moves.resize(pointCount, slid.LargestMove());
   slid.NearBandEdge.resize(pointCount, 0);
   // One search index over the slid points, for this check, the splat radii and the Enclosed
   // table.
-  std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
+  const std::unique_ptr<lsi::PointCloudIndex> surfaceIndex =
     slid.Accepted ? lsi::IndexOfPoints(isopoints.Points) : nullptr;
   std::vector<char> keptPoints;
   double largestMove = 0.0;
   if (!this->AcceptSlide(*geometry, inside, slid, surfaceIndex.get(), keptPoints, largestMove))
   {
     return false;
-  }
-  if (!slid.Dropped.empty())
-  {
-    // The points that found no level (on the SPH field), counted by the flood's check, leave.
-    lsi::RemoveDroppedPoints(slid, isopoints, last.Drift, keptPoints);
-    pointCount = isopoints.Points.size() / 3;
-    surfaceIndex = lsi::IndexOfPoints(isopoints.Points);
   }
   // From here on the outputs are this run's.
   std::vector<double>& phi = last.Phi;

@@ -34,7 +34,6 @@
 #include <cmath>
 #include <iostream>
 #include <iterator>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -728,81 +727,6 @@ void TestShockTube(const std::string& path)
 }
 } // namespace
 
-// N equal-mass particles (total mass 1) drawn at random from an ellipsoidal Plummer sphere
-// (axes 1, 0.8, 0.6), with Particle Density's field (64 neighbours): noisy at the particle scale,
-// as a simulation's sparse regions are. A fixed generator, its draws turned into numbers here.
-vtkSmartPointer<vtkPolyData> NoisyPlummerSphere(vtkIdType count)
-{
-  std::mt19937_64 draws(11);
-  auto uniform = [&]() { return static_cast<double>(draws() >> 11) * 0x1.0p-53; };
-  const double pi = 3.14159265358979323846;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkDoubleArray> mass;
-  mass->SetName("mass");
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    const double q = 1.0 / std::sqrt(std::pow(0.99 * uniform(), -2.0 / 3.0) - 1.0);
-    const double z = 2.0 * uniform() - 1.0, phi = 2.0 * pi * uniform();
-    const double r = std::sqrt(1.0 - z * z);
-    points->InsertNextPoint(q * r * std::cos(phi), 0.8 * q * r * std::sin(phi), 0.6 * q * z);
-    mass->InsertNextValue(1.0 / static_cast<double>(count));
-  }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  cloud->GetPointData()->AddArray(mass);
-  vtkNew<vtkParticleDensity> density;
-  density->SetInputData(cloud);
-  density->SetNumberOfNeighbors(64);
-  density->Update();
-  auto particles = vtkSmartPointer<vtkPolyData>::New();
-  particles->ShallowCopy(density->GetOutput());
-  return particles;
-}
-
-// QuickIsoValueChanges on noisy data (the median density's surface of a random Plummer sphere):
-// a higher isovalue closes small bumps of the surface, whose points find the level nowhere along
-// their lines (dropped, as the method's refinement drops them), and cuts thin arms off the flood
-// outside the surface (which the method's evolution had smoothed away), and joins or cuts the
-// flood beside the surface, where its paths run through samples near the isovalue. A change
-// that moves 0.5%, 1%, 2% or 5% of the particles above the isovalue across it still slides: the
-// points on the field's new level, as many as the method's within 5%, enclosing its mass within
-// 0.5%.
-void TestQuickOnNoisyData()
-{
-  vtkSmartPointer<vtkPolyData> cloud = NoisyPlummerSphere(20000);
-  const Particles p =
-    ParticlesOf(cloud, "SmoothingLength", "mass", "Density", 1.0, lsi::SPHKernel::CubicSpline);
-  std::vector<double> values;
-  for (std::size_t i = 0; i < p.Mass.size(); ++i)
-  {
-    values.push_back(p.Mass[i] / p.Volume[i]);
-  }
-  std::sort(values.begin(), values.end());
-  const double iso = values[values.size() / 2], seed[3] = { 0, 0, 0 };
-  const std::vector<double> above(values.begin() + values.size() / 2 + 1, values.end());
-  for (const double fraction : { 0.005, 0.01, 0.02, 0.05 })
-  {
-    const double changed = above[static_cast<std::size_t>(fraction * above.size())];
-    const std::string what =
-      "noisy Plummer sphere, " + std::to_string(fraction * 100.0).substr(0, 3) + "% across";
-    QuickAndMethod runs(cloud, iso, changed, seed, 0.1);
-    const Scores s = Score(p, runs.Slid, changed, 400);
-    Report(what + ", slid", s, runs.Slid->GetNumberOfPoints());
-    Check(runs.Quick->GetSlidLastSurface(), what + ": the change slides the surface");
-    Check(s.MeanDistance < 1e-3 && s.MaxDistance < 1e-2,
-      what + ": slid points on the field's new level (mean < 0.001 H, max < 0.01 H)");
-    const double count = static_cast<double>(runs.Slid->GetNumberOfPoints());
-    std::cout << what << ": points slid " << count << ", method "
-              << runs.Method->GetNumberOfPoints() << "; enclosed mass slid "
-              << EnclosedMass(runs.Quick) << ", method " << EnclosedMass(runs.Full) << "\n";
-    Check(std::abs(count - runs.Method->GetNumberOfPoints()) < 0.05 * count,
-      what + ": as many points as the method's, within 5%");
-    Check(std::abs(EnclosedMass(runs.Quick) - EnclosedMass(runs.Full)) <
-        0.005 * EnclosedMass(runs.Full),
-      what + ": the slid surface encloses the method's mass within 0.5%");
-  }
-}
-
 int main(int argc, char* argv[])
 {
   if (argc < 3)
@@ -812,7 +736,6 @@ int main(int argc, char* argv[])
   }
   TestEvrard(argv[1]);
   TestShockTube(argv[2]);
-  TestQuickOnNoisyData();
   const int failures = lsi::test::Failures();
   std::cout << (failures ? "SPH field tests FAILED\n" : "SPH field tests passed\n");
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
