@@ -166,7 +166,8 @@ def main():
                     m.UpdatePipeline()
                     volume = [enclosed_volume(x) for x in (g, m)]
                     counts = [fetch(x).GetNumberOfPoints() for x in (g, m)]
-                    versus = (volume[0] / volume[1] - 1.0, counts[0] / max(1, counts[1]) - 1.0)
+                    versus = (volume[0] / volume[1] - 1.0 if volume[1] else float("nan"),
+                              counts[0] / max(1, counts[1]) - 1.0)
                     Delete(m)
                 Delete(g)
             points = vtk_to_numpy(out.GetPoints().GetData()) if out.GetNumberOfPoints() else []
