@@ -498,7 +498,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
-  double margin, std::size_t& changed, vtkIdType particles, const SPHField* field)
+  double margin, std::size_t& changed, vtkIdType particles)
 {
   const std::vector<std::uint32_t> moved =
     IndicesWhere<std::uint32_t>(geometry.NumberOfSamples, [&](std::size_t i) {
@@ -518,13 +518,6 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
   {
     return false; // (every point needs its move)
   }
-  // On the SPH field a sample on the cloud's edge may lie up to a kernel support from the
-  // surface beyond it (the free boundary): such a sample whose value crosses the isovalue (the
-  // edge's are lower, their kernels cut) counts as near within that support more.
-  auto edgeReach = [&](std::uint32_t i) {
-    Eigen::Vector3d outward;
-    return field && OutwardOfCloud(geometry, i, outward) ? field->Support(i) : 0.0;
-  };
   const double largestMove = *std::max_element(moves.begin(), moves.end());
   // A sample between the old and the new level lies within the move there (plus the points'
   // spacing) of the points that passed it; looked for among the few points nearest to it.
@@ -537,14 +530,13 @@ bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<cha
       double d2[Candidates];
       for (vtkIdType m = begin; m < end && near.load(std::memory_order_relaxed); ++m)
       {
-        const double extra = edgeReach(moved[m]);
-        const double reach = largestMove + margin + extra;
+        const double reach = largestMove + margin;
         const std::size_t found =
           index.NearestWithin(geometry.Position(moved[m]), k, reach * reach, ids, d2);
         bool passed = false;
         for (std::size_t j = 0; j < found && !passed; ++j)
         {
-          const double within = moves[ids[j]] + margin + extra;
+          const double within = moves[ids[j]] + margin;
           passed = d2[j] <= within * within;
         }
         if (!passed)

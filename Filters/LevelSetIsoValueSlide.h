@@ -128,13 +128,13 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
 /// the slid surface, or further from it than it moved there. `changed` receives how many samples
 /// changed. Only the samples of the first `particles` input points count: in a periodic box the
 /// originals (each image is flooded as its original is, and the images' outer edge, whose
-/// neighbourhoods are cut, has no surface). On the SPH `field` (null: the MLS fit) a sample on
-/// the cloud's edge (OutwardOfCloud) may lie up to its kernel support further: the surface
-/// beyond the edge (the free boundary) lies up to a support past the outermost particles, and
-/// their values, their kernels cut by the edge, may lie at the isovalue.
+/// neighbourhoods are cut, has no surface). (On the SPH field the cloud's outermost particles,
+/// their kernels cut by the edge, may cross the isovalue a support from the free boundary's
+/// surface; such a change is refused too: the method's surface then leaves the edge in places,
+/// which the slid surface does not follow.)
 bool FloodChangesNearPoints(const Neighborhoods& geometry, const std::vector<char>& before,
   const std::vector<char>& after, const PointCloudIndex* points, const std::vector<double>& moves,
-  double margin, std::size_t& changed, vtkIdType particles, const SPHField* field = nullptr);
+  double margin, std::size_t& changed, vtkIdType particles);
 
 /// Whether no sample beyond the band the last full run resolved (|phi| at least `halfWidth`,
 /// clamped: its distance to the surface unknown) lies within its own neighbourhood radius plus

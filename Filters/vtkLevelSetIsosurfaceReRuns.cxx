@@ -294,7 +294,7 @@ bool vtkLevelSetIsosurface::AcceptSlide(const lsi::Neighborhoods& geometry,
   // (A rank without points, whose index is null, accepts only if none of its samples changed.)
   const bool changesNear = slid.Accepted &&
     lsi::FloodChangesNearPoints(geometry, last.Inside, inside, surfaceIndex, slid.Moves,
-      2.0 * settings.CellSize, changed, counted, last.Field.get());
+      2.0 * settings.CellSize, changed, counted);
   // (The surface lies within about half its points' spacing of them: one cell is the margin.)
   const bool clampedClear = changesNear &&
     lsi::ClampedSamplesClear(geometry, last.Phi, last.Drift.HalfWidth, isopoints.Points,

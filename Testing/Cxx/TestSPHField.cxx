@@ -702,7 +702,12 @@ void TestShockTube(const std::string& path)
     "Shock tube: as many slid points as the method's (5%), enclosing its mass (0.5%)");
   // At half the median density the surface runs along the walls of the dense side, whose
   // outermost particles lie at the isovalue: a change that moves 0.1% of the particles above
-  // it across it flips some of them, a support from the surface beyond them, and still slides.
+  // it across it flips some of them. The method's surface then leaves the walls in places (the
+  // cut kernels put the level inside the outer layer), which a slid surface does not follow:
+  // the quick change runs the method, and gives the fresh filter's output. (Flips a support
+  // from the surface were once let through: `pvpython Scripts/sph_reruns.py PLUGIN DATA 1 0.01`
+  // then printed the shock tube slid, enclosing 2.4% more volume than the method, with a third
+  // fewer points.)
   std::vector<double> values(static_cast<std::size_t>(tube->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < tube->GetNumberOfPoints(); ++i)
   {
@@ -721,9 +726,18 @@ void TestShockTube(const std::string& path)
   auto slidAlong = Run(tube, nearWalls, seed, 0.05, vtkLevelSetIsosurface::ISOPOINTS, walls);
   const Scores w = Score(p, slidAlong, nearWalls, 400);
   Report(
-    "Shock tube along the walls, slid by 0.1% of the particles", w, slidAlong->GetNumberOfPoints());
-  Check(walls->GetSlidLastSurface() && w.MeanDistance < 1e-3,
-    "Shock tube along the walls: a change flipping the walls' outermost particles slides");
+    "Shock tube along the walls, 0.1% of the particles across", w, slidAlong->GetNumberOfPoints());
+  vtkNew<vtkLevelSetIsosurface> fresh;
+  auto method = Run(tube, nearWalls, seed, 0.05, vtkLevelSetIsosurface::ISOPOINTS, fresh);
+  std::cout << "Shock tube along the walls: slid " << walls->GetSlidLastSurface() << ", "
+            << slidAlong->GetNumberOfPoints() << " points, the method's "
+            << method->GetNumberOfPoints() << "; enclosed mass " << EnclosedMass(walls)
+            << ", the method's " << EnclosedMass(fresh) << "\n";
+  Check(!walls->GetSlidLastSurface() &&
+      slidAlong->GetNumberOfPoints() == method->GetNumberOfPoints() &&
+      EnclosedMass(walls) == EnclosedMass(fresh) && w.MeanDistance < 1e-3,
+    "Shock tube along the walls: a change flipping the walls' outermost particles runs the "
+    "method (the fresh filter's points and mass)");
 }
 } // namespace
 
