@@ -133,10 +133,11 @@ public:
    * spacings of move in all at the default parameters). Otherwise (a larger change, a component
    * joined or lost, a cavity opened) the method runs in full. (On the SPH field, where the surface
    * lies beyond the edge of the particle cloud, the free boundary, a point whose nearest particles
-   * lay all inside the last flood and still do may slide, and a particle on the cloud's edge may
-   * change sides up to its kernel support from the surface.) In a periodic box every point
-   * slides, those beyond the faces too, and the kept cell is cut anew. Under MPI (in a periodic
-   * box too) every rank slides the points it found, and all slide or none. A point's move counts
+   * lay all inside the last flood and still do may slide; a particle on the cloud's edge that
+   * changes sides away from the slid surface runs the method, whose surface may then leave the
+   * edge.) In a periodic box every point slides, those beyond the faces too, and the kept cell
+   * is cut anew. Under MPI (in a periodic box too) every rank slides the points it found, and
+   * all slide or none. A point's move counts
    * from where the last full run put it: a slider dragged back and forth keeps sliding. The points
    * then lie on the same level as the full method's, as many as the last run's (crowding where the
    * surface shrank); the LevelSet array is the last one moved by the change over the data's
