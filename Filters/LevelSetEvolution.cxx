@@ -89,7 +89,9 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
       const double slope =
         this->Geometry.GradientAt(i, [&](std::size_t m) { return f[ids[m]]; }).norm();
       // g = (f - f_iso) / |grad f|, bounded like phi where f is flat.
-      const double target = slope > std::abs(f[i]) / limit ? f[i] / slope : Sign(f[i]) * limit;
+      const double offset = this->TargetOffset(i);
+      const double target =
+        slope > std::abs(offset) / limit ? offset / slope : Sign(offset) * limit;
       this->NewValues[k] =
         RosenthalLinsenValue(this->Phi[i], Eigen::Vector3d(&this->Gradient[3 * i]).norm(), target,
           settings.RelaxationRate, settings.MaximumStep);
@@ -106,7 +108,7 @@ void LevelSetEvolution::Evolve(const EvolutionSettings& settings)
         ? this->Geometry.DivergenceAt(i, [&](std::size_t m) { return distanceFlux(ids[m]); })
         : 0.0;
       this->NewValues[k] =
-        EvolvedValue(this->Phi[i], Sign(this->DataOffsets[i]), curvature, regularization, c);
+        EvolvedValue(this->Phi[i], Sign(this->TargetOffset(i)), curvature, regularization, c);
     });
   }
 

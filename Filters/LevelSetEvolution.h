@@ -55,10 +55,24 @@ public:
   /// rule count the owned samples of every rank, so every rank stops at the same iteration.
   void SetCommunicator(const Communicator& ranks) { this->Ranks = &ranks; }
 
+  /// The flood's component (one flag per sample: inside at the start), or none (the paper's
+  /// seed spheres). With it, a sample above the isovalue outside the component is pushed outward
+  /// like one below: otherwise the forcing term would pull in every other component of
+  /// f > f_iso that comes within the band (2 eps, several spacings) of the front, and on noisy
+  /// data each one joined brings the next within reach. The component's own samples, and every
+  /// sample below the isovalue, keep the sign of f - f_iso. Must outlive Run.
+  void SetComponent(const std::vector<char>& inside) { this->Component = &inside; }
+
 private:
   void ComputeGradients(const std::vector<std::size_t>& where, const std::vector<double>& values);
   void Evolve(const EvolutionSettings& settings);
   void Measure(const EvolutionSettings& settings, IterationRecord& record);
+  /// f_i - f_iso, negated above the isovalue outside the component (SetComponent).
+  double TargetOffset(std::size_t i) const
+  {
+    const double offset = this->DataOffsets[i];
+    return offset > 0.0 && this->Component && !(*this->Component)[i] ? -offset : offset;
+  }
 
   const Neighborhoods& Geometry;
   const std::vector<double>& DataOffsets;
@@ -73,6 +87,7 @@ private:
   UninitializedVector<char> InitiallyPositive, HasChangedSign; // written in Run's first loop
   bool HasConverged = false;
   const Communicator* Ranks = &SingleProcess();
+  const std::vector<char>* Component = nullptr;
 };
 
 } // namespace lsi

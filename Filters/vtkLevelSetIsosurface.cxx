@@ -287,7 +287,15 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   last.DataOffsets = std::vector<double>(); // (this run's, moved there at its end: no copy)
   last.Spacing = settings.Spacing;
   vtkNew<vtkTable> iterations = lsi::EmptyConvergenceTable();
-  if (!this->Evolve(*geometry, dataOffsets, settings, phi, iterations))
+  // The flood's component: the evolution smooths its front and joins no other component.
+  std::vector<char> flooded;
+  if (this->Initialization == FLOOD && !last.QuickCheck)
+  {
+    flooded = lsi::LastOutputs::InsideOf(phi);
+  }
+  const std::vector<char>* component =
+    this->Initialization != FLOOD ? nullptr : (last.QuickCheck ? &last.Inside : &flooded);
+  if (!this->Evolve(*geometry, dataOffsets, component, settings, phi, iterations))
   {
     return false;
   }

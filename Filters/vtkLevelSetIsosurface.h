@@ -695,8 +695,11 @@ private:
     std::vector<double>& phi);
   bool BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field);
+  /// (component: the flood's inside at the start, which the evolution keeps to; null with the
+  /// seed spheres' start.)
   bool Evolve(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations);
+    const std::vector<char>* component, const lsi::EvolutionSettings& settings,
+    std::vector<double>& phi, vtkTable* iterations);
   /// (phi: the evolved level set, changed meanwhile and put back before it returns.)
   bool ExtractIsopoints(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     std::vector<double>& phi, const lsi::SurfaceScale& scale, const lsi::SPHField* field,

@@ -287,12 +287,16 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
 }
 
 bool vtkLevelSetIsosurface::Evolve(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-  std::vector<double>& phi, vtkTable* iterations)
+  const std::vector<double>& dataOffsets, const std::vector<char>* component,
+  const lsi::EvolutionSettings& settings, std::vector<double>& phi, vtkTable* iterations)
 {
   const auto start = Clock::now();
   lsi::LevelSetEvolution evolution(geometry, dataOffsets, phi);
   evolution.SetCommunicator(*this->Internal->Ranks);
+  if (component)
+  {
+    evolution.SetComponent(*component);
+  }
   const lsi::AbortCheck progress = this->Stage(EvolutionStage);
   const bool finished = evolution.Run(
     settings,
