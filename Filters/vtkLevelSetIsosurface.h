@@ -393,8 +393,11 @@ public:
   /**
    * How phi starts. FLOOD (default): the samples with f > IsoValue connected to the seeds
    * through the neighbour graph are the inside, and phi starts as the signed distance to their
-   * boundary, so the evolution only smooths the front (a few iterations instead of tens).
-   * SEED_SPHERES: the paper's start, the signed distance to the seed spheres.
+   * boundary, so the evolution only smooths the front (a few iterations instead of tens), and
+   * keeps to that component: samples above IsoValue that the flood did not reach count as
+   * outside, so another component near the front (a clump a few spacings away) is never pulled
+   * in. SEED_SPHERES: the paper's start, the signed distance to the seed spheres; the front then
+   * grows to every component of f > IsoValue it comes within its band (2 eps) of.
    */
   vtkSetClampWarnMacro(Initialization, int, SEED_SPHERES, FLOOD);
   vtkGetMacro(Initialization, int);

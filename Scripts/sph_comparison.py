@@ -22,7 +22,9 @@ smoothing length h (the file's own h of the particle nearest the point):
   cover     fraction of the true component's vertices within h/2 of the output (points for
             isopoints, polygons for splats and meshes), and the largest such distance;
   edges     mean distance of the midpoints of the output polygons' edges (splats, or the grid
-            routes' triangles) to the level: the rendered surface between its vertices.
+            routes' triangles) to the level: the rendered surface between its vertices;
+  off       fraction of the output's points further than h/2 from the true component's
+            vertices: surface of another component (joined to the seeded one) or stray.
 Prints a table per case and writes JSON."""
 import json
 import os
@@ -187,14 +189,15 @@ def used_points(poly):
 
 
 class Scorer:
-    def __init__(self, truth, iso, h_file, x, seed, bounds_pad, box=None):
+    def __init__(self, truth, iso, h_file, x, seed, bounds_pad, box=None, near=None):
         self.truth, self.iso, self.x, self.box = truth, iso, x, box
         self.h_tree = cKDTree(x)
         self.h_file = h_file
         # The truth: SPH field on a fine grid around the particles above a third of the
-        # isovalue, contoured, vertices moved onto the exact level.
+        # isovalue (or those `near` marks), contoured, vertices moved onto the exact level.
         rho_at_particles, _ = truth.evaluate(x)
-        near = rho_at_particles > iso / 3.0
+        if near is None:
+            near = rho_at_particles > iso / 3.0
         if not near.any():
             near[:] = True
         at_iso = np.abs(rho_at_particles - iso) < 0.5 * abs(iso)
@@ -226,6 +229,15 @@ class Scorer:
         self.whole_locator.SetDataSet(whole)
         self.whole_locator.BuildLocator()
         self.region_points = points_of(region)[used_points(region)]
+        self.region_tree = cKDTree(self.wrap(self.region_points),
+                                   boxsize=None if box is None else box)
+
+    def wrap(self, points):
+        """Into the periodic cell [0, box) (unchanged without a box)."""
+        if self.box is None:
+            return points
+        wrapped = np.mod(points, self.box)
+        return np.where(wrapped >= self.box, wrapped - self.box, wrapped)
 
     def local_h(self, p):
         _, nearest = self.h_tree.query(p)
@@ -291,13 +303,34 @@ class Scorer:
         else:
             gap, _ = cKDTree(points).query(self.region_points)
         gap = gap / self.local_h(self.region_points)
+        # Points off the true component (the truth's vertices lie a tenth of a support apart).
+        off, _ = self.region_tree.query(self.wrap(points))
+        off = off / self.local_h(points)
         result = dict(points=int(len(points)), mean_distance_h=float(d.mean()),
                       max_distance_h=float(d.max()), mean_normal_deg=float(angle.mean()),
-                      covered_fraction=float((gap <= 0.5).mean()), max_gap_h=float(gap.max()))
+                      covered_fraction=float((gap <= 0.5).mean()), max_gap_h=float(gap.max()),
+                      off_fraction=float((off > 0.5).mean()))
         if between is not None:
             result["mean_edge_midpoint_distance_h"] = float(between.mean())
             result["max_edge_midpoint_distance_h"] = float(between.max())
         return result
+
+
+def seeded_particles(x, values, iso, seed, k=64):
+    """The particles above the isovalue connected to the one nearest the seed through their k
+    nearest neighbours: where the seeded component lies, when the particles above a third of
+    the isovalue fill the whole volume (a nearly uniform box)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    above = np.flatnonzero(values > iso)
+    _, start = cKDTree(x[above]).query(seed)
+    _, lists = cKDTree(x[above]).query(x[above], k=min(k + 1, len(above)))
+    rows = np.repeat(np.arange(len(above)), lists.shape[1])
+    graph = coo_matrix((np.ones(rows.size), (rows, lists.ravel())), shape=(len(above),) * 2)
+    _, label = connected_components(graph, directed=False)
+    near = np.zeros(len(x), dtype=bool)
+    near[above[label == label[start]]] = True
+    return near
 
 
 def edge_midpoints(poly, limit=200000):
@@ -370,6 +403,10 @@ def main():
         "changa-galaxy": (
             lambda: tipsy_with_density(os.path.join(data, "changa_run581.20000"), ["Stars"]),
             "ChaNGa galaxy stars, 5,321 particles, density by SPH summation: clustered"),
+        "changa-cube300": (
+            lambda: tipsy_with_density(os.path.join(data, "changa_cube300.tbin"), ["DarkMatter"]),
+            "ChaNGa cosmological box, 110,592 dark-matter particles at t = 0.05, density by SPH "
+            "summation: nearly uniform; the densest tenth, clumps near one another"),
     }
 
     def hdf5_or_tipsy(path):
@@ -427,13 +464,19 @@ def main():
         if name == "swift-robertsflow-vz":
             iso = 0.7  # vz spans +-1.43: tubes around the flow's cells
         seed = x[np.argmax(summed)]
+        near = None
+        if name == "changa-cube300":
+            # The densest tenth (an overdensity): separate clumps, some a fraction of a support
+            # apart. The truth's grid covers the seeded clump's particles.
+            iso = float(np.quantile(summed, 0.9))
+            near = seeded_particles(x, summed, iso, seed)
         if name == "evrard-summed":
             iso = 1.0 / (2 * PI * 0.5)  # analytic surface r = 0.5
             seed = np.zeros(3)
         print("  isovalue %.6g, seed (%.4g, %.4g, %.4g), kernel %s, H = %g h" % (
             iso, seed[0], seed[1], seed[2], kernel, factor), flush=True)
         t = time.time()
-        scorer = Scorer(truth, iso, h, x, seed, 0.0, box)
+        scorer = Scorer(truth, iso, h, x, seed, 0.0, box, near)
         print("  truth: grid step %.3g (median support at the isovalue %.3g), %d vertices in "
               "the seeded component, %.1f s" % (scorer.grid_step, scorer.H_iso,
                                                 len(scorer.region_points), time.time() - t),
@@ -557,18 +600,19 @@ def yt_route(x, m, H, rho, a, kernel, scorer, iso, seed, box):
 
 
 def print_table(rows):
-    print("  %-28s %9s %10s %10s %9s %8s %9s %10s %7s" % (
+    print("  %-28s %9s %10s %10s %9s %8s %9s %10s %7s %7s" % (
         "output", "points", "mean d/h", "max d/h", "normal", "cover", "max gap", "edges d/h",
-        "s"))
+        "off", "s"))
     for label, r in rows.items():
         if not r.get("points"):
             print("  %-28s %9s %s" % (label, r.get("points"), r.get("note", "no surface")))
             continue
         edges = r.get("mean_edge_midpoint_distance_h")
-        print("  %-28s %9d %10.2e %10.2e %8.2f° %7.1f%% %8.3f %10s %7.2f" % (
+        print("  %-28s %9d %10.2e %10.2e %8.2f° %7.1f%% %8.3f %10s %6.1f%% %7.2f" % (
             label, r["points"], r["mean_distance_h"], r["max_distance_h"], r["mean_normal_deg"],
             100 * r["covered_fraction"], r["max_gap_h"],
-            "-" if edges is None else "%.2e" % edges, r.get("seconds", 0.0)), flush=True)
+            "-" if edges is None else "%.2e" % edges, 100 * r["off_fraction"],
+            r.get("seconds", 0.0)), flush=True)
 
 
 if __name__ == "__main__":
