@@ -26,7 +26,7 @@ namespace
 // `flooded`.
 void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
-  SerialAbortCheck& stop)
+  SerialAbortCheck& stop, const FloodEdgeCheck& mayCross)
 {
   const std::size_t n = geometry.NumberOfSamples;
   if (flooded.size() != n)
@@ -43,10 +43,10 @@ void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets
   result.SeedSamples = queue.size();
   BreadthFirst(
     geometry, queue,
-    [&](std::uint32_t j) {
-      if (flooded[j] || !(dataOffsets[j] > 0.0))
+    [&](std::uint32_t j, std::uint32_t from) {
+      if (flooded[j] || !(dataOffsets[j] > 0.0) || (mayCross && !mayCross(from, j)))
       {
-        return Visit::Skip;
+        return Visit::Skip; // (refused from here, j may still be reached from elsewhere)
       }
       flooded[j] = 1;
       return Visit::Enqueue;
@@ -286,10 +286,10 @@ private:
 
 void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
-  const AbortCheck& aborted)
+  const AbortCheck& aborted, const FloodEdgeCheck& mayCross)
 {
   SerialAbortCheck stop(aborted);
-  Flood(geometry, dataOffsets, inSeed, flooded, result, stop);
+  Flood(geometry, dataOffsets, inSeed, flooded, result, stop, mayCross);
   result.Aborted = stop.WasStopped();
 }
 

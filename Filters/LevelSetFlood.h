@@ -13,6 +13,8 @@
 #include "LevelSetNeighborhoods.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace lsi
@@ -24,6 +26,11 @@ struct FloodResult
   bool Aborted = false;        // stopped on request; the inside is then incomplete
 };
 
+/// Whether the flood may go from sample `from` to its neighbour `to`, both above the isovalue
+/// (none: always). On the SPH field the field between them may dip below the isovalue: two
+/// clumps a neighbourhood apart are then two components (FieldStaysAboveBetween).
+using FloodEdgeCheck = std::function<bool(std::uint32_t from, std::uint32_t to)>;
+
 /// The flood: marks in `flooded` (one flag per sample) the samples connected to the seeds
 /// (`inSeed`) through neighbours with f > f_iso, where `dataOffsets` holds f - f_iso per
 /// sample. It goes on from what `flooded` already holds (empty: nothing yet): only the seeds
@@ -33,7 +40,7 @@ struct FloodResult
 /// seeds with f > f_iso it started from (only this call's).
 void FloodFurther(const Neighborhoods& geometry, const std::vector<double>& dataOffsets,
   const std::vector<char>& inSeed, std::vector<char>& flooded, FloodResult& result,
-  const AbortCheck& aborted);
+  const AbortCheck& aborted, const FloodEdgeCheck& mayCross = nullptr);
 
 /// The flood's inside from its reach (`flooded`, FloodFurther): outside pockets of fewer than
 /// `bubbleSize` samples enclosed by it are noise below the neighbourhood scale, and are filled

@@ -11,7 +11,7 @@ namespace lsi
 bool FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
   const std::vector<vtkIdType>& original, vtkIdType originalCount,
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
-  double& seedSamples, const AbortCheck& aborted)
+  double& seedSamples, const AbortCheck& aborted, const FloodEdgeCheck& mayCross)
 {
   // The flood's reach grows round by round (each round floods only from its new seeds); the
   // pockets are filled once, in the whole reach.
@@ -21,12 +21,12 @@ bool FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
   // adds at least one seed, which is never added again: the rounds end.
   auto floodHere = [&]() {
     FloodResult flood;
-    FloodFurther(geometry, dataOffsets, inSeed, flooded, flood, aborted);
+    FloodFurther(geometry, dataOffsets, inSeed, flooded, flood, aborted, mayCross);
     while (!flood.Aborted && !original.empty() &&
       SeedImagesOfReached(original, originalCount, dataOffsets, reached, inSeed))
     {
       FloodResult again;
-      FloodFurther(geometry, dataOffsets, inSeed, flooded, again, aborted);
+      FloodFurther(geometry, dataOffsets, inSeed, flooded, again, aborted, mayCross);
       flood.Aborted = again.Aborted;
     }
     return flood;

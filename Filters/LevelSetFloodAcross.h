@@ -8,6 +8,7 @@
 #define LevelSetFloodAcross_h
 
 #include "LevelSetCommunicator.h"
+#include "LevelSetFlood.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
 
@@ -28,11 +29,12 @@ namespace lsi
 /// adds seeds that are never added again, so the rounds end, after at most as many as there are
 /// seeds to add. `seedSamples`: the first flood's seed samples with f > f_iso, summed over the
 /// ranks. The ghosts' sides are left as this rank's flood found them. False (on every rank)
-/// when some rank's flood stopped on request: the inside is then incomplete.
+/// when some rank's flood stopped on request: the inside is then incomplete. `mayCross`: which
+/// neighbours above the isovalue the flood goes between (FloodFurther; none: all).
 bool FloodAcross(const Neighborhoods& geometry, const Communicator& ranks,
   const std::vector<vtkIdType>& original, vtkIdType originalCount,
   const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
-  double& seedSamples, const AbortCheck& aborted);
+  double& seedSamples, const AbortCheck& aborted, const FloodEdgeCheck& mayCross = nullptr);
 
 } // namespace lsi
 

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -329,7 +330,8 @@ enum class Visit
 };
 
 /// Breadth-first search over the neighbour graph: for each sample of `queue` in turn (the
-/// starting samples first, then those appended), `decide(j)` for each of its neighbours j.
+/// starting samples first, then those appended), `decide(j)` for each of its neighbours j (or
+/// `decide(j, from)`, from the sample whose list holds j, when it takes both).
 /// Returns false when `decide` stopped it or `stop` said to abort.
 template <typename Decide>
 bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& queue, Decide&& decide,
@@ -362,10 +364,19 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
     {
       continue;
     }
-    const std::uint32_t* ids = geometry.NeighborsOf(queue[head]);
+    const std::uint32_t from = queue[head];
+    const std::uint32_t* ids = geometry.NeighborsOf(from);
     for (int m = 1; m < geometry.Stride; ++m)
     {
-      const Visit visit = decide(ids[m]);
+      Visit visit;
+      if constexpr (std::is_invocable_v<Decide&, std::uint32_t, std::uint32_t>)
+      {
+        visit = decide(ids[m], from);
+      }
+      else
+      {
+        visit = decide(ids[m]);
+      }
       if (visit == Visit::Stop)
       {
         return false;

@@ -263,7 +263,7 @@ bool vtkLevelSetIsosurface::Execute(vtkPointSet* input, vtkPolyData* surfaceOutp
   const lsi::EvolutionSettings settings = this->ChooseEvolutionSettings(scale);
   this->InputSeconds += SecondsSince(inputStart);
   std::vector<double> phi;
-  if (!this->Initialize(input, *geometry, dataOffsets, settings, phi))
+  if (!this->Initialize(input, *geometry, dataOffsets, field.get(), settings, phi))
   {
     return false;
   }

@@ -392,7 +392,9 @@ public:
   ///@{
   /**
    * How phi starts. FLOOD (default): the samples with f > IsoValue connected to the seeds
-   * through the neighbour graph are the inside, and phi starts as the signed distance to their
+   * through the neighbour graph are the inside (on the SPH field, not across a dip of the field
+   * below IsoValue between two neighbours near the surface: LevelSetFloodOnField.h), and phi
+   * starts as the signed distance to their
    * boundary, so the evolution only smooths the front (a few iterations instead of tens), and
    * keeps to that component: samples above IsoValue that the flood did not reach count as
    * outside, so another component near the front (a clump a few spacings away) is never pulled
@@ -644,7 +646,7 @@ private:
   // run's geometry (and its points: their bounds and, for the same spheres, the samples in them
   // are kept); false if the seeds are refused or reach no sample above the isovalue.
   bool FloodFromSeeds(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    std::vector<char>& inside);
+    const lsi::SPHField* field, std::vector<char>& inside);
 
   vtkLevelSetIsosurface(const vtkLevelSetIsosurface&) = delete;
   void operator=(const vtkLevelSetIsosurface&) = delete;
@@ -672,8 +674,11 @@ private:
   // The flood of the seeds' component (`inside`), the method's and a quick re-run's, across the
   // periodic box's faces and the ranks (LevelSetFloodAcross.h); seeds are added to `inSeed`.
   // False if aborted.
+  /// (field: the SPH field, whose dips below IsoValue between neighbours the flood does not
+  /// cross; null on point data.)
   bool FloodComponent(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
-    std::vector<char>& inSeed, std::vector<char>& inside, double& seedSamples);
+    const lsi::SPHField* field, std::vector<char>& inSeed, std::vector<char>& inside,
+    double& seedSamples);
   void KeepOwnedIsopoints(const lsi::Neighborhoods& geometry, lsi::IsopointSet& isopoints);
   void WarnIfSuspect(const lsi::Neighborhoods& geometry, const std::vector<double>& dataOffsets,
     const std::vector<double>& phi, const lsi::IsopointSet& isopoints);
@@ -694,8 +699,8 @@ private:
   const lsi::Neighborhoods* FindNeighborhoods(vtkPoints* points, bool duplicatesAllowed);
   lsi::EvolutionSettings ChooseEvolutionSettings(const lsi::SurfaceScale& scale);
   bool Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-    const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-    std::vector<double>& phi);
+    const std::vector<double>& dataOffsets, const lsi::SPHField* field,
+    const lsi::EvolutionSettings& settings, std::vector<double>& phi);
   bool BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
     const std::vector<double>& values, std::unique_ptr<lsi::SPHField>& field);
   /// (component: the flood's inside at the start, which the evolution keeps to; null with the

@@ -346,7 +346,7 @@ void vtkLevelSetIsosurface::KeepForSlides(vtkPointSet* work, const lsi::Neighbor
 }
 
 bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, std::vector<char>& inside)
+  const std::vector<double>& dataOffsets, const lsi::SPHField* field, std::vector<char>& inside)
 {
   // Seeds the method would refuse go the long way, which reports them.
   std::vector<std::pair<const char*, double>> seedNumbers = {
@@ -388,7 +388,7 @@ bool vtkLevelSetIsosurface::FloodFromSeeds(const lsi::Neighborhoods& geometry,
   std::vector<char> added = addsSeeds ? last.InSeed : std::vector<char>();
   std::vector<char>& inSeed = addsSeeds ? added : last.InSeed;
   double seedSamples = 0.0;
-  if (!this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples))
+  if (!this->FloodComponent(geometry, dataOffsets, field, inSeed, inside, seedSamples))
   {
     return false; // aborted
   }
@@ -429,9 +429,22 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSe
   }
   const LastRanksScope lastRanks(*this->Internal);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
-  // (The isovalue and the data are those of the last run, which checked them.)
+  // (The isovalue and the data are those of the last run, which checked them.) On the SPH field
+  // the flood reads it between samples: the one kept for quick changes, else built again.
+  std::unique_ptr<lsi::SPHField> rebuilt;
+  if (last.OnField && !last.Field)
+  {
+    vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
+    rebuilt = this->RebuildSPHField(work, *geometry);
+  }
+  const lsi::SPHField* field = last.Field ? last.Field.get() : rebuilt.get();
+  if (!ranks.All(!last.OnField || field))
+  {
+    return false;
+  }
   std::vector<char> inside;
-  const bool flooded = this->FloodFromSeeds(*geometry, last.DataOffsets, inside);
+  const bool flooded =
+    this->FloodFromSeeds(*geometry, last.DataOffsets, last.OnField ? field : nullptr, inside);
   if (!ranks.All(flooded && inside == last.Inside && this->SameKeptCell()))
   {
     return false;
@@ -484,7 +497,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const double inputSeconds = lsi::SecondsSince(start);
   start = lsi::Clock::now();
   std::vector<char> inside;
-  if (!this->FloodFromSeeds(*geometry, dataOffsets, inside)) // (decided with the other ranks)
+  if (!ranks.All(!last.OnField || last.Field) ||
+    !this->FloodFromSeeds(*geometry, dataOffsets, last.OnField ? last.Field.get() : nullptr,
+      inside)) // (decided with the other ranks)
   {
     vtkDebugMacro(<< "quick isovalue change: refused, the seeds flood nothing");
     return false;

@@ -11,6 +11,7 @@
 #include "LevelSetEvolution.h"
 #include "LevelSetFlood.h"
 #include "LevelSetFloodAcross.h"
+#include "LevelSetFloodOnField.h"
 #include "LevelSetInput.h"
 #include "LevelSetIsopoints.h"
 #include "LevelSetLastOutputs.h"
@@ -121,8 +122,8 @@ lsi::RequestedParameters vtkLevelSetIsosurface::RequestedParameters() const
 }
 
 bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, const lsi::EvolutionSettings& settings,
-  std::vector<double>& phi)
+  const std::vector<double>& dataOffsets, const lsi::SPHField* field,
+  const lsi::EvolutionSettings& settings, std::vector<double>& phi)
 {
   const auto start = Clock::now();
   // (Its loops check for abort without reporting progress: the stage's start is reported here,
@@ -174,7 +175,7 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
     last.InSeed = seeds.InSeed;
     std::vector<char> inSeed = seeds.InSeed, inside;
     double seedSamples = 0.0;
-    if (!this->FloodComponent(geometry, dataOffsets, inSeed, inside, seedSamples))
+    if (!this->FloodComponent(geometry, dataOffsets, field, inSeed, inside, seedSamples))
     {
       return false;
     }
@@ -204,8 +205,8 @@ bool vtkLevelSetIsosurface::Initialize(vtkPointSet* input, const lsi::Neighborho
 }
 
 bool vtkLevelSetIsosurface::FloodComponent(const lsi::Neighborhoods& geometry,
-  const std::vector<double>& dataOffsets, std::vector<char>& inSeed, std::vector<char>& inside,
-  double& seedSamples)
+  const std::vector<double>& dataOffsets, const lsi::SPHField* field, std::vector<char>& inSeed,
+  std::vector<char>& inside, double& seedSamples)
 {
   // Each rank floods its samples and ghosts, across the periodic box's faces and the ranks:
   // the component is then the serial one.
@@ -213,8 +214,12 @@ bool vtkLevelSetIsosurface::FloodComponent(const lsi::Neighborhoods& geometry,
   const std::vector<vtkIdType> original = internal.Box.Enabled
     ? lsi::OriginalIds(geometry, internal.OriginalCount, internal.ImageOf)
     : std::vector<vtkIdType>();
+  // On the SPH field, not across its dips between neighbours (LevelSetFloodOnField.h).
+  const lsi::FloodEdgeCheck mayCross = field
+    ? lsi::FieldStaysAboveBetween(geometry, *field, dataOffsets, this->IsoValue)
+    : lsi::FloodEdgeCheck();
   return lsi::FloodAcross(geometry, *internal.Ranks, original, internal.OriginalCount, dataOffsets,
-    inSeed, inside, seedSamples, this->Stage(InitializationStage));
+    inSeed, inside, seedSamples, this->Stage(InitializationStage), mayCross);
 }
 
 bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
