@@ -18,7 +18,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -329,6 +328,20 @@ enum class Visit
   Stop     // end the search
 };
 
+/// `decide(j, from)` where it takes both, else `decide(j)` (overloads, not `if constexpr`: the
+/// fuzz targets' clang builds C++14).
+template <typename Decide>
+auto DecideVisit(Decide& decide, std::uint32_t j, std::uint32_t from, int)
+  -> decltype(decide(j, from))
+{
+  return decide(j, from);
+}
+template <typename Decide>
+auto DecideVisit(Decide& decide, std::uint32_t j, std::uint32_t, long) -> decltype(decide(j))
+{
+  return decide(j);
+}
+
 /// Breadth-first search over the neighbour graph: for each sample of `queue` in turn (the
 /// starting samples first, then those appended), `decide(j)` for each of its neighbours j (or
 /// `decide(j, from)`, from the sample whose list holds j, when it takes both).
@@ -368,15 +381,7 @@ bool BreadthFirst(const Neighborhoods& geometry, std::vector<std::uint32_t>& que
     const std::uint32_t* ids = geometry.NeighborsOf(from);
     for (int m = 1; m < geometry.Stride; ++m)
     {
-      Visit visit;
-      if constexpr (std::is_invocable_v<Decide&, std::uint32_t, std::uint32_t>)
-      {
-        visit = decide(ids[m], from);
-      }
-      else
-      {
-        visit = decide(ids[m]);
-      }
+      const Visit visit = DecideVisit(decide, ids[m], from, 0);
       if (visit == Visit::Stop)
       {
         return false;
