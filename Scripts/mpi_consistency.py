@@ -52,6 +52,8 @@ def run(plugin, data, out, distribute, only):
         # The densest tenth of the box: clumps near one another, which the flood tells apart by
         # the SPH field between neighbours (LevelSetFloodOnField), on each rank as in one process.
         ("cube300-clumps", lambda: summed("changa_cube300.tbin", ["DarkMatter"], 64), 0.9, None),
+        ("cube300-clumps-box", lambda: summed("changa_cube300.tbin", ["DarkMatter"], 64), 0.9,
+         None, {"BoxSize": [1.0, 1.0, 1.0]}),
         ("evrard-glass", lambda: summed("adiabtophat_glass_28721.bin", ["Gas"], 64), 0.3, None),
         ("changa-shocktube", lambda: summed("shocktube.std", ["Gas"], 64), 0.5, None),
         ("gadget4-gassphere", lambda: read(os.path.join("gadget4_gassphere",
