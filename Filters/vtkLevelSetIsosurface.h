@@ -608,6 +608,10 @@ private:
   // and images) when it was not kept; null if it cannot be.
   std::unique_ptr<lsi::SPHField> RebuildSPHField(
     vtkPointSet* work, const lsi::Neighborhoods& geometry);
+  // The SPH field the last run used: the one it kept (for quick isovalue changes), else built
+  // again (RebuildSPHField, held by `rebuilt`); null on point data, or if it cannot be built.
+  const lsi::SPHField* LastSPHField(vtkPointSet* input, const lsi::Neighborhoods& geometry,
+    std::unique_ptr<lsi::SPHField>& rebuilt);
   bool ReusedLastOutputs = false, SlidLastSurface = false, RemadeSurfaceOutput = false;
   // With only IsoValue changed since the last run and QuickIsoValueChanges on: slides the last
   // surface onto the new level (LevelSetIsoValueSlide.h) if the checks there allow. False: run

@@ -133,14 +133,9 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   const auto start = lsi::Clock::now();
   vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
-  // On the SPH field the arrays are its interpolants: the field the last run kept (for quick
-  // isovalue changes), else the same one built again from the same particles.
+  // On the SPH field the arrays are its interpolants.
   std::unique_ptr<lsi::SPHField> rebuilt;
-  if (last.OnField && !last.Field)
-  {
-    rebuilt = this->RebuildSPHField(work, *geometry);
-  }
-  const lsi::SPHField* field = last.Field ? last.Field.get() : rebuilt.get();
+  const lsi::SPHField* field = this->LastSPHField(input, *geometry, rebuilt);
   if (!ranks.All(!last.OnField || field))
   {
     return false;
@@ -168,6 +163,17 @@ bool vtkLevelSetIsosurface::RemakeSurfaceOutput(bool onlyOutputsChanged, vtkPoin
   this->RemadeSurfaceOutput = true;
   this->LastRunTime = this->GetMTime();
   return true;
+}
+
+const lsi::SPHField* vtkLevelSetIsosurface::LastSPHField(
+  vtkPointSet* input, const lsi::Neighborhoods& geometry, std::unique_ptr<lsi::SPHField>& rebuilt)
+{
+  const lsi::LastOutputs& last = this->Internal->Last;
+  if (last.OnField && !last.Field)
+  {
+    rebuilt = this->RebuildSPHField(last.Work ? last.Work.GetPointer() : input, geometry);
+  }
+  return last.Field ? last.Field.get() : rebuilt.get();
 }
 
 std::unique_ptr<lsi::SPHField> vtkLevelSetIsosurface::RebuildSPHField(
@@ -430,21 +436,15 @@ bool vtkLevelSetIsosurface::ReuseAfterSeedMove(bool onlySeedsChanged, vtkPointSe
   const LastRanksScope lastRanks(*this->Internal);
   const lsi::Distribution& ranks = *this->Internal->Ranks;
   // (The isovalue and the data are those of the last run, which checked them.) On the SPH field
-  // the flood reads it between samples: the one kept for quick changes, else built again.
+  // the flood reads it between samples.
   std::unique_ptr<lsi::SPHField> rebuilt;
-  if (last.OnField && !last.Field)
-  {
-    vtkPointSet* work = last.Work ? last.Work.GetPointer() : input;
-    rebuilt = this->RebuildSPHField(work, *geometry);
-  }
-  const lsi::SPHField* field = last.Field ? last.Field.get() : rebuilt.get();
+  const lsi::SPHField* field = this->LastSPHField(input, *geometry, rebuilt);
   if (!ranks.All(!last.OnField || field))
   {
     return false;
   }
   std::vector<char> inside;
-  const bool flooded =
-    this->FloodFromSeeds(*geometry, last.DataOffsets, last.OnField ? field : nullptr, inside);
+  const bool flooded = this->FloodFromSeeds(*geometry, last.DataOffsets, field, inside);
   if (!ranks.All(flooded && inside == last.Inside && this->SameKeptCell()))
   {
     return false;
@@ -497,9 +497,9 @@ bool vtkLevelSetIsosurface::SlideAfterIsoValueChange(bool onlyIsoValueChanged, v
   const double inputSeconds = lsi::SecondsSince(start);
   start = lsi::Clock::now();
   std::vector<char> inside;
-  if (!ranks.All(!last.OnField || last.Field) ||
-    !this->FloodFromSeeds(*geometry, dataOffsets, last.OnField ? last.Field.get() : nullptr,
-      inside)) // (decided with the other ranks)
+  // (A slide needs SlideReady, with which a run on the SPH field kept it: KeepForSlides.)
+  if (!this->FloodFromSeeds(
+        *geometry, dataOffsets, last.Field.get(), inside)) // (decided with the other ranks)
   {
     vtkDebugMacro(<< "quick isovalue change: refused, the seeds flood nothing");
     return false;

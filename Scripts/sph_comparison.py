@@ -323,8 +323,9 @@ def seeded_particles(x, values, iso, seed, k=64):
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     above = np.flatnonzero(values > iso)
-    _, start = cKDTree(x[above]).query(seed)
-    _, lists = cKDTree(x[above]).query(x[above], k=min(k + 1, len(above)))
+    tree = cKDTree(x[above])
+    _, start = tree.query(seed)
+    _, lists = tree.query(x[above], k=min(k + 1, len(above)))
     rows = np.repeat(np.arange(len(above)), lists.shape[1])
     graph = coo_matrix((np.ones(rows.size), (rows, lists.ravel())), shape=(len(above),) * 2)
     _, label = connected_components(graph, directed=False)

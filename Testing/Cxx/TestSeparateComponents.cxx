@@ -18,6 +18,7 @@
 #include "vtkLevelSetIsosurface.h"
 #include "vtkParticleDensity.h"
 
+#include "SPHKernels.h"
 #include "TestCheck.h"
 
 #include "vtkDataArray.h"
@@ -40,8 +41,6 @@
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // The particles' LevelSet after a run with the given iteration limit (0: the flood's start).
 std::vector<double> LevelSetAfter(
   vtkPolyData* particles, double isoValue, const double seed[3], double radius, int iterations)
@@ -137,15 +136,6 @@ void EvolutionJoinsNoClump(const Clumps& c)
       " of " + std::to_string(inside) + ")");
 }
 
-// The cubic spline of support H (vtkParticleDensity's kernel), normalised in 3D.
-double CubicSpline(double r, double support)
-{
-  const double q = r / support;
-  const double w = q <= 0.5 ? 1.0 - 6.0 * q * q + 6.0 * q * q * q
-                            : (q < 1.0 ? 2.0 * (1.0 - q) * (1.0 - q) * (1.0 - q) : 0.0);
-  return 8.0 / (Pi * support * support * support) * w;
-}
-
 // The surface is the seed's component of the SPH field's level set, not of the neighbour graph:
 // the field summed by brute force on a grid of a sixth of the smallest support over the box,
 // flooded from the seed's cell through faces where it exceeds the isovalue; every isopoint must
@@ -190,7 +180,8 @@ void SurfaceFollowsTheField(const Clumps& c)
         c.Particles->GetPoint(p, y);
         const double r = std::sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
           (x[2] - y[2]) * (x[2] - y[2]));
-        value += CubicSpline(r, c.Supports[p]) / static_cast<double>(c.Values.size());
+        value += lsi::SPHKernelValue(lsi::SPHKernel::CubicSpline, r, c.Supports[p]) /
+          static_cast<double>(c.Values.size());
       }
     }
     return value > c.IsoValue;
