@@ -49,25 +49,22 @@ vtkDataArray* FindArray(vtkPointSet* input, const std::string& requested, const 
   return nullptr;
 }
 
-SPHKernel KernelFromMarker(const std::string& marker)
-{
-  if (marker == "QuinticSpline")
-  {
-    return SPHKernel::QuinticSpline;
-  }
-  return marker == "WendlandC2" ? SPHKernel::WendlandC2 : SPHKernel::CubicSpline;
-}
-
 const char* KernelName(SPHKernel kernel)
 {
   switch (kernel)
   {
     case SPHKernel::QuinticSpline:
-      return "quintic spline";
+      return "quintic spline (M6)";
     case SPHKernel::WendlandC2:
       return "Wendland C2";
+    case SPHKernel::QuarticSpline:
+      return "quartic spline (M5)";
+    case SPHKernel::WendlandC4:
+      return "Wendland C4";
+    case SPHKernel::WendlandC6:
+      return "Wendland C6";
     default:
-      return "cubic spline";
+      return "cubic spline (M4)";
   }
 }
 } // namespace
@@ -141,8 +138,21 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   }
   arrays.ValuesAreDensity = arrays.Density &&
     (scalars == arrays.Density || (scalars && scalars->GetName() && rhoName == scalars->GetName()));
-  arrays.Kernel = request.Kernel > 0 ? static_cast<SPHKernel>(request.Kernel - 1)
-                                     : KernelFromMarker(MarkedArrayName(input, "SPHKernel"));
+  if (request.Kernel > 0)
+  {
+    arrays.Kernel = static_cast<SPHKernel>(request.Kernel - 1);
+  }
+  else
+  {
+    // The reader's marker: the kernel's name as the snapshot gives it (SWIFT's "Kernel
+    // function") or as a reader or Particle Density writes it ("WendlandC4"). None: the cubic
+    // spline of GADGET, GIZMO and ChaNGa.
+    const std::string marker = MarkedArrayName(input, "SPHKernel");
+    if (!marker.empty() && !SPHKernelFromName(marker, arrays.Kernel))
+    {
+      arrays.UnknownKernel = marker;
+    }
+  }
   arrays.SupportPerSmoothingLength = request.SupportPerSmoothingLength;
   if (!(arrays.SupportPerSmoothingLength > 0.0))
   {
@@ -385,6 +395,15 @@ void SumKernels(
       break;
     case SPHKernel::WendlandC2:
       sum(std::integral_constant<SPHKernel, SPHKernel::WendlandC2>());
+      break;
+    case SPHKernel::QuarticSpline:
+      sum(std::integral_constant<SPHKernel, SPHKernel::QuarticSpline>());
+      break;
+    case SPHKernel::WendlandC4:
+      sum(std::integral_constant<SPHKernel, SPHKernel::WendlandC4>());
+      break;
+    case SPHKernel::WendlandC6:
+      sum(std::integral_constant<SPHKernel, SPHKernel::WendlandC6>());
       break;
     default:
       sum(std::integral_constant<SPHKernel, SPHKernel::CubicSpline>());

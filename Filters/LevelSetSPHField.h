@@ -47,6 +47,9 @@ struct SPHFieldArrays
   bool ValuesAreDensity = false;   // the isosurface's scalar is the density itself
   SPHKernel Kernel = SPHKernel::CubicSpline;
   double SupportPerSmoothingLength = 1.0;
+  // The input's SPHKernel marker when it names no kernel the field knows (the cubic spline is
+  // used then, and the filter warns); "" otherwise.
+  std::string UnknownKernel;
 };
 
 /// The array name a reader's (or Particle Density's) field data marker names: a one-string

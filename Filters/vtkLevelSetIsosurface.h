@@ -309,12 +309,19 @@ public:
   {
     AUTOMATIC_KERNEL = 0, // the kernel the reader marked ("SPHKernel"), else the cubic spline
     CUBIC_SPLINE = 1,     // M4: GADGET, GIZMO, Gasoline, ChaNGa
-    QUINTIC_SPLINE = 2,   // M6: SWIFT's default
-    WENDLAND_C2 = 3
+    QUINTIC_SPLINE = 2,   // M6: SWIFT's "Quintic spline (M6)"
+    WENDLAND_C2 = 3,      // SWIFT's, GADGET-4's (WENDLAND_C2_KERNEL) and others'
+    QUARTIC_SPLINE = 4,   // M5: SWIFT's "Quartic spline (M5)"
+    WENDLAND_C4 = 5,      // SWIFT's and GADGET-4's (WENDLAND_C4_KERNEL)
+    WENDLAND_C6 = 6       // SWIFT's and GADGET-4's (WENDLAND_C6_KERNEL)
   };
   ///@{
-  /** The SPH kernel of the field (see Field). Default AUTOMATIC_KERNEL. */
-  vtkSetClampWarnMacro(Kernel, int, AUTOMATIC_KERNEL, WENDLAND_C2);
+  /**
+   * The SPH kernel of the field (see Field). Default AUTOMATIC_KERNEL: the kernel the reader
+   * marked (SWIFT's HydroScheme "Kernel function", GADGET-4's Config flags), else the cubic
+   * spline; a marker that names no kernel here gives a warning and the cubic spline.
+   */
+  vtkSetClampWarnMacro(Kernel, int, AUTOMATIC_KERNEL, WENDLAND_C6);
   vtkGetMacro(Kernel, int);
   ///@}
 

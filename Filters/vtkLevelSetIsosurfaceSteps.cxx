@@ -242,6 +242,13 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   {
     return true;
   }
+  if (!arrays.UnknownKernel.empty() && this->ReportsForAll())
+  {
+    vtkWarningMacro("The input names the SPH kernel '"
+      << arrays.UnknownKernel
+      << "', which is none of the cubic, quartic and quintic splines and Wendland C2, C4 and C6: "
+         "using the cubic spline. Set Kernel to the simulation's kernel.");
+  }
   field.reset(new lsi::SPHField(geometry, arrays, values, problem));
   if (!field->Valid())
   {

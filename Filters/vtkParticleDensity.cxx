@@ -261,8 +261,7 @@ int vtkParticleDensity::RequestData(
   NameInFieldData(fields, "DensityArray", "Density");
   NameInFieldData(fields, "SmoothingLengthArray", "SmoothingLength");
   NameInFieldData(fields, "MassArray", masses ? masses->GetName() : "Masses");
-  const char* kernelNames[] = { "CubicSpline", "QuinticSpline", "WendlandC2" };
-  NameInFieldData(fields, "SPHKernel", kernelNames[this->Kernel]);
+  NameInFieldData(fields, "SPHKernel", lsi::SPHKernelMarker(kernel));
   vtkNew<vtkDoubleArray> supportFactor; // SmoothingLength is the support radius itself
   supportFactor->SetName("SupportPerSmoothingLength");
   supportFactor->InsertNextValue(1.0);

@@ -53,11 +53,14 @@ public:
   {
     CUBIC_SPLINE = 0,   // M4: GADGET, ChaNGa
     QUINTIC_SPLINE = 1, // M6: SWIFT's default
-    WENDLAND_C2 = 2     // GIZMO and others
+    WENDLAND_C2 = 2,    // GIZMO and others
+    QUARTIC_SPLINE = 3, // M5
+    WENDLAND_C4 = 4,
+    WENDLAND_C6 = 5
   };
   ///@{
-  /** The SPH kernel. Default CUBIC_SPLINE. */
-  vtkSetClampWarnMacro(Kernel, int, CUBIC_SPLINE, WENDLAND_C2);
+  /** The SPH kernel (lsi::SPHKernel's numbering). Default CUBIC_SPLINE. */
+  vtkSetClampWarnMacro(Kernel, int, CUBIC_SPLINE, WENDLAND_C6);
   vtkGetMacro(Kernel, int);
   void SetKernelToCubicSpline() { this->SetKernel(CUBIC_SPLINE); }
   void SetKernelToQuinticSpline() { this->SetKernel(QUINTIC_SPLINE); }

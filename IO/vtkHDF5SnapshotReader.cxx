@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkHDF5SnapshotReader.h"
 
+#include "SPHKernels.h"
+
 #include "HDF5Handles.h"
 #include "SwiftCells.h"
 
@@ -108,31 +110,29 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
   H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index, visit, &context);
 }
 
-// The SPH kernel a file names, as the readers mark it ("CubicSpline", "QuinticSpline",
-// "WendlandC2"), and its support per smoothing length. SWIFT writes HydroScheme attributes
-// "Kernel function" (e.g. "Quintic spline (M6)") and "Kernel gamma" (support = gamma h);
-// GADGET-4 writes its compile flags in Config (WENDLAND_C2_KERNEL) and h is the support.
-// Anything else keeps GADGET's cubic spline with h = H.
-void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLength)
+// The SPH kernel a file names, as the readers mark it (lsi::SPHKernelMarker), and its support
+// per smoothing length. SWIFT writes HydroScheme attributes "Kernel function" (e.g. "Quintic
+// spline (M6)", "Wendland C4") and "Kernel gamma" (support = gamma h). GADGET-4 writes its
+// compile flags in Config (WENDLAND_C2_KERNEL, ..._C4_, ..._C6_; none: the cubic spline) and h
+// is the support. Anything else keeps GADGET's cubic spline, h = H. A kernel name that is none
+// of lsi::SPHKernel's is marked as written (the filter warns and uses the cubic spline) and
+// returned in `unknown`.
+void ReadKernel(
+  hid_t file, std::string& kernel, double& supportPerSmoothingLength, std::string& unknown)
 {
   if (Exists(file, "HydroScheme"))
   {
     Handle scheme(H5Gopen2(file, "HydroScheme", H5P_DEFAULT), H5Gclose);
     vtkNew<vtkFieldData> attributes;
     AttributesToFieldData(scheme, "", attributes);
-    if (auto* name = vtkStringArray::SafeDownCast(attributes->GetAbstractArray("Kernel function")))
+    auto* name = vtkStringArray::SafeDownCast(attributes->GetAbstractArray("Kernel function"));
+    lsi::SPHKernel named = lsi::SPHKernel::CubicSpline;
+    if (name && name->GetNumberOfValues() > 0 && !name->GetValue(0).empty())
     {
-      std::string lower = name->GetValue(0);
-      std::transform(lower.begin(), lower.end(), lower.begin(),
-        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      if (lower.find("quintic") != std::string::npos)
-      {
-        kernel = "QuinticSpline";
-      }
-      else if (lower.find("wendland c2") != std::string::npos)
-      {
-        kernel = "WendlandC2";
-      }
+      const std::string written = name->GetValue(0);
+      const bool known = lsi::SPHKernelFromName(written, named);
+      kernel = known ? std::string(lsi::SPHKernelMarker(named)) : written;
+      unknown = known ? std::string() : written;
     }
     const std::vector<double> gamma = NumericAttribute(scheme, "Kernel gamma");
     if (!gamma.empty() && gamma[0] > 0.0 && std::isfinite(gamma[0]))
@@ -143,9 +143,12 @@ void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLeng
   else if (Exists(file, "Config"))
   {
     Handle config(H5Gopen2(file, "Config", H5P_DEFAULT), H5Gclose);
-    if (H5Aexists(config, "WENDLAND_C2_KERNEL") > 0)
+    for (const char* flag : { "WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL" })
     {
-      kernel = "WendlandC2";
+      if (H5Aexists(config, flag) > 0)
+      {
+        kernel = std::string("Wendland") + std::string(flag).substr(9, 2); // as SPHKernelMarker
+      }
     }
   }
 }
@@ -371,7 +374,17 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
       AttributesToFieldData(g, std::string(group) + "/", fields);
     }
   }
-  ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength);
+  std::string unknownKernel;
+  ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength, unknownKernel);
+  // Once per file and name: the metadata is read again for each update.
+  const std::string warning = this->FileName + "\n" + unknownKernel;
+  if (!unknownKernel.empty() && warning != this->KernelWarning)
+  {
+    this->KernelWarning = warning;
+    vtkWarningMacro(<< this->FileName << ": HydroScheme names the kernel '" << unknownKernel
+                    << "', none of those the SPH field knows (cubic, quartic and quintic "
+                       "splines, Wendland C2, C4 and C6): set Level-Set Isosurface's Kernel.");
+  }
   const std::vector<double> times = NumericAttribute(header, "Time");
   time = times.empty() ? 0.0 : times[0];
   this->MassTable = NumericAttribute(header, "MassTable");

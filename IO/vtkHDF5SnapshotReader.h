@@ -70,9 +70,11 @@ private:
   std::vector<std::vector<long long>> PartCounts; // [part][listed type]: particles in that file
   std::vector<double> MassTable;                  // per PartType number
   // The SPH kernel and its support per smoothing length (SWIFT's HydroScheme "Kernel function"
-  // and "Kernel gamma"; GADGET-4's Config WENDLAND_C2_KERNEL; else GADGET's cubic spline, h = H).
+  // and "Kernel gamma"; GADGET-4's Config WENDLAND_C2/C4/C6_KERNEL; else GADGET's cubic spline,
+  // h = H).
   std::string Kernel = "CubicSpline";
   double SupportPerSmoothingLength = 1.0;
+  std::string KernelWarning; // the file and kernel name last warned of (unknown kernels)
 };
 
 #endif

@@ -62,9 +62,21 @@ def kernel_shape(name, q):
         a, b, c = 1 - qi, np.maximum(2 / 3 - qi, 0), np.maximum(1 / 3 - qi, 0)
         w[inside] = 2187.0 / (40 * PI) * (a**5 - 6 * b**5 + 15 * c**5)
         d[inside] = 2187.0 / (40 * PI) * (-5 * a**4 + 30 * b**4 - 75 * c**4)
-    else:  # WendlandC2
+    elif name == "WendlandC2":
         w[inside] = 21.0 / (2 * PI) * (1 - qi) ** 4 * (1 + 4 * qi)
         d[inside] = 21.0 / (2 * PI) * (-20 * qi * (1 - qi) ** 3)
+    elif name == "QuarticSpline":
+        a, b, c = 1 - qi, np.maximum(0.6 - qi, 0), np.maximum(0.2 - qi, 0)
+        w[inside] = 15625.0 / (512 * PI) * (a**4 - 5 * b**4 + 10 * c**4)
+        d[inside] = 15625.0 / (512 * PI) * (-4 * a**3 + 20 * b**3 - 40 * c**3)
+    elif name == "WendlandC4":
+        w[inside] = 495.0 / (32 * PI) * (1 - qi) ** 6 * (1 + 6 * qi + 35 / 3 * qi**2)
+        d[inside] = 495.0 / (32 * PI) * (-56 / 3 * qi * (1 - qi) ** 5 * (1 + 5 * qi))
+    elif name == "WendlandC6":
+        w[inside] = 1365.0 / (64 * PI) * (1 - qi) ** 8 * (1 + 8 * qi + 25 * qi**2 + 32 * qi**3)
+        d[inside] = 1365.0 / (64 * PI) * (-22 * qi * (1 - qi) ** 7 * (1 + 7 * qi + 16 * qi**2))
+    else:
+        raise ValueError("no kernel named %r (the readers' SPHKernel markers)" % name)
     return w, d
 
 

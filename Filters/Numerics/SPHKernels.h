@@ -19,7 +19,14 @@ enum class SPHKernel
   CubicSpline = 0,   // M4, GADGET-2/3/4 and ChaNGa's default
   QuinticSpline = 1, // M6, SWIFT's "Quintic spline (M6)"
   WendlandC2 = 2,    // GIZMO's and many modern codes' choice
+  QuarticSpline = 3, // M5, SWIFT's "Quartic spline (M5)"
+  WendlandC4 = 4,    // SWIFT's and GADGET-4's "Wendland C4"
+  WendlandC6 = 5,    // SWIFT's and GADGET-4's "Wendland C6"
 };
+
+/// Every kernel, for loops over them (tests, property lists).
+constexpr SPHKernel AllSPHKernels[] = { SPHKernel::CubicSpline, SPHKernel::QuinticSpline,
+  SPHKernel::WendlandC2, SPHKernel::QuarticSpline, SPHKernel::WendlandC4, SPHKernel::WendlandC6 };
 
 /// x^N by multiplications (std::pow is a library call, and these run billions of times).
 template <int N>
@@ -58,6 +65,20 @@ inline double SPHKernelValue(SPHKernel kernel, double r, double H)
     }
     case SPHKernel::WendlandC2:
       return norm * (21.0 / (2.0 * pi)) * Power<4>(1.0 - q) * (1.0 + 4.0 * q);
+    case SPHKernel::QuarticSpline:
+    {
+      const double a = 1.0 - q, b = 0.6 - q, c = 0.2 - q;
+      double w = Power<4>(a);
+      w -= b > 0.0 ? 5.0 * Power<4>(b) : 0.0;
+      w += c > 0.0 ? 10.0 * Power<4>(c) : 0.0;
+      return norm * (15625.0 / (512.0 * pi)) * w;
+    }
+    case SPHKernel::WendlandC4:
+      return norm * (495.0 / (32.0 * pi)) * Power<6>(1.0 - q) *
+        (1.0 + 6.0 * q + 35.0 / 3.0 * q * q);
+    case SPHKernel::WendlandC6:
+      return norm * (1365.0 / (64.0 * pi)) * Power<8>(1.0 - q) *
+        (1.0 + 8.0 * q + 25.0 * q * q + 32.0 * q * q * q);
   }
   return 0.0;
 }
@@ -88,32 +109,78 @@ inline double SPHKernelDerivative(SPHKernel kernel, double r, double H)
     }
     case SPHKernel::WendlandC2:
       return norm * (21.0 / (2.0 * pi)) * (-20.0 * q * Power<3>(1.0 - q));
+    case SPHKernel::QuarticSpline:
+    {
+      const double a = 1.0 - q, b = 0.6 - q, c = 0.2 - q;
+      double w = -4.0 * Power<3>(a);
+      w += b > 0.0 ? 20.0 * Power<3>(b) : 0.0;
+      w -= c > 0.0 ? 40.0 * Power<3>(c) : 0.0;
+      return norm * (15625.0 / (512.0 * pi)) * w;
+    }
+    case SPHKernel::WendlandC4:
+      return norm * (495.0 / (32.0 * pi)) * (-56.0 / 3.0 * q * Power<5>(1.0 - q) * (1.0 + 5.0 * q));
+    case SPHKernel::WendlandC6:
+      return norm * (1365.0 / (64.0 * pi)) *
+        (-22.0 * q * Power<7>(1.0 - q) * (1.0 + 7.0 * q + 16.0 * q * q));
   }
   return 0.0;
 }
 
-/// The kernel a snapshot names (SWIFT's HydroScheme "Kernel function", e.g. "Quintic spline
-/// (M6)", "Wendland C2"), or `fallback` when the name is none of the three.
-inline SPHKernel SPHKernelFromName(const std::string& name, SPHKernel fallback)
+/// The kernel a snapshot names (SWIFT's HydroScheme "Kernel function": "Cubic spline (M4)",
+/// "Quartic spline (M5)", "Quintic spline (M6)", "Wendland C2", "Wendland C4", "Wendland C6"),
+/// case and spacing aside. False, and `kernel` untouched, for a name that is none of them.
+inline bool SPHKernelFromName(const std::string& name, SPHKernel& kernel)
 {
-  std::string lower(name);
-  for (char& c : lower)
+  std::string lower;
+  for (char c : name)
   {
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!std::isspace(static_cast<unsigned char>(c)) && c != '_' && c != '-')
+    {
+      lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
   }
-  if (lower.find("quintic") != std::string::npos || lower.find("m6") != std::string::npos)
+  const auto has = [&lower](const char* part) { return lower.find(part) != std::string::npos; };
+  if (has("wendland"))
   {
-    return SPHKernel::QuinticSpline;
+    if (has("c2") || has("c4") || has("c6"))
+    {
+      kernel = has("c2") ? SPHKernel::WendlandC2
+        : has("c4")      ? SPHKernel::WendlandC4
+                         : SPHKernel::WendlandC6;
+      return true;
+    }
+    return false;
   }
-  if (lower.find("wendland") != std::string::npos && lower.find("c2") != std::string::npos)
+  const bool quartic = has("quartic") || has("m5"), quintic = has("quintic") || has("m6"),
+             cubic = has("cubic") || has("m4");
+  if (quartic + quintic + cubic != 1)
   {
-    return SPHKernel::WendlandC2;
+    return false;
   }
-  if (lower.find("cubic") != std::string::npos || lower.find("m4") != std::string::npos)
+  kernel = quartic ? SPHKernel::QuarticSpline
+    : quintic      ? SPHKernel::QuinticSpline
+                   : SPHKernel::CubicSpline;
+  return true;
+}
+
+/// The name the readers mark a kernel with ("SPHKernel" field data) and the filter reads back.
+inline const char* SPHKernelMarker(SPHKernel kernel)
+{
+  switch (kernel)
   {
-    return SPHKernel::CubicSpline;
+    case SPHKernel::QuinticSpline:
+      return "QuinticSpline";
+    case SPHKernel::WendlandC2:
+      return "WendlandC2";
+    case SPHKernel::QuarticSpline:
+      return "QuarticSpline";
+    case SPHKernel::WendlandC4:
+      return "WendlandC4";
+    case SPHKernel::WendlandC6:
+      return "WendlandC6";
+    default:
+      return "CubicSpline";
   }
-  return fallback;
 }
 
 /// The kernel's shape on q = r / H in [0, 1): W = Normalization<K>() / H^3 * w(q) and
@@ -123,9 +190,13 @@ inline SPHKernel SPHKernelFromName(const std::string& name, SPHKernel fallback)
 template <SPHKernel K>
 constexpr double Normalization()
 {
-  return K == SPHKernel::CubicSpline ? 8.0 / 3.14159265358979323846
-    : K == SPHKernel::QuinticSpline  ? 2187.0 / (40.0 * 3.14159265358979323846)
-                                     : 21.0 / (2.0 * 3.14159265358979323846);
+  constexpr double pi = 3.14159265358979323846;
+  return K == SPHKernel::CubicSpline ? 8.0 / pi
+    : K == SPHKernel::QuinticSpline  ? 2187.0 / (40.0 * pi)
+    : K == SPHKernel::WendlandC2     ? 21.0 / (2.0 * pi)
+    : K == SPHKernel::QuarticSpline  ? 15625.0 / (512.0 * pi)
+    : K == SPHKernel::WendlandC4     ? 495.0 / (32.0 * pi)
+                                     : 1365.0 / (64.0 * pi);
 }
 
 template <SPHKernel K>
@@ -164,11 +235,42 @@ inline void KernelShape(double q, double& w, double& dw)
       }
     }
   }
-  else
+  else if (K == SPHKernel::WendlandC2)
   {
     const double a = 1.0 - q, a3 = a * a * a;
     w = a3 * a * (1.0 + 4.0 * q);
     dw = -20.0 * q * a3;
+  }
+  else if (K == SPHKernel::QuarticSpline)
+  {
+    const double a = 1.0 - q, b = 0.6 - q, c = 0.2 - q;
+    const double a3 = a * a * a;
+    w = a3 * a;
+    dw = -4.0 * a3;
+    if (b > 0.0)
+    {
+      const double b3 = b * b * b;
+      w -= 5.0 * b3 * b;
+      dw += 20.0 * b3;
+      if (c > 0.0)
+      {
+        const double c3 = c * c * c;
+        w += 10.0 * c3 * c;
+        dw -= 40.0 * c3;
+      }
+    }
+  }
+  else if (K == SPHKernel::WendlandC4)
+  {
+    const double a = 1.0 - q, a5 = Power<5>(a);
+    w = a5 * a * (1.0 + 6.0 * q + 35.0 / 3.0 * q * q);
+    dw = -56.0 / 3.0 * q * a5 * (1.0 + 5.0 * q);
+  }
+  else
+  {
+    const double a = 1.0 - q, a7 = Power<7>(a);
+    w = a7 * a * (1.0 + 8.0 * q + 25.0 * q * q + 32.0 * q * q * q);
+    dw = -22.0 * q * a7 * (1.0 + 7.0 * q + 16.0 * q * q);
   }
 }
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The HDF5 snapshot reader on the snapshots make_test_snapshots.py writes (every value known):
 // a GADGET-4 snapshot in two files, an AREPO-style file without smoothing lengths, each class of
-// bad file; then the real SWIFT snapshot of Data/SWIFT.
+// bad file, the kernels SWIFT and GADGET-4 name; then the real SWIFT snapshot of Data/SWIFT.
 //   TestHDF5SnapshotReader TEST_SNAPSHOT_DIR SWIFT_FILE
 #include "vtkHDF5SnapshotReader.h"
 
@@ -293,6 +293,43 @@ void TestStringArrays(const std::string& dir)
     path + ": variable-length strings (got " + FieldString(gas, "Variable") + ")");
 }
 
+// The kernel each SWIFT name and each GADGET-4 Config flag marks, with SWIFT's support per h;
+// a name no code writes is marked as written, with a warning (the filter warns too).
+void TestKernelMarkers(const std::string& dir)
+{
+  const struct
+  {
+    std::string File, Marker;
+    double Support;
+  } cases[] = { { "kernel_swift_0.hdf5", "CubicSpline", 1.825742 },
+    { "kernel_swift_1.hdf5", "QuarticSpline", 2.018932 },
+    { "kernel_swift_2.hdf5", "QuinticSpline", 2.195775 },
+    { "kernel_swift_3.hdf5", "WendlandC2", 1.936492 },
+    { "kernel_swift_4.hdf5", "WendlandC4", 2.207940 },
+    { "kernel_swift_5.hdf5", "WendlandC6", 2.449490 }, { "kernel_swift_6.hdf5", "Gaussian", 3.0 },
+    { "kernel_gadget4_WENDLAND_C2_KERNEL.hdf5", "WendlandC2", 1.0 },
+    { "kernel_gadget4_WENDLAND_C4_KERNEL.hdf5", "WendlandC4", 1.0 },
+    { "kernel_gadget4_WENDLAND_C6_KERNEL.hdf5", "WendlandC6", 1.0 } };
+  for (const auto& c : cases)
+  {
+    const std::string path = dir + "/" + c.File;
+    vtkNew<vtkHDF5SnapshotReader> reader;
+    reader->SetFileName(path.c_str());
+    vtkNew<MessageCounter> warnings;
+    reader->AddObserver(vtkCommand::WarningEvent, warnings);
+    reader->Update();
+    vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+    const bool unknown = c.Marker == "Gaussian";
+    Check(gas && gas->GetNumberOfPoints() == 10 && FieldString(gas, "SPHKernel") == c.Marker &&
+        std::abs(FieldNumber(gas, "SupportPerSmoothingLength") - c.Support) < 1e-6 &&
+        warnings->Count == (unknown ? 1 : 0) &&
+        (!unknown || warnings->Last.find("'Gaussian'") != std::string::npos),
+      path + ": marked " + c.Marker + ", support " + std::to_string(c.Support) + " h (got '" +
+        (gas ? FieldString(gas, "SPHKernel") : std::string()) + "', " +
+        std::to_string(warnings->Count) + " warnings)");
+  }
+}
+
 void TestSwift(const std::string& path)
 {
   vtkNew<vtkHDF5SnapshotReader> reader;
@@ -338,6 +375,7 @@ int main(int argc, char* argv[])
   TestBadFiles(argv[1]);
   TestStringArrays(argv[1]);
   TestPointArraySelection(argv[1]);
+  TestKernelMarkers(argv[1]);
   TestSwift(argv[2]);
   std::cout << (lsi::test::Failures() ? "HDF5 reader tests FAILED\n"
                                       : "HDF5 reader tests passed\n");

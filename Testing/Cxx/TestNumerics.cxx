@@ -27,6 +27,8 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -1102,8 +1104,7 @@ void TestTangentBasis()
 // support radii (the kernel scales as 1 / H^3), and is positive inside, zero at and beyond H.
 void TestSPHKernels()
 {
-  for (lsi::SPHKernel kernel :
-    { lsi::SPHKernel::CubicSpline, lsi::SPHKernel::QuinticSpline, lsi::SPHKernel::WendlandC2 })
+  for (lsi::SPHKernel kernel : lsi::AllSPHKernels)
   {
     for (double H : { 1.0, 0.003 })
     {
@@ -1123,12 +1124,21 @@ void TestSPHKernels()
     }
     // Known values of the published forms at q = 0 and q = 1/2 (support 1): cubic spline
     // 8/pi and 8/pi * 1/4; quintic (3^7 / (40 pi)) (1 - 6 (2/3)^5 + 15 (1/3)^5) and
-    // (3^7 / (40 pi)) ((1/2)^5 - 6 (1/6)^5); Wendland C2 21/(2 pi) and 21/(2 pi) 3/16.
-    const double pi = 3.14159265358979323846, quintic = 2187.0 / (40.0 * pi);
-    const double expected[3][2] = { { 8.0 / pi, 2.0 / pi },
+    // (3^7 / (40 pi)) ((1/2)^5 - 6 (1/6)^5); Wendland C2 21/(2 pi) and 21/(2 pi) 3/16;
+    // quartic (5^6 / (512 pi)) 0.368 (Dehnen & Aly's W(0) coefficient) and
+    // (5^6 / (512 pi)) (1/2)^4 - 5 (1/10)^4); Wendland C4 495/(32 pi) and
+    // 495/(32 pi) (1/2)^6 (1 + 3 + 35/12); Wendland C6 1365/(64 pi) and
+    // 1365/(64 pi) (1/2)^8 (1 + 4 + 25/4 + 4).
+    const double pi = 3.14159265358979323846, quintic = 2187.0 / (40.0 * pi),
+                 quartic = 15625.0 / (512.0 * pi), c4 = 495.0 / (32.0 * pi),
+                 c6 = 1365.0 / (64.0 * pi);
+    const double expected[6][2] = { { 8.0 / pi, 2.0 / pi },
       { quintic * (1.0 - 6.0 * std::pow(2.0 / 3.0, 5) + 15.0 * std::pow(1.0 / 3.0, 5)),
         quintic * (std::pow(0.5, 5) - 6.0 * std::pow(1.0 / 6.0, 5)) },
-      { 21.0 / (2.0 * pi), 21.0 / (2.0 * pi) * 3.0 / 16.0 } };
+      { 21.0 / (2.0 * pi), 21.0 / (2.0 * pi) * 3.0 / 16.0 },
+      { quartic * 0.368, quartic * (std::pow(0.5, 4) - 5.0 * std::pow(0.1, 4)) },
+      { c4, c4 * std::pow(0.5, 6) * (4.0 + 35.0 / 12.0) },
+      { c6, c6 * std::pow(0.5, 8) * (9.0 + 25.0 / 4.0) } };
     const int k = static_cast<int>(kernel);
     Check(std::abs(lsi::SPHKernelValue(kernel, 0.0, 1.0) - expected[k][0]) < 1e-12 &&
         std::abs(lsi::SPHKernelValue(kernel, 0.5, 1.0) - expected[k][1]) < 1e-12,
@@ -1146,12 +1156,11 @@ void TestSPHKernels()
 void TestSPHKernelGradients()
 {
   double worst = 0.0;
-  for (lsi::SPHKernel kernel :
-    { lsi::SPHKernel::CubicSpline, lsi::SPHKernel::QuinticSpline, lsi::SPHKernel::WendlandC2 })
+  for (lsi::SPHKernel kernel : lsi::AllSPHKernels)
   {
     for (double H : { 1.0, 0.003 })
     {
-      for (double q : { 0.1, 0.3, 0.45, 0.55, 0.7, 0.9, 0.99 })
+      for (double q : { 0.1, 0.15, 0.3, 0.45, 0.5, 0.55, 0.7, 0.9, 0.99 })
       {
         const double r = q * H, step = 1e-6 * H;
         const double numeric =
@@ -1178,42 +1187,50 @@ void TestSPHKernelGradients()
   }
   // The loop form (KernelShape) gives the same numbers as the reference form.
   double shapeWorst = 0.0;
-  for (double q = 0.0; q < 1.0; q += 0.01)
-  {
-    double w, dw;
-    const double H = 0.7, r = q * H;
-    lsi::KernelShape<lsi::SPHKernel::CubicSpline>(q, w, dw);
-    const double c = lsi::Normalization<lsi::SPHKernel::CubicSpline>();
-    shapeWorst = std::max(shapeWorst,
-      std::abs(c * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::CubicSpline, r, H)) +
-        std::abs(
-          c * dw / (H * H * H * H) - lsi::SPHKernelDerivative(lsi::SPHKernel::CubicSpline, r, H)));
-    lsi::KernelShape<lsi::SPHKernel::QuinticSpline>(q, w, dw);
-    const double cq = lsi::Normalization<lsi::SPHKernel::QuinticSpline>();
-    shapeWorst = std::max(shapeWorst,
-      std::abs(cq * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::QuinticSpline, r, H)) +
-        std::abs(cq * dw / (H * H * H * H) -
-          lsi::SPHKernelDerivative(lsi::SPHKernel::QuinticSpline, r, H)));
-    lsi::KernelShape<lsi::SPHKernel::WendlandC2>(q, w, dw);
-    const double cw = lsi::Normalization<lsi::SPHKernel::WendlandC2>();
-    shapeWorst = std::max(shapeWorst,
-      std::abs(cw * w / (H * H * H) - lsi::SPHKernelValue(lsi::SPHKernel::WendlandC2, r, H)) +
-        std::abs(
-          cw * dw / (H * H * H * H) - lsi::SPHKernelDerivative(lsi::SPHKernel::WendlandC2, r, H)));
-  }
+  auto compare = [&shapeWorst](auto shape) {
+    constexpr lsi::SPHKernel K = decltype(shape)::value;
+    const double c = lsi::Normalization<K>(), H = 0.7;
+    for (double q = 0.0; q < 1.0; q += 0.01)
+    {
+      double w, dw;
+      const double r = q * H;
+      lsi::KernelShape<K>(q, w, dw);
+      shapeWorst = std::max(shapeWorst,
+        std::abs(c * w / (H * H * H) - lsi::SPHKernelValue(K, r, H)) +
+          std::abs(c * dw / (H * H * H * H) - lsi::SPHKernelDerivative(K, r, H)));
+    }
+  };
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::CubicSpline>());
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::QuinticSpline>());
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::WendlandC2>());
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::QuarticSpline>());
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::WendlandC4>());
+  compare(std::integral_constant<lsi::SPHKernel, lsi::SPHKernel::WendlandC6>());
   std::cout << "SPH kernel loop form: worst difference " << shapeWorst << "\n";
   Check(shapeWorst < 1e-12, "KernelShape equals SPHKernelValue and SPHKernelDerivative");
   std::cout << "SPH kernel derivatives: worst relative difference " << worst << "\n";
   Check(worst < 1e-6, "SPH kernel derivative matches differences of the kernel");
-  Check(lsi::SPHKernelFromName("Quintic spline (M6)", lsi::SPHKernel::CubicSpline) ==
-        lsi::SPHKernel::QuinticSpline &&
-      lsi::SPHKernelFromName("Wendland C2", lsi::SPHKernel::CubicSpline) ==
-        lsi::SPHKernel::WendlandC2 &&
-      lsi::SPHKernelFromName("Cubic spline (M4)", lsi::SPHKernel::QuinticSpline) ==
-        lsi::SPHKernel::CubicSpline &&
-      lsi::SPHKernelFromName("Wendland C6", lsi::SPHKernel::CubicSpline) ==
-        lsi::SPHKernel::CubicSpline,
-    "SPH kernel names as SWIFT writes them");
+  // Every name SWIFT's kernel_hydro.h writes, and the markers, read back; others are refused.
+  const std::pair<const char*, lsi::SPHKernel> names[] = { { "Cubic spline (M4)",
+                                                             lsi::SPHKernel::CubicSpline },
+    { "Quartic spline (M5)", lsi::SPHKernel::QuarticSpline },
+    { "Quintic spline (M6)", lsi::SPHKernel::QuinticSpline },
+    { "Wendland C2", lsi::SPHKernel::WendlandC2 }, { "Wendland C4", lsi::SPHKernel::WendlandC4 },
+    { "Wendland C6", lsi::SPHKernel::WendlandC6 }, { "wendland_c4", lsi::SPHKernel::WendlandC4 } };
+  bool namesRead = true;
+  for (const auto& name : names)
+  {
+    lsi::SPHKernel read = lsi::SPHKernel::CubicSpline, marked = lsi::SPHKernel::CubicSpline;
+    namesRead = namesRead && lsi::SPHKernelFromName(name.first, read) && read == name.second &&
+      lsi::SPHKernelFromName(lsi::SPHKernelMarker(name.second), marked) && marked == name.second;
+  }
+  lsi::SPHKernel untouched = lsi::SPHKernel::WendlandC6;
+  for (const char* other : { "Gaussian", "Wendland C8", "", "cubic or quintic" })
+  {
+    namesRead = namesRead && !lsi::SPHKernelFromName(other, untouched);
+  }
+  Check(
+    namesRead && untouched == lsi::SPHKernel::WendlandC6, "SPH kernel names as SWIFT writes them");
 }
 
 // The level set after an isovalue change, on f = 20 - r (|grad f| = 1) and f = 5 (20 - r): phi

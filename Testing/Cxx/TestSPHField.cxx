@@ -605,33 +605,63 @@ void TestEvrard(const std::string& path)
       std::abs(bigRadius - meanRadius) < 1e-6 * meanRadius,
     "Evrard: lengths x1000 give the same surface, scaled");
 
-  // The same field written the SWIFT way: quintic spline, h = H / gamma, and the markers the
-  // HDF5 reader writes. The filter must follow the markers.
-  auto swift = vtkSmartPointer<vtkPolyData>::New();
-  swift->DeepCopy(glass);
-  const double gamma = 2.195775;
-  vtkDataArray* h = swift->GetPointData()->GetArray("SmoothingLength");
-  for (vtkIdType i = 0; i < swift->GetNumberOfPoints(); ++i)
+  // The same particles written the SWIFT way: h = H / gamma, a support 20% wider than the
+  // cubic's, and the markers the HDF5 reader writes for each of SWIFT's other kernels. The
+  // filter must follow the markers: the isopoints lie on that kernel's field.
+  const struct
   {
-    h->SetTuple1(i, 1.2 * h->GetTuple1(i) / gamma); // a 20% wider support than the cubic's
+    const char* Marker;
+    double Gamma;
+    lsi::SPHKernel Kernel;
+  } swiftKernels[] = { { "QuinticSpline", 2.195775, lsi::SPHKernel::QuinticSpline },
+    { "QuarticSpline", 2.018932, lsi::SPHKernel::QuarticSpline },
+    { "WendlandC4", 2.207940, lsi::SPHKernel::WendlandC4 },
+    { "WendlandC6", 2.449490, lsi::SPHKernel::WendlandC6 } };
+  for (const auto& k : swiftKernels)
+  {
+    auto swift = vtkSmartPointer<vtkPolyData>::New();
+    swift->DeepCopy(glass);
+    vtkDataArray* h = swift->GetPointData()->GetArray("SmoothingLength");
+    for (vtkIdType i = 0; i < swift->GetNumberOfPoints(); ++i)
+    {
+      h->SetTuple1(i, 1.2 * h->GetTuple1(i) / k.Gamma);
+    }
+    vtkNew<vtkStringArray> kernel;
+    kernel->SetName("SPHKernel");
+    kernel->InsertNextValue(k.Marker);
+    swift->GetFieldData()->RemoveArray("SPHKernel");
+    swift->GetFieldData()->AddArray(kernel);
+    vtkNew<vtkDoubleArray> factor;
+    factor->SetName("SupportPerSmoothingLength");
+    factor->InsertNextValue(k.Gamma);
+    swift->GetFieldData()->RemoveArray("SupportPerSmoothingLength");
+    swift->GetFieldData()->AddArray(factor);
+    const Particles q = ParticlesOf(swift, "SmoothingLength", "mass", "Density", k.Gamma, k.Kernel);
+    auto isopointsOf = Run(swift, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS);
+    const Scores sk = Score(q, isopointsOf, iso, 400);
+    const std::string what =
+      std::string("Evrard, SWIFT convention (") + k.Marker + ", H = gamma h)";
+    Report(what, sk, isopointsOf->GetNumberOfPoints());
+    Check(isopointsOf->GetNumberOfPoints() > 1000 && sk.MeanDistance < 1e-3 && sk.MaxAngle < 0.5,
+      what + ": isopoints on that kernel's field's level");
   }
-  vtkNew<vtkStringArray> kernel;
-  kernel->SetName("SPHKernel");
-  kernel->InsertNextValue("QuinticSpline");
-  swift->GetFieldData()->RemoveArray("SPHKernel");
-  swift->GetFieldData()->AddArray(kernel);
-  vtkNew<vtkDoubleArray> factor;
-  factor->SetName("SupportPerSmoothingLength");
-  factor->InsertNextValue(gamma);
-  swift->GetFieldData()->RemoveArray("SupportPerSmoothingLength");
-  swift->GetFieldData()->AddArray(factor);
-  const Particles q =
-    ParticlesOf(swift, "SmoothingLength", "mass", "Density", gamma, lsi::SPHKernel::QuinticSpline);
-  auto quintic = Run(swift, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS);
-  const Scores sq = Score(q, quintic, iso, 400);
-  Report("Evrard, SWIFT convention (quintic, H = gamma h)", sq, quintic->GetNumberOfPoints());
-  Check(quintic->GetNumberOfPoints() > 1000 && sq.MeanDistance < 1e-3 && sq.MaxAngle < 0.5,
-    "Evrard, SWIFT convention: isopoints on the quintic field's level");
+
+  // A marker that names no kernel the field knows: a warning, and the cubic spline's field.
+  auto unknown = vtkSmartPointer<vtkPolyData>::New();
+  unknown->DeepCopy(glass);
+  vtkNew<vtkStringArray> gaussian;
+  gaussian->SetName("SPHKernel");
+  gaussian->InsertNextValue("Gaussian");
+  unknown->GetFieldData()->RemoveArray("SPHKernel");
+  unknown->GetFieldData()->AddArray(gaussian);
+  vtkNew<vtkLevelSetIsosurface> warned;
+  vtkNew<lsi::test::MessageCounter> warnings;
+  warned->AddObserver(vtkCommand::WarningEvent, warnings);
+  auto cubic = Run(unknown, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, warned);
+  const Scores su = Score(p, cubic, iso, 400);
+  std::cout << "Unknown kernel marker: " << warnings->Last << "\n";
+  Check(warnings->All.find("'Gaussian'") != std::string::npos && su.MeanDistance < 1e-3,
+    "a kernel marker the field does not know: a warning naming it, the cubic spline's field");
 
   // Field = MLS ignores the smoothing lengths; Field = SPH without them is an error.
   vtkNew<vtkLevelSetIsosurface> mls;

@@ -100,7 +100,7 @@ print("Enclosed table: %d rows, columns %s; volume %.1f (exact %.1f)"
 if table.GetNumberOfRows() != 2 or abs(volume - exact_volume) > 0.03 * exact_volume:
     failures.append("port 3: one component and the total, volume within 3%% (got %s)" % volume)
 # And values other than the defaults.
-for name, value in dict(Field=2, Kernel=3, SupportPerSmoothingLength=2.195775,
+for name, value in dict(Field=2, Kernel=6, SupportPerSmoothingLength=2.195775,
                         SmoothingLengthArray="hsmooth", MassArray="mass",
                         DensityArray="rho", Periodic=0, PeriodicMargin=0.2,
                         PeriodicOutput=1).items():

@@ -328,6 +328,12 @@ dark = servermanager.Fetch(density)
 rho = dark.GetPointData().GetScalars()
 check(rho is not None and rho.GetName() == "Density" and rho.GetRange()[0] > 0,
       "Particle Density on the galaxy's dark matter: Density, positive, the active scalars")
+# Each kernel as a keyword (Wendland C4, the XML's fifth entry), marked for the filter.
+c4 = servermanager.Fetch(ParticleDensity(Input=galaxy_dark, Kernel=4))
+marker = c4.GetFieldData().GetAbstractArray("SPHKernel")
+check(marker is not None and marker.GetValue(0) == "WendlandC4",
+      "Particle Density with Kernel=4: the output marked WendlandC4 (got %s)"
+      % (marker.GetValue(0) if marker is not None else None))
 surface = LevelSetIsosurface(Input=density, IsoValue=sorted(
     rho.GetValue(i) for i in range(rho.GetNumberOfTuples()))[dark.GetNumberOfPoints() * 9 // 10],
     SeedRadius=0)

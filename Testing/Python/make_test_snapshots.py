@@ -32,6 +32,10 @@ tests can check each one.
   size); swift_old_cells.hdf5: the same particles in one file with older SWIFT's global
   Offsets and each cell's MinPositions / MaxPositions; swift_bad_cells.hdf5: the same with an
   offset beyond the file (the reader reads every particle then).
+- kernel_swift_<n>.hdf5 (n = 0 ... 6): 10 gas particles each, with SWIFT's HydroScheme
+  attributes "Kernel function" (every name SWIFT writes, then "Gaussian", which no reader
+  knows) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
+  WENDLAND_C2_KERNEL, WENDLAND_C4_KERNEL or WENDLAND_C6_KERNEL.
 - periodic_blob.hdf5: 40,000 gas particles uniform in a periodic box of side 1 (BoxSize 1),
   with Density = exp(-d^2 / (2 0.08^2)), d the distance to the nearest image of the box's corner
   (0, 0, 0), and no smoothing lengths (the filter fits the density itself): its isosurface at
@@ -192,6 +196,29 @@ def periodic_blob(path):
         g["ParticleIDs"] = np.arange(n, dtype=np.uint64)
 
 
+# SWIFT's kernel names (src/kernel_hydro.h) with its 3D gammas, and a name no code writes.
+SWIFT_KERNELS = [("Cubic spline (M4)", 1.825742), ("Quartic spline (M5)", 2.018932),
+                 ("Quintic spline (M6)", 2.195775), ("Wendland C2", 1.936492),
+                 ("Wendland C4", 2.207940), ("Wendland C6", 2.449490), ("Gaussian", 3.0)]
+
+
+def kernel_snapshots(path):
+    for n, (name, gamma) in enumerate(SWIFT_KERNELS):
+        with h5py.File(path("kernel_swift_%d.hdf5" % n), "w") as f:
+            header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+            gas(f.create_group("PartType0"), 0, 10)
+            scheme = f.create_group("HydroScheme")
+            scheme.attrs["Kernel function"] = np.bytes_(name)
+            scheme.attrs["Kernel gamma"] = np.float32(gamma)
+    for flag in ["WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL"]:
+        with h5py.File(path("kernel_gadget4_%s.hdf5" % flag), "w") as f:
+            header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+            gas(f.create_group("PartType0"), 0, 10)
+            config = f.create_group("Config")
+            config.attrs["NTYPES"] = np.int32(6)
+            config.attrs[flag] = np.int32(1)
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     path = lambda name: os.path.join(out, name)
@@ -280,6 +307,7 @@ def main(out):
     write_gadget(path("snapshot_format2_big"), [50, 0, 0, 0, 0, 0], [50, 0, 0, 0, 0, 0],
                  [0] * 6, 0.75, 0.0, 1, gadget_blocks(0, 50, 0, 0, np.float64, np.uint64), 2, ">")
     swift_cell_snapshots(path)
+    kernel_snapshots(path)
     periodic_blob(path)
     print("wrote the test snapshots to", out)
 
