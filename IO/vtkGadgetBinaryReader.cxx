@@ -405,11 +405,14 @@ bool vtkGadgetBinaryReader::ReadParticles(
     return false;
   }
   output->SetPoints(points);
-  if (!haveMasses && this->ReadsArray("Masses"))
+  // The mass table's 0 means "in the MASS block": a type with neither has no masses (not 0).
+  const double tableMass = firstLayout->Head.MassTable[number];
+  if (!haveMasses && tableMass > 0.0 && this->ReadsArray("Masses"))
   {
-    AddTableMasses(pointData, count, firstLayout->Head.MassTable[number]);
+    AddTableMasses(pointData, count, tableMass);
+    haveMasses = true;
   }
-  markers.Mass = "Masses";
+  markers.Mass = haveMasses ? "Masses" : "";
   MarkSPHArrays(output, markers);
   return true;
 }

@@ -291,6 +291,8 @@ std::vector<std::string> PointArrayNames(hid_t file, const std::string& group)
 }
 
 const char* const DensityNames[] = { "Density", "Densities" };
+// GADGET, GIZMO, AREPO and SWIFT write Masses; EAGLE, OWLS and other GADGET-3 variants Mass.
+const char* const MassNames[] = { "Masses", "Mass" };
 const char* const SmoothingLengthNames[] = { "SmoothingLength", "SmoothingLengths" };
 
 template <std::size_t N>
@@ -468,9 +470,9 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
       if (count > 0 && !listedArrays[t])
       {
         arraysOf[t] = PointArrayNames(part, group);
-        const bool massDataset =
-          std::find(arraysOf[t].begin(), arraysOf[t].end(), "Masses") != arraysOf[t].end();
-        if (!massDataset && t < static_cast<int>(this->MassTable.size()))
+        const bool massDataset = std::any_of(arraysOf[t].begin(), arraysOf[t].end(),
+          [](const std::string& array) { return OneOf(array, MassNames); });
+        if (!massDataset && this->TableMass(t) > 0.0)
         {
           arraysOf[t].push_back("Masses"); // from the MassTable
         }
@@ -617,7 +619,8 @@ bool vtkHDF5SnapshotReader::ReadParticles(
 
   vtkPointData* pointData = output->GetPointData();
   vtkNew<vtkPoints> points;
-  bool havePoints = false, haveMasses = false;
+  bool havePoints = false;
+  std::string massName;
   SPHMarkers markers;
   markers.Kernel = this->Kernel;
   markers.SupportPerSmoothingLength = this->SupportPerSmoothingLength;
@@ -643,7 +646,7 @@ bool vtkHDF5SnapshotReader::ReadParticles(
       continue;
     }
     pointData->AddArray(array);
-    haveMasses = haveMasses || name == "Masses";
+    massName = massName.empty() && OneOf(name, MassNames) ? name : massName;
     markers.Density = OneOf(name, DensityNames) ? name : markers.Density;
     markers.SmoothingLength = OneOf(name, SmoothingLengthNames) ? name : markers.SmoothingLength;
   }
@@ -653,13 +656,14 @@ bool vtkHDF5SnapshotReader::ReadParticles(
     return false;
   }
   output->SetPoints(points);
-  if (!haveMasses && number < static_cast<int>(this->MassTable.size()) &&
-    this->ReadsArray("Masses"))
+  // GADGET's MassTable gives a type's mass where it has no mass dataset; 0 there means the
+  // masses are in the file, so a type with neither has none (not masses of 0).
+  if (massName.empty() && this->TableMass(number) > 0.0 && this->ReadsArray("Masses"))
   {
-    AddTableMasses(pointData, count, this->MassTable[number]);
-    haveMasses = true;
+    AddTableMasses(pointData, count, this->TableMass(number));
+    massName = "Masses";
   }
-  markers.Mass = haveMasses ? "Masses" : "";
+  markers.Mass = massName;
   MarkSPHArrays(output, markers);
   return true;
 }

@@ -69,6 +69,13 @@ private:
   std::vector<int> TypeNumbers;                   // PartType number of each listed type
   std::vector<std::vector<long long>> PartCounts; // [part][listed type]: particles in that file
   std::vector<double> MassTable;                  // per PartType number
+  // The MassTable's mass of PartType `number`, 0 where the table has none.
+  double TableMass(int number) const
+  {
+    return number >= 0 && number < static_cast<int>(this->MassTable.size())
+      ? this->MassTable[number]
+      : 0.0;
+  }
   // The SPH kernel and its support per smoothing length (SWIFT's HydroScheme "Kernel function"
   // and "Kernel gamma"; GADGET-4's Config WENDLAND_C2/C4/C6_KERNEL; else GADGET's cubic spline,
   // h = H).

@@ -28,20 +28,70 @@ struct TipsyHeader
   double Time = 0.0;
   std::int32_t Bodies = 0, Dimensions = 0, Gas = 0, Dark = 0, Stars = 0;
   bool BigEndian = true;
+  int PositionBytes = 4, VelocityBytes = 4; // 8: doubles (the file's size tells)
 };
 
 using lsi::FromBytes;
 
-bool Plausible(const TipsyHeader& h, std::uint64_t fileSize)
+// The three record layouts of a Tipsy standard file, in file order: which column of a record
+// holds what (mass 0, position 1-3 and velocity 4-6 in all of them), and how many columns.
+struct Layout
+{
+  const char* TypeName;
+  int Columns;
+  std::vector<std::pair<const char*, int>> Scalars;
+};
+const Layout Layouts[3] = {
+  { "Gas", 12,
+    { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
+      { "phi", 11 } } },
+  { "DarkMatter", 9, { { "mass", 0 }, { "eps", 7 }, { "phi", 8 } } },
+  { "Stars", 11, { { "mass", 0 }, { "metals", 7 }, { "tform", 8 }, { "eps", 9 }, { "phi", 10 } } },
+};
+
+// A record's bytes: the mass, 3 positions, 3 velocities, then the other columns as floats.
+std::uint64_t RecordBytes(int kind, int positionBytes, int velocityBytes)
+{
+  return 4ull * (Layouts[kind].Columns - 6) + 3ull * positionBytes + 3ull * velocityBytes;
+}
+
+std::uint64_t FileBytes(const TipsyHeader& h, int positionBytes, int velocityBytes)
+{
+  const std::uint64_t counts[3] = { static_cast<std::uint64_t>(h.Gas),
+    static_cast<std::uint64_t>(h.Dark), static_cast<std::uint64_t>(h.Stars) };
+  std::uint64_t bytes = 32;
+  for (int k = 0; k < 3; ++k)
+  {
+    bytes += counts[k] * RecordBytes(k, positionBytes, velocityBytes);
+  }
+  return bytes;
+}
+
+// A consistent header, and the record precision the file's size fits: exactly one of the
+// double-precision layouts (positions; positions and velocities), else floats with the file at
+// least as long as they need (files with trailing bytes were always read so).
+bool Plausible(TipsyHeader& h, std::uint64_t fileSize)
 {
   if (h.Gas < 0 || h.Dark < 0 || h.Stars < 0 || h.Dimensions < 1 || h.Dimensions > 3 ||
     static_cast<std::int64_t>(h.Gas) + h.Dark + h.Stars != h.Bodies)
   {
     return false;
   }
-  const std::uint64_t needed =
-    32 + 48ull * static_cast<std::uint64_t>(h.Gas) + 36ull * h.Dark + 44ull * h.Stars;
-  return fileSize >= needed;
+  h.PositionBytes = h.VelocityBytes = 4;
+  if (fileSize == FileBytes(h, 4, 4))
+  {
+    return true;
+  }
+  for (int velocityBytes : { 4, 8 })
+  {
+    if (h.Bodies > 0 && fileSize == FileBytes(h, 8, velocityBytes))
+    {
+      h.PositionBytes = 8;
+      h.VelocityBytes = velocityBytes;
+      return true;
+    }
+  }
+  return fileSize >= FileBytes(h, 4, 4);
 }
 
 // Reads and checks the header; tries big-endian (the standard) first, then little-endian.
@@ -75,21 +125,6 @@ bool ReadHeader(std::ifstream& file, TipsyHeader& header, std::string& problem)
   problem = "not a Tipsy standard file (inconsistent header or truncated particle data)";
   return false;
 }
-// The three record layouts of a Tipsy standard file, in file order: which float of a record
-// holds what (position at 1-3 and velocity at 4-6 in all of them).
-struct Layout
-{
-  const char* TypeName;
-  int Floats;
-  std::vector<std::pair<const char*, int>> Scalars;
-};
-const Layout Layouts[3] = {
-  { "Gas", 12,
-    { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
-      { "phi", 11 } } },
-  { "DarkMatter", 9, { { "mass", 0 }, { "eps", 7 }, { "phi", 8 } } },
-  { "Stars", 11, { { "mass", 0 }, { "metals", 7 }, { "tform", 8 }, { "eps", 9 }, { "phi", 10 } } },
-};
 } // namespace
 
 vtkTipsyParticleReader::vtkTipsyParticleReader() = default;
@@ -118,6 +153,8 @@ bool vtkTipsyParticleReader::ReadMetaData(
   }
   time = header.Time;
   this->BigEndian = header.BigEndian;
+  this->PositionBytes = header.PositionBytes;
+  this->VelocityBytes = header.VelocityBytes;
   const long long counts[3] = { header.Gas, header.Dark, header.Stars };
   long long offset = 32;
   this->TypeKinds.clear();
@@ -139,12 +176,19 @@ bool vtkTipsyParticleReader::ReadMetaData(
       this->TypeKinds.push_back(k);
       this->TypeOffsets.push_back(offset);
     }
-    offset += 4LL * Layouts[k].Floats * counts[k];
+    offset +=
+      static_cast<long long>(RecordBytes(k, this->PositionBytes, this->VelocityBytes)) * counts[k];
   }
-  vtkNew<vtkDoubleArray> timeField;
-  timeField->SetName("Time");
-  timeField->InsertNextValue(header.Time);
-  fields->AddArray(timeField);
+  const std::pair<const char*, double> notes[] = { { "Time", header.Time },
+    { "TipsyDoublePositions", this->PositionBytes == 8 ? 1.0 : 0.0 },
+    { "TipsyDoubleVelocities", this->VelocityBytes == 8 ? 1.0 : 0.0 } };
+  for (const auto& note : notes)
+  {
+    vtkNew<vtkDoubleArray> field;
+    field->SetName(note.first);
+    field->InsertNextValue(note.second);
+    fields->AddArray(field);
+  }
   if (types.empty())
   {
     problem = "the file holds no particles";
@@ -156,8 +200,10 @@ bool vtkTipsyParticleReader::ReadMetaData(
 bool vtkTipsyParticleReader::ReadParticles(
   std::size_t type, long long begin, long long end, vtkPolyData* output, std::string& problem)
 {
-  const Layout& layout = Layouts[this->TypeKinds[type]];
-  const std::size_t record = 4 * static_cast<std::size_t>(layout.Floats);
+  const int kind = this->TypeKinds[type];
+  const Layout& layout = Layouts[kind];
+  const int pb = this->PositionBytes, vb = this->VelocityBytes;
+  const std::size_t record = static_cast<std::size_t>(RecordBytes(kind, pb, vb));
   const vtkIdType n = static_cast<vtkIdType>(end - begin);
   std::ifstream file(this->FileName, std::ios::binary);
   std::vector<char> bytes(static_cast<std::size_t>(n) * record);
@@ -168,10 +214,15 @@ bool vtkTipsyParticleReader::ReadParticles(
     return false;
   }
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
+  points->SetDataType(pb == 8 ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(n);
-  // The columns the user reads (PointArraySelection), with the float each comes from.
-  std::vector<std::pair<vtkSmartPointer<vtkFloatArray>, int>> scalars;
+  // The columns the user reads (PointArraySelection), with the byte each starts at: the mass
+  // first, the others (column 7 on) after the positions and velocities.
+  const auto columnByte = [pb, vb](int column) {
+    return column == 0 ? std::size_t(0)
+                       : 4 + 3 * std::size_t(pb + vb) + 4 * std::size_t(column - 7);
+  };
+  std::vector<std::pair<vtkSmartPointer<vtkFloatArray>, std::size_t>> scalars;
   for (const auto& scalar : layout.Scalars)
   {
     if (this->ReadsArray(scalar.first))
@@ -179,32 +230,40 @@ bool vtkTipsyParticleReader::ReadParticles(
       auto array = vtkSmartPointer<vtkFloatArray>::New();
       array->SetName(scalar.first);
       array->SetNumberOfValues(n);
-      scalars.emplace_back(array, scalar.second);
+      scalars.emplace_back(array, columnByte(scalar.second));
     }
   }
-  vtkSmartPointer<vtkFloatArray> velocity;
+  vtkSmartPointer<vtkDataArray> velocity;
   if (this->ReadsArray("velocity"))
   {
-    velocity = vtkSmartPointer<vtkFloatArray>::New();
+    velocity = vtkSmartPointer<vtkDataArray>::Take(
+      vtkDataArray::CreateDataArray(vb == 8 ? VTK_DOUBLE : VTK_FLOAT));
     velocity->SetName("velocity");
     velocity->SetNumberOfComponents(3);
     velocity->SetNumberOfTuples(n);
   }
-  std::vector<float> v(layout.Floats);
+  // A float or a double at `at`, in the file's byte order.
+  const auto real = [this](const char* at, int size) {
+    return size == 8 ? FromBytes<double>(at, this->BigEndian)
+                     : static_cast<double>(FromBytes<float>(at, this->BigEndian));
+  };
   for (vtkIdType i = 0; i < n; ++i)
   {
-    for (int c = 0; c < layout.Floats; ++c)
+    const char* at = &bytes[record * static_cast<std::size_t>(i)];
+    double x[3], v[3];
+    for (int d = 0; d < 3; ++d)
     {
-      v[c] = FromBytes<float>(&bytes[record * i + 4 * c], this->BigEndian);
+      x[d] = real(at + 4 + pb * d, pb);
+      v[d] = real(at + 4 + 3 * pb + vb * d, vb);
     }
-    points->SetPoint(i, v[1], v[2], v[3]);
+    points->SetPoint(i, x);
     if (velocity)
     {
-      velocity->SetTypedTuple(i, &v[4]);
+      velocity->SetTuple(i, v);
     }
     for (auto& scalar : scalars)
     {
-      scalar.first->SetValue(i, v[scalar.second]);
+      scalar.first->SetValue(i, FromBytes<float>(at + scalar.second, this->BigEndian));
     }
   }
   output->SetPoints(points);

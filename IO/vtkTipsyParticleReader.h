@@ -9,7 +9,11 @@
  * float32 each (mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi), ndark dark-matter
  * particles of 9 (mass, x, y, z, vx, vy, vz, eps, phi) and nstar star particles of 11 (mass, x,
  * y, z, vx, vy, vz, metals, tform, eps, phi). The standard byte order is big-endian (XDR);
- * little-endian files are recognised from their header. Each type's columns become point
+ * little-endian files are recognised from their header. Positions, or positions and
+ * velocities, may be doubles (ChaNGa's bDoublePos and bDoubleVel, Gasoline's and tipsy's
+ * DOUBLE_POS and DOUBLE_POS_VEL): the file does not say, its size does (exactly the header and
+ * records of one layout); they are read as doubles then, and field data TipsyDoublePositions and
+ * TipsyDoubleVelocities (0 or 1) say which layout was read. Each type's columns become point
  * arrays (velocity as a vector), gas's rho the active scalars. Particle types ("Gas",
  * "DarkMatter", "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
@@ -46,8 +50,9 @@ private:
   void operator=(const vtkTipsyParticleReader&) = delete;
 
   bool BigEndian = true;
-  std::vector<int> TypeKinds;         // 0 gas, 1 dark, 2 star, per listed type
-  std::vector<long long> TypeOffsets; // byte offset of each listed type's first record
+  int PositionBytes = 4, VelocityBytes = 4; // 8 in double-precision files (from the size)
+  std::vector<int> TypeKinds;               // 0 gas, 1 dark, 2 star, per listed type
+  std::vector<long long> TypeOffsets;       // byte offset of each listed type's first record
 };
 
 #endif

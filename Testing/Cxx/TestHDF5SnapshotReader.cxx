@@ -198,6 +198,30 @@ void TestArepoLike(const std::string& dir)
     path + ": stars alone: 7, with their formation times");
 }
 
+// EAGLE's gas masses are `Mass`; a MassTable of zeros gives no masses (GADGET's "in the file"),
+// so dark matter without a mass dataset has none: before, it got Masses of 0, and the gas too
+// (beside its Mass), which the SPH field summed to a field of zeros.
+void TestEagleLike(const std::string& dir)
+{
+  const std::string path = dir + "/eagle_like.hdf5";
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  vtkDataArray* mass = gas ? gas->GetPointData()->GetArray("Mass") : nullptr;
+  Check(gas && gas->GetNumberOfPoints() == 20 && mass && mass->GetRange()[0] == 0.25 &&
+      !gas->GetPointData()->GetArray("Masses") && FieldString(gas, "MassArray") == "Mass",
+    path + ": the gas's Mass read and marked, no Masses made (got MassArray '" +
+      (gas ? FieldString(gas, "MassArray") : std::string()) + "')");
+  reader->SetParticleTypeStatus("Gas (PartType0)", 0);
+  reader->SetParticleTypeStatus("DarkMatter (PartType1)", 1);
+  reader->Update();
+  vtkPolyData* dark = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(dark && dark->GetNumberOfPoints() == 15 && !dark->GetPointData()->GetArray("Masses") &&
+      FieldString(dark, "MassArray").empty(),
+    path + ": dark matter with a MassTable mass of 0 and no dataset: no masses");
+}
+
 void TestBadFiles(const std::string& dir)
 {
   struct Case
@@ -372,6 +396,7 @@ int main(int argc, char* argv[])
   }
   TestMultiFileGadget(argv[1]);
   TestArepoLike(argv[1]);
+  TestEagleLike(argv[1]);
   TestBadFiles(argv[1]);
   TestStringArrays(argv[1]);
   TestPointArraySelection(argv[1]);

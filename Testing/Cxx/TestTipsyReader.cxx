@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The Tipsy reader: writes small Tipsy standard files with known particles (big- and
-// little-endian, with dark and star particles after the gas) and checks what comes back, then
+// little-endian, with dark and star particles after the gas; single precision, then double
+// precision positions, and positions and velocities) and checks what comes back, then
 // bad files (a clear error, an empty output), then the two real files given as arguments
 // (Data/ChaNGa) with their particle counts and bounds.
 #include "vtkTipsyParticleReader.h"
@@ -22,6 +23,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkVariant.h"
 
@@ -82,7 +84,33 @@ float GasValue(int i, int column)
 constexpr int GasCount = 3, DarkCount = 2, StarCount = 1;
 constexpr double FileTime = 0.75;
 
-void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
+// A position or velocity column written in double precision: a value a float cannot hold, so
+// that reading it as a float shows.
+double PreciseValue(int kind, int i, int column)
+{
+  return static_cast<double>(Value(kind, i, column)) + 1e-6 * (column + 1);
+}
+
+// A record: the mass, positions and velocities (`positionBytes`, `velocityBytes`: 4 floats, 8
+// doubles), the other columns as floats.
+void PutRecord(TipsyWriter& w, int kind, int i, int columns, int positionBytes, int velocityBytes)
+{
+  for (int c = 0; c < columns; ++c)
+  {
+    const int bytes = c == 0 ? 4 : c <= 3 ? positionBytes : c <= 6 ? velocityBytes : 4;
+    if (bytes == 8)
+    {
+      w.Put<double>(PreciseValue(kind, i, c));
+    }
+    else
+    {
+      w.Put<float>(Value(kind, i, c));
+    }
+  }
+}
+
+void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0,
+  int positionBytes = 4, int velocityBytes = 4)
 {
   {
     TipsyWriter w(path, bigEndian);
@@ -93,25 +121,12 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0)
     w.Put<std::int32_t>(DarkCount);
     w.Put<std::int32_t>(StarCount);
     w.Put<std::int32_t>(0); // pad
-    for (int i = 0; i < GasCount; ++i)
+    const int counts[3] = { GasCount, DarkCount, StarCount }, columns[3] = { 12, 9, 11 };
+    for (int k = 0; k < 3; ++k)
     {
-      for (int c = 0; c < 12; ++c)
+      for (int i = 0; i < counts[k]; ++i)
       {
-        w.Put<float>(GasValue(i, c));
-      }
-    }
-    for (int i = 0; i < DarkCount; ++i)
-    {
-      for (int c = 0; c < 9; ++c)
-      {
-        w.Put<float>(Value(1, i, c));
-      }
-    }
-    for (int i = 0; i < StarCount; ++i)
-    {
-      for (int c = 0; c < 11; ++c)
-      {
-        w.Put<float>(Value(2, i, c));
+        PutRecord(w, k, i, columns[k], positionBytes, velocityBytes);
       }
     }
   }
@@ -235,6 +250,76 @@ void TestKnownParticles(bool bigEndian)
   std::remove(path.c_str());
 }
 
+// Double-precision positions (ChaNGa's bDoublePos), and positions and velocities
+// (bDoubleVel too): recognised from the file's size, every value read back exactly, the
+// positions and velocities as doubles, the layout said in field data.
+void TestDoublePrecision(int velocityBytes, bool bigEndian)
+{
+  const std::string what = std::string("double positions") +
+    (velocityBytes == 8 ? " and velocities" : "") +
+    (bigEndian ? ", big-endian" : ", little-endian");
+  const std::string path = "tipsy_test_double.std";
+  WriteTipsy(path, bigEndian, 0, 8, velocityBytes);
+  Check(vtkTipsyParticleReader::CanReadFile(path.c_str()), what + ": CanReadFile");
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetParticleTypeStatus("DarkMatter", 1);
+  reader->SetParticleTypeStatus("Stars", 1);
+  reader->Update();
+  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  const std::vector<std::pair<const char*, int>> columnsOf[] = {
+    { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
+      { "phi", 11 } },
+    { { "mass", 0 }, { "eps", 7 }, { "phi", 8 } },
+    { { "mass", 0 }, { "metals", 7 }, { "tform", 8 }, { "eps", 9 }, { "phi", 10 } },
+  };
+  const int counts[] = { GasCount, DarkCount, StarCount };
+  double worst = blocks && blocks->GetNumberOfBlocks() == 3 ? 0.0 : HUGE_VAL;
+  bool doubles = true, flagged = true;
+  for (unsigned int k = 0; blocks && k < blocks->GetNumberOfBlocks() && k < 3; ++k)
+  {
+    vtkPolyData* block = vtkPolyData::SafeDownCast(blocks->GetBlock(k));
+    vtkDataArray* velocity = block ? block->GetPointData()->GetArray("velocity") : nullptr;
+    if (!block || block->GetNumberOfPoints() != counts[k] || !velocity)
+    {
+      worst = HUGE_VAL;
+      continue;
+    }
+    doubles = doubles && block->GetPoints()->GetDataType() == VTK_DOUBLE &&
+      velocity->GetDataType() == (velocityBytes == 8 ? VTK_DOUBLE : VTK_FLOAT);
+    vtkDataArray* positionsFlag =
+      vtkDataArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("TipsyDoublePositions"));
+    vtkDataArray* velocitiesFlag =
+      vtkDataArray::SafeDownCast(block->GetFieldData()->GetAbstractArray("TipsyDoubleVelocities"));
+    flagged = flagged && positionsFlag && positionsFlag->GetTuple1(0) == 1.0 && velocitiesFlag &&
+      velocitiesFlag->GetTuple1(0) == (velocityBytes == 8 ? 1.0 : 0.0);
+    for (int i = 0; i < counts[k]; ++i)
+    {
+      double x[3], v[3];
+      block->GetPoint(i, x);
+      velocity->GetTuple(i, v);
+      for (int d = 0; d < 3; ++d)
+      {
+        worst = std::max(worst, std::abs(x[d] - PreciseValue(k, i, 1 + d)));
+        const double expected = velocityBytes == 8 ? PreciseValue(k, i, 4 + d) : Value(k, i, 4 + d);
+        worst = std::max(worst, std::abs(v[d] - expected));
+      }
+      for (const auto& column : columnsOf[k])
+      {
+        vtkDataArray* array = block->GetPointData()->GetArray(column.first);
+        worst = array ? std::max(worst, std::abs(array->GetTuple1(i) - Value(k, i, column.second)))
+                      : HUGE_VAL;
+      }
+    }
+  }
+  Check(worst == 0.0 && doubles && flagged,
+    what + ": every value read back exactly, positions" +
+      (velocityBytes == 8 ? " and velocities" : "") + " as doubles, the layout in field data " +
+      "(worst error " + std::to_string(worst) + ")");
+  std::remove(path.c_str());
+}
+
 void TestBadFiles()
 {
   struct Case
@@ -329,6 +414,9 @@ int main(int argc, char* argv[])
 {
   TestKnownParticles(true);
   TestKnownParticles(false);
+  TestDoublePrecision(4, true);
+  TestDoublePrecision(8, true);
+  TestDoublePrecision(8, false);
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
   // in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).

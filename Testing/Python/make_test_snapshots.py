@@ -32,6 +32,9 @@ tests can check each one.
   size); swift_old_cells.hdf5: the same particles in one file with older SWIFT's global
   Offsets and each cell's MinPositions / MaxPositions; swift_bad_cells.hdf5: the same with an
   offset beyond the file (the reader reads every particle then).
+- eagle_like.hdf5: EAGLE style (GADGET-3): 20 gas with a `Mass` dataset (not Masses), 15 dark
+  matter with no mass dataset, and a MassTable of zeros (the masses are in the file, GADGET's
+  convention): the gas's masses are `Mass`, the dark matter has none (not masses of 0).
 - kernel_swift_<n>.hdf5 (n = 0 ... 6): 10 gas particles each, with SWIFT's HydroScheme
   attributes "Kernel function" (every name SWIFT writes, then "Gaussian", which no reader
   knows) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
@@ -242,6 +245,13 @@ def main(out):
         stars["Coordinates"] = np.arange(21, dtype=np.float64).reshape(7, 3)
         stars["Masses"] = np.full(7, 2.0)
         stars["GFM_StellarFormationTime"] = np.linspace(0.1, 0.7, 7)
+    # EAGLE style: gas masses in `Mass`, a MassTable of zeros, dark matter without masses.
+    with h5py.File(path("eagle_like.hdf5"), "w") as f:
+        header(f, [20, 15, 0, 0, 0, 0], [20, 15, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(10.0))
+        g = f.create_group("PartType0")
+        gas(g, 0, 20, masses=False)
+        g["Mass"] = np.full(20, 0.25, dtype=np.float32)
+        dark(f.create_group("PartType1"), 0, 15)
     # Bad files.
     with h5py.File(path("bad_not_snapshot.hdf5"), "w") as f:
         f.create_group("Data")["x"] = np.arange(10.0)
