@@ -49,24 +49,6 @@ vtkDataArray* FindArray(vtkPointSet* input, const std::string& requested, const 
   return nullptr;
 }
 
-const char* KernelName(SPHKernel kernel)
-{
-  switch (kernel)
-  {
-    case SPHKernel::QuinticSpline:
-      return "quintic spline (M6)";
-    case SPHKernel::WendlandC2:
-      return "Wendland C2";
-    case SPHKernel::QuarticSpline:
-      return "quartic spline (M5)";
-    case SPHKernel::WendlandC4:
-      return "Wendland C4";
-    case SPHKernel::WendlandC6:
-      return "Wendland C6";
-    default:
-      return "cubic spline (M4)";
-  }
-}
 } // namespace
 
 std::string MarkedArrayName(vtkDataObject* data, const char* marker)
@@ -163,7 +145,7 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
       ? marked->GetTuple1(0)
       : (hName == "hsmooth" ? 2.0 : 1.0);
   }
-  choice = std::string("Field: the SPH interpolant, ") + KernelName(arrays.Kernel) +
+  choice = std::string("Field: the SPH interpolant, ") + NamesOf(arrays.Kernel).Label +
     " kernel with support " + std::to_string(arrays.SupportPerSmoothingLength) + " x '" + hName +
     "', masses '" + mName + "', " +
     (arrays.ValuesAreDensity ? "the density summed from the masses."

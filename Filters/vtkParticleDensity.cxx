@@ -261,7 +261,7 @@ int vtkParticleDensity::RequestData(
   NameInFieldData(fields, "DensityArray", "Density");
   NameInFieldData(fields, "SmoothingLengthArray", "SmoothingLength");
   NameInFieldData(fields, "MassArray", masses ? masses->GetName() : "Masses");
-  NameInFieldData(fields, "SPHKernel", lsi::SPHKernelMarker(kernel));
+  NameInFieldData(fields, "SPHKernel", lsi::NamesOf(kernel).Marker);
   vtkNew<vtkDoubleArray> supportFactor; // SmoothingLength is the support radius itself
   supportFactor->SetName("SupportPerSmoothingLength");
   supportFactor->InsertNextValue(1.0);

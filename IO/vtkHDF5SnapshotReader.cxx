@@ -20,11 +20,11 @@
 #include "vtk_hdf5.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <utility>
 
 vtkStandardNewMacro(vtkHDF5SnapshotReader);
 
@@ -110,7 +110,7 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
   H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index, visit, &context);
 }
 
-// The SPH kernel a file names, as the readers mark it (lsi::SPHKernelMarker), and its support
+// The SPH kernel a file names, as the readers mark it (lsi::NamesOf), and its support
 // per smoothing length. SWIFT writes HydroScheme attributes "Kernel function" (e.g. "Quintic
 // spline (M6)", "Wendland C4") and "Kernel gamma" (support = gamma h). GADGET-4 writes its
 // compile flags in Config (WENDLAND_C2_KERNEL, ..._C4_, ..._C6_; none: the cubic spline) and h
@@ -131,7 +131,7 @@ void ReadKernel(
     {
       const std::string written = name->GetValue(0);
       const bool known = lsi::SPHKernelFromName(written, named);
-      kernel = known ? std::string(lsi::SPHKernelMarker(named)) : written;
+      kernel = known ? std::string(lsi::NamesOf(named).Marker) : written;
       unknown = known ? std::string() : written;
     }
     const std::vector<double> gamma = NumericAttribute(scheme, "Kernel gamma");
@@ -143,11 +143,15 @@ void ReadKernel(
   else if (Exists(file, "Config"))
   {
     Handle config(H5Gopen2(file, "Config", H5P_DEFAULT), H5Gclose);
-    for (const char* flag : { "WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL" })
+    const std::pair<const char*, lsi::SPHKernel> flags[] = { { "WENDLAND_C2_KERNEL",
+                                                               lsi::SPHKernel::WendlandC2 },
+      { "WENDLAND_C4_KERNEL", lsi::SPHKernel::WendlandC4 },
+      { "WENDLAND_C6_KERNEL", lsi::SPHKernel::WendlandC6 } };
+    for (const auto& flag : flags)
     {
-      if (H5Aexists(config, flag) > 0)
+      if (H5Aexists(config, flag.first) > 0)
       {
-        kernel = std::string("Wendland") + std::string(flag).substr(9, 2); // as SPHKernelMarker
+        kernel = lsi::NamesOf(flag.second).Marker;
       }
     }
   }

@@ -24,9 +24,34 @@ enum class SPHKernel
   WendlandC6 = 5,    // SWIFT's and GADGET-4's "Wendland C6"
 };
 
-/// Every kernel, for loops over them (tests, property lists).
-constexpr SPHKernel AllSPHKernels[] = { SPHKernel::CubicSpline, SPHKernel::QuinticSpline,
-  SPHKernel::WendlandC2, SPHKernel::QuarticSpline, SPHKernel::WendlandC4, SPHKernel::WendlandC6 };
+/// Every kernel with the name the readers mark it with ("SPHKernel" field data, read back by
+/// SPHKernelFromName) and the name messages give it.
+struct SPHKernelName
+{
+  SPHKernel Kernel;
+  const char* Marker;
+  const char* Label;
+};
+constexpr SPHKernelName SPHKernelNames[] = {
+  { SPHKernel::CubicSpline, "CubicSpline", "cubic spline (M4)" },
+  { SPHKernel::QuinticSpline, "QuinticSpline", "quintic spline (M6)" },
+  { SPHKernel::WendlandC2, "WendlandC2", "Wendland C2" },
+  { SPHKernel::QuarticSpline, "QuarticSpline", "quartic spline (M5)" },
+  { SPHKernel::WendlandC4, "WendlandC4", "Wendland C4" },
+  { SPHKernel::WendlandC6, "WendlandC6", "Wendland C6" },
+};
+
+inline const SPHKernelName& NamesOf(SPHKernel kernel)
+{
+  for (const SPHKernelName& names : SPHKernelNames)
+  {
+    if (names.Kernel == kernel)
+    {
+      return names;
+    }
+  }
+  return SPHKernelNames[0];
+}
 
 /// x^N by multiplications (std::pow is a library call, and these run billions of times).
 template <int N>
@@ -161,26 +186,6 @@ inline bool SPHKernelFromName(const std::string& name, SPHKernel& kernel)
     : quintic      ? SPHKernel::QuinticSpline
                    : SPHKernel::CubicSpline;
   return true;
-}
-
-/// The name the readers mark a kernel with ("SPHKernel" field data) and the filter reads back.
-inline const char* SPHKernelMarker(SPHKernel kernel)
-{
-  switch (kernel)
-  {
-    case SPHKernel::QuinticSpline:
-      return "QuinticSpline";
-    case SPHKernel::WendlandC2:
-      return "WendlandC2";
-    case SPHKernel::QuarticSpline:
-      return "QuarticSpline";
-    case SPHKernel::WendlandC4:
-      return "WendlandC4";
-    case SPHKernel::WendlandC6:
-      return "WendlandC6";
-    default:
-      return "CubicSpline";
-  }
 }
 
 /// The kernel's shape on q = r / H in [0, 1): W = Normalization<K>() / H^3 * w(q) and

@@ -1104,8 +1104,9 @@ void TestTangentBasis()
 // support radii (the kernel scales as 1 / H^3), and is positive inside, zero at and beyond H.
 void TestSPHKernels()
 {
-  for (lsi::SPHKernel kernel : lsi::AllSPHKernels)
+  for (const lsi::SPHKernelName& names : lsi::SPHKernelNames)
   {
+    const lsi::SPHKernel kernel = names.Kernel;
     for (double H : { 1.0, 0.003 })
     {
       const int steps = 3000; // even
@@ -1156,8 +1157,9 @@ void TestSPHKernels()
 void TestSPHKernelGradients()
 {
   double worst = 0.0;
-  for (lsi::SPHKernel kernel : lsi::AllSPHKernels)
+  for (const lsi::SPHKernelName& names : lsi::SPHKernelNames)
   {
+    const lsi::SPHKernel kernel = names.Kernel;
     for (double H : { 1.0, 0.003 })
     {
       for (double q : { 0.1, 0.15, 0.3, 0.45, 0.5, 0.55, 0.7, 0.9, 0.99 })
@@ -1222,7 +1224,7 @@ void TestSPHKernelGradients()
   {
     lsi::SPHKernel read = lsi::SPHKernel::CubicSpline, marked = lsi::SPHKernel::CubicSpline;
     namesRead = namesRead && lsi::SPHKernelFromName(name.first, read) && read == name.second &&
-      lsi::SPHKernelFromName(lsi::SPHKernelMarker(name.second), marked) && marked == name.second;
+      lsi::SPHKernelFromName(lsi::NamesOf(name.second).Marker, marked) && marked == name.second;
   }
   lsi::SPHKernel untouched = lsi::SPHKernel::WendlandC6;
   for (const char* other : { "Gaussian", "Wendland C8", "", "cubic or quintic" })
