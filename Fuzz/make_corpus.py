@@ -30,6 +30,16 @@ for order, label in ((">", "big"), ("<", "little")):
     star = struct.pack(order + "11f", 1e-4, 0.5, 0.5, 0.5, 0, 0, 0, 0.02, 0.1, 0.05, 0)
     write("FuzzTipsyReader", "mixed-" + label, header + gas + dark + star)
     write("FuzzTipsyReader", "truncated-" + label, (header + gas)[:60])
+    # Double-precision positions (ChaNGa's bDoublePos), then positions and velocities too: the
+    # reader tells them from the file's size.
+    for vel, name in (("3f", "double-positions-"), ("3d", "double-velocities-")):
+        gas = b"".join(struct.pack(order + "f3d" + vel + "5f", 1e-3, i, 2 * i, 3 * i, 0, 0, 0,
+                                   1.0 + i, 100, 0.1, 0, 0) for i in range(2))
+        dark = b"".join(struct.pack(order + "f3d" + vel + "2f", 1e-2, -i, i, 0, 0, 0, 0, 0.05, 0)
+                        for i in range(2))
+        star = struct.pack(order + "f3d" + vel + "4f", 1e-4, 0.5, 0.5, 0.5, 0, 0, 0, 0.02, 0.1,
+                           0.05, 0)
+        write("FuzzTipsyReader", name + label, header + gas + dark + star)
 
 # GADGET binary: Fortran records (length, data, length); a 256-byte header (int npart[6],
 # double mass[6], time, redshift, int flag_sfr, flag_feedback, uint npartTotal[6], int
