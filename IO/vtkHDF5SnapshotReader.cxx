@@ -112,7 +112,8 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
 
 // The SPH kernel a file names, as the readers mark it (lsi::NamesOf), and its support
 // per smoothing length. SWIFT writes HydroScheme attributes "Kernel function" (e.g. "Quintic
-// spline (M6)", "Wendland C4") and "Kernel gamma" (support = gamma h). GADGET-4 writes its
+// spline (M6)", "Wendland C4") and "Kernel gamma" (support = gamma h; without it, the named
+// kernel's gamma, as SWIFT defines h for every kernel). GADGET-4 writes its
 // compile flags in Config (WENDLAND_C2_KERNEL, ..._C4_, ..._C6_; none: the cubic spline) and h
 // is the support. Anything else keeps GADGET's cubic spline, h = H. A kernel name that is none
 // of lsi::SPHKernel's is marked as written (the filter warns and uses the cubic spline) and
@@ -138,6 +139,11 @@ void ReadKernel(
     if (!gamma.empty() && gamma[0] > 0.0 && std::isfinite(gamma[0]))
     {
       supportPerSmoothingLength = gamma[0];
+    }
+    else if (unknown.empty() && name)
+    {
+      // A SWIFT file naming its kernel without its gamma: SWIFT's h is still H / gamma.
+      supportPerSmoothingLength = lsi::NamesOf(named).SwiftGamma;
     }
   }
   else if (Exists(file, "Config"))

@@ -25,20 +25,23 @@ enum class SPHKernel
 };
 
 /// Every kernel with the name the readers mark it with ("SPHKernel" field data, read back by
-/// SPHKernelFromName) and the name messages give it.
+/// SPHKernelFromName), the name messages give it, and its support per smoothing length in
+/// SWIFT's convention (Dehnen & Aly 2012's 3D gamma = H / h, h twice the kernel's standard
+/// deviation), which SWIFT writes as HydroScheme's "Kernel gamma".
 struct SPHKernelName
 {
   SPHKernel Kernel;
   const char* Marker;
   const char* Label;
+  double SwiftGamma;
 };
 constexpr SPHKernelName SPHKernelNames[] = {
-  { SPHKernel::CubicSpline, "CubicSpline", "cubic spline (M4)" },
-  { SPHKernel::QuinticSpline, "QuinticSpline", "quintic spline (M6)" },
-  { SPHKernel::WendlandC2, "WendlandC2", "Wendland C2" },
-  { SPHKernel::QuarticSpline, "QuarticSpline", "quartic spline (M5)" },
-  { SPHKernel::WendlandC4, "WendlandC4", "Wendland C4" },
-  { SPHKernel::WendlandC6, "WendlandC6", "Wendland C6" },
+  { SPHKernel::CubicSpline, "CubicSpline", "cubic spline (M4)", 1.825742 },
+  { SPHKernel::QuinticSpline, "QuinticSpline", "quintic spline (M6)", 2.195775 },
+  { SPHKernel::WendlandC2, "WendlandC2", "Wendland C2", 1.936492 },
+  { SPHKernel::QuarticSpline, "QuarticSpline", "quartic spline (M5)", 2.018932 },
+  { SPHKernel::WendlandC4, "WendlandC4", "Wendland C4", 2.207940 },
+  { SPHKernel::WendlandC6, "WendlandC6", "Wendland C6", 2.449490 },
 };
 
 inline const SPHKernelName& NamesOf(SPHKernel kernel)

@@ -317,8 +317,9 @@ void TestStringArrays(const std::string& dir)
     path + ": variable-length strings (got " + FieldString(gas, "Variable") + ")");
 }
 
-// The kernel each SWIFT name and each GADGET-4 Config flag marks, with SWIFT's support per h;
-// a name no code writes is marked as written, with a warning (the filter warns too).
+// The kernel each SWIFT name and each GADGET-4 Config flag marks, with SWIFT's support per h
+// (the file's Kernel gamma, else the named kernel's); a name no code writes is marked as
+// written, with a warning (the filter warns too).
 void TestKernelMarkers(const std::string& dir)
 {
   const struct
@@ -331,6 +332,7 @@ void TestKernelMarkers(const std::string& dir)
     { "kernel_swift_3.hdf5", "WendlandC2", 1.936492 },
     { "kernel_swift_4.hdf5", "WendlandC4", 2.207940 },
     { "kernel_swift_5.hdf5", "WendlandC6", 2.449490 }, { "kernel_swift_6.hdf5", "Gaussian", 3.0 },
+    { "kernel_swift_7.hdf5", "WendlandC4", 2.207940 }, // no Kernel gamma: the kernel's own
     { "kernel_gadget4_WENDLAND_C2_KERNEL.hdf5", "WendlandC2", 1.0 },
     { "kernel_gadget4_WENDLAND_C4_KERNEL.hdf5", "WendlandC4", 1.0 },
     { "kernel_gadget4_WENDLAND_C6_KERNEL.hdf5", "WendlandC6", 1.0 } };

@@ -1123,6 +1123,22 @@ void TestSPHKernels()
                 << integral << "\n";
       Check(std::abs(integral - 1.0) < 1e-6, "SPH kernel integrates to 1");
     }
+    // SWIFT's h is twice the kernel's standard deviation (Dehnen & Aly 2012): gamma = H / (2
+    // sigma), sigma^2 = <r^2> / 3 over the kernel.
+    double secondMoment = 0.0;
+    const int steps = 3000;
+    for (int s = 0; s <= steps; ++s)
+    {
+      const double r = static_cast<double>(s) / steps;
+      const double weight = (s == 0 || s == steps) ? 1.0 : (s % 2 ? 4.0 : 2.0);
+      secondMoment +=
+        weight * 4.0 * 3.14159265358979323846 * r * r * r * r * lsi::SPHKernelValue(kernel, r, 1.0);
+    }
+    secondMoment /= 3.0 * steps;
+    const double gamma = 1.0 / (2.0 * std::sqrt(secondMoment / 3.0));
+    std::cout << names.Label << ": H / (2 sigma) " << gamma << ", SWIFT's gamma "
+              << names.SwiftGamma << "\n";
+    Check(std::abs(gamma - names.SwiftGamma) < 1e-6, "SWIFT's gamma is H / (2 sigma)");
     // Known values of the published forms at q = 0 and q = 1/2 (support 1): cubic spline
     // 8/pi and 8/pi * 1/4; quintic (3^7 / (40 pi)) (1 - 6 (2/3)^5 + 15 (1/3)^5) and
     // (3^7 / (40 pi)) ((1/2)^5 - 6 (1/6)^5); Wendland C2 21/(2 pi) and 21/(2 pi) 3/16;

@@ -35,9 +35,9 @@ tests can check each one.
 - eagle_like.hdf5: EAGLE style (GADGET-3): 20 gas with a `Mass` dataset (not Masses), 15 dark
   matter with no mass dataset, and a MassTable of zeros (the masses are in the file, GADGET's
   convention): the gas's masses are `Mass`, the dark matter has none (not masses of 0).
-- kernel_swift_<n>.hdf5 (n = 0 ... 6): 10 gas particles each, with SWIFT's HydroScheme
+- kernel_swift_<n>.hdf5 (n = 0 ... 7): 10 gas particles each, with SWIFT's HydroScheme
   attributes "Kernel function" (every name SWIFT writes, then "Gaussian", which no reader
-  knows) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
+  knows, then "Wendland C4" without a gamma) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
   WENDLAND_C2_KERNEL, WENDLAND_C4_KERNEL or WENDLAND_C6_KERNEL.
 - periodic_blob.hdf5: 40,000 gas particles uniform in a periodic box of side 1 (BoxSize 1),
   with Density = exp(-d^2 / (2 0.08^2)), d the distance to the nearest image of the box's corner
@@ -202,7 +202,8 @@ def periodic_blob(path):
 # SWIFT's kernel names (src/kernel_hydro.h) with its 3D gammas, and a name no code writes.
 SWIFT_KERNELS = [("Cubic spline (M4)", 1.825742), ("Quartic spline (M5)", 2.018932),
                  ("Quintic spline (M6)", 2.195775), ("Wendland C2", 1.936492),
-                 ("Wendland C4", 2.207940), ("Wendland C6", 2.449490), ("Gaussian", 3.0)]
+                 ("Wendland C4", 2.207940), ("Wendland C6", 2.449490), ("Gaussian", 3.0),
+                 ("Wendland C4", None)]
 
 
 def kernel_snapshots(path):
@@ -212,7 +213,8 @@ def kernel_snapshots(path):
             gas(f.create_group("PartType0"), 0, 10)
             scheme = f.create_group("HydroScheme")
             scheme.attrs["Kernel function"] = np.bytes_(name)
-            scheme.attrs["Kernel gamma"] = np.float32(gamma)
+            if gamma is not None:
+                scheme.attrs["Kernel gamma"] = np.float32(gamma)
     for flag in ["WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL"]:
         with h5py.File(path("kernel_gadget4_%s.hdf5" % flag), "w") as f:
             header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
