@@ -388,14 +388,30 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
   }
   std::string unknownKernel;
   ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength, unknownKernel);
-  // Once per file and name: the metadata is read again for each update.
-  const std::string warning = this->FileName + "\n" + unknownKernel;
-  if (!unknownKernel.empty() && warning != this->KernelWarning)
+  if (!unknownKernel.empty())
   {
-    this->KernelWarning = warning;
-    vtkWarningMacro(<< this->FileName << ": HydroScheme names the kernel '" << unknownKernel
-                    << "', none of those the SPH field knows (cubic, quartic and quintic "
-                       "splines, Wendland C2, C4 and C6): set Level-Set Isosurface's Kernel.");
+    this->WarnOnce("HydroScheme names the kernel '" + unknownKernel +
+      "', none of those the SPH field knows (cubic, quartic and quintic splines, Wendland C2, C4 "
+      "and C6): set Level-Set Isosurface's Kernel.");
+  }
+  // SWIFT's subsampled snapshots keep a random fraction of a type's particles, with their
+  // full-run masses, densities and smoothing lengths: a field summed from them is that fraction
+  // of the simulation's.
+  auto* outputType = vtkStringArray::SafeDownCast(fields->GetAbstractArray("OutputType"));
+  const std::vector<double> fractions = NumericAttribute(header, "SubSampleFractions");
+  if (outputType && outputType->GetNumberOfValues() > 0 && outputType->GetValue(0) == "SubSampled")
+  {
+    for (std::size_t t = 0; t < fractions.size(); ++t)
+    {
+      if (fractions[t] < 1.0)
+      {
+        this->WarnOnce("a subsampled snapshot: PartType" + std::to_string(t) + " holds " +
+          std::to_string(fractions[t]) +
+          " of the run's particles (SubSampleFractions), so a density or SPH field summed from "
+          "them (Particle Density, Level-Set Isosurface's SPH field) is not the simulation's. "
+          "Use a full snapshot of that type.");
+      }
+    }
   }
   const std::vector<double> times = NumericAttribute(header, "Time");
   time = times.empty() ? 0.0 : times[0];
@@ -676,6 +692,15 @@ bool vtkHDF5SnapshotReader::ReadParticles(
   markers.Mass = massName;
   MarkSPHArrays(output, markers);
   return true;
+}
+
+void vtkHDF5SnapshotReader::WarnOnce(const std::string& message)
+{
+  // The metadata is read again for each update: each message once per file.
+  if (this->Warned.insert(this->FileName + "\n" + message).second)
+  {
+    vtkWarningMacro(<< this->FileName << ": " << message);
+  }
 }
 
 bool vtkHDF5SnapshotReader::RegionCandidates(std::size_t type, const double bounds[6],

@@ -33,6 +33,7 @@
 #include "vtkParticleSnapshotReader.h"
 
 #include <array>  // for std::array
+#include <set>    // for std::set
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -81,7 +82,8 @@ private:
   // h = H).
   std::string Kernel = "CubicSpline";
   double SupportPerSmoothingLength = 1.0;
-  std::string KernelWarning; // the file and kernel name last warned of (unknown kernels)
+  std::set<std::string> Warned; // file and message of each warning given (WarnOnce)
+  void WarnOnce(const std::string& message);
 };
 
 #endif

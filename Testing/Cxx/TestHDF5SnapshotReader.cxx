@@ -356,6 +356,26 @@ void TestKernelMarkers(const std::string& dir)
   }
 }
 
+// A SWIFT subsampled snapshot: read, with one warning that its gas is a tenth of the run's
+// (a field summed from it is not the simulation's), once however often it is read.
+void TestSubsampled(const std::string& dir)
+{
+  const std::string path = dir + "/swift_subsampled.hdf5";
+  vtkNew<vtkHDF5SnapshotReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<MessageCounter> warnings;
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->Update();
+  reader->Modified();
+  reader->Update();
+  vtkPolyData* gas = vtkPolyData::SafeDownCast(reader->GetOutput());
+  Check(gas && gas->GetNumberOfPoints() == 10 && warnings->Count == 1 &&
+      warnings->Last.find("subsampled") != std::string::npos &&
+      warnings->Last.find("PartType0 holds 0.1") != std::string::npos,
+    path + ": read, with one warning that the gas is a subsample (got " +
+      std::to_string(warnings->Count) + ": " + warnings->Last + ")");
+}
+
 void TestSwift(const std::string& path)
 {
   vtkNew<vtkHDF5SnapshotReader> reader;
@@ -403,6 +423,7 @@ int main(int argc, char* argv[])
   TestStringArrays(argv[1]);
   TestPointArraySelection(argv[1]);
   TestKernelMarkers(argv[1]);
+  TestSubsampled(argv[1]);
   TestSwift(argv[2]);
   std::cout << (lsi::test::Failures() ? "HDF5 reader tests FAILED\n"
                                       : "HDF5 reader tests passed\n");

@@ -39,6 +39,8 @@ tests can check each one.
   attributes "Kernel function" (every name SWIFT writes, then "Gaussian", which no reader
   knows, then "Wendland C4" without a gamma) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
   WENDLAND_C2_KERNEL, WENDLAND_C4_KERNEL or WENDLAND_C6_KERNEL.
+- swift_subsampled.hdf5: 10 gas particles in a SWIFT subsampled snapshot (Header OutputType
+  "SubSampled", SubSampleFractions 0.1 for the gas): the reader warns.
 - periodic_blob.hdf5: 40,000 gas particles uniform in a periodic box of side 1 (BoxSize 1),
   with Density = exp(-d^2 / (2 0.08^2)), d the distance to the nearest image of the box's corner
   (0, 0, 0), and no smoothing lengths (the filter fits the density itself): its isosurface at
@@ -254,6 +256,13 @@ def main(out):
         gas(g, 0, 20, masses=False)
         g["Mass"] = np.full(20, 0.25, dtype=np.float32)
         dark(f.create_group("PartType1"), 0, 15)
+    # SWIFT's subsampled output: a tenth of the gas kept, with the run's masses.
+    with h5py.File(path("swift_subsampled.hdf5"), "w") as f:
+        header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
+        f["Header"].attrs["OutputType"] = np.bytes_("SubSampled")
+        f["Header"].attrs["SubSampleFractions"] = np.array([0.1, 1, 1, 1, 1, 1, 1],
+                                                           dtype=np.float32)
+        gas(f.create_group("PartType0"), 0, 10)
     # Bad files.
     with h5py.File(path("bad_not_snapshot.hdf5"), "w") as f:
         f.create_group("Data")["x"] = np.arange(10.0)
