@@ -13,7 +13,8 @@ lengths, masses, Time and BoxSize:
   file there, the GADGET-4 gas sphere as a time series of four snapshots.
 The point array selection by keyword: the SPH field's three arrays alone give the same surface
 as all of them; a region by keyword, wrapped across a periodic box's faces or not. Then, with no array named by hand, Particle Density on a galaxy without density and Level-Set
-Isosurface on a snapshot's own density."""
+Isosurface on a snapshot's own density; the Evrard glass written as a GADGET and as an EAGLE
+HDF5 snapshot (Masses, or Mass with a MassTable of zeros) gives the same surface."""
 import os
 import sys
 
@@ -342,6 +343,43 @@ isosurface = servermanager.Fetch(surface)
 check(isosurface.GetNumberOfPoints() > 0 and isosurface.GetPointData().GetArray("Density"),
       "Level-Set Isosurface of that density (90th percentile), no array named: %d points"
       % isosurface.GetNumberOfPoints())
+
+# EAGLE's `Mass` with a MassTable of zeros against GADGET's `Masses`: the Evrard glass (density
+# by Particle Density) written both ways gives the same surface. Before, the EAGLE file got
+# Masses of 0 from its MassTable beside its Mass: a field of zeros, and no surface.
+if shared is None:
+    import h5py  # noqa: E402
+    import numpy as np  # noqa: E402
+    from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+    evrard = servermanager.Fetch(ParticleDensity(
+        Input=OpenDataFile(os.path.join(changa, "adiabtophat_glass_28721.bin")),
+        NumberOfNeighbors=64))
+    columns = {name: vtk_to_numpy(evrard.GetPointData().GetArray(name))
+               for name in ("Density", "SmoothingLength", "mass")}
+    surfaces = {}
+    for style, mass_name in (("gadget", "Masses"), ("eagle", "Mass")):
+        path = os.path.join(snapshot_dir, "evrard_%s_style.hdf5" % style)
+        with h5py.File(path, "w") as f:
+            n = evrard.GetNumberOfPoints()
+            h = f.create_group("Header")
+            h.attrs["NumPart_ThisFile"] = np.array([n, 0, 0, 0, 0, 0], dtype=np.int32)
+            h.attrs["NumPart_Total"] = np.array([n, 0, 0, 0, 0, 0], dtype=np.uint32)
+            h.attrs["MassTable"] = np.zeros(6)
+            h.attrs["NumFilesPerSnapshot"] = np.int32(1)
+            g = f.create_group("PartType0")
+            g["Coordinates"] = vtk_to_numpy(evrard.GetPoints().GetData()).astype(np.float64)
+            g["Density"] = columns["Density"]
+            g["SmoothingLength"] = columns["SmoothingLength"]
+            g[mass_name] = columns["mass"]
+        surface = LevelSetIsosurface(Input=OpenDataFile(path), IsoValue=0.31831,
+                                     SeedCenter=[0, 0, 0], SeedRadius=0.05, OutputType=0)
+        surfaces[style] = servermanager.Fetch(surface)
+    points = {style: s.GetNumberOfPoints() for style, s in surfaces.items()}
+    same = points["gadget"] == points["eagle"] and points["gadget"] > 1000 and np.array_equal(
+        vtk_to_numpy(surfaces["gadget"].GetPoints().GetData()),
+        vtk_to_numpy(surfaces["eagle"].GetPoints().GetData()))
+    check(same, "the Evrard glass as a GADGET (Masses) and an EAGLE (Mass, MassTable 0) "
+          "snapshot: the same isopoints (%s)" % points)
 
 print("%d failures" % len(failures))
 sys.exit(1 if failures else 0)
