@@ -126,9 +126,9 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   }
   else
   {
-    // The reader's marker: the kernel's name as the snapshot gives it (SWIFT's "Kernel
-    // function") or as a reader or Particle Density writes it ("WendlandC4"). None: the cubic
-    // spline of GADGET, GIZMO and ChaNGa.
+    // The marker a reader or Particle Density writes ("WendlandC4"; a snapshot's own name where
+    // the reader knew no kernel by it, which warns here). None: the cubic spline of GADGET,
+    // GIZMO and ChaNGa.
     const std::string marker = MarkedArrayName(input, "SPHKernel");
     if (!marker.empty() && !SPHKernelFromName(marker, arrays.Kernel))
     {
