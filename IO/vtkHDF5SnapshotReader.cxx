@@ -128,10 +128,11 @@ void ReadKernel(
     AttributesToFieldData(scheme, "", attributes);
     auto* name = vtkStringArray::SafeDownCast(attributes->GetAbstractArray("Kernel function"));
     lsi::SPHKernel named = lsi::SPHKernel::CubicSpline;
+    bool known = false;
     if (name && name->GetNumberOfValues() > 0 && !name->GetValue(0).empty())
     {
       const std::string written = name->GetValue(0);
-      const bool known = lsi::SPHKernelFromName(written, named);
+      known = lsi::SPHKernelFromName(written, named);
       kernel = known ? std::string(lsi::NamesOf(named).Marker) : written;
       unknown = known ? std::string() : written;
     }
@@ -140,7 +141,7 @@ void ReadKernel(
     {
       supportPerSmoothingLength = gamma[0];
     }
-    else if (unknown.empty() && name)
+    else if (known)
     {
       // A SWIFT file naming its kernel without its gamma: SWIFT's h is still H / gamma.
       supportPerSmoothingLength = lsi::NamesOf(named).SwiftGamma;
