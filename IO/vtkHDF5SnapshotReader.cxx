@@ -117,9 +117,11 @@ void AttributesToFieldData(hid_t object, const std::string& prefix, vtkFieldData
 // compile flags in Config (WENDLAND_C2_KERNEL, ..._C4_, ..._C6_; none: the cubic spline) and h
 // is the support. Anything else keeps GADGET's cubic spline, h = H. A kernel name that is none
 // of lsi::SPHKernel's is marked as written (the filter warns and uses the cubic spline) and
-// returned in `unknown`.
-void ReadKernel(
-  hid_t file, std::string& kernel, double& supportPerSmoothingLength, std::string& unknown)
+// returned in `unknown`. `biasCorrected`: GADGET-4's Config flags WENDLAND_BIAS_CORRECTION (its
+// Density has Dehnen & Aly's self-contribution taken off; a field summed from the masses does
+// not).
+void ReadKernel(hid_t file, std::string& kernel, double& supportPerSmoothingLength,
+  std::string& unknown, bool& biasCorrected)
 {
   if (Exists(file, "HydroScheme"))
   {
@@ -161,6 +163,7 @@ void ReadKernel(
         kernel = lsi::NamesOf(flag.second).Marker;
       }
     }
+    biasCorrected = H5Aexists(config, "WENDLAND_BIAS_CORRECTION") > 0;
   }
 }
 
@@ -388,7 +391,16 @@ bool vtkHDF5SnapshotReader::ReadMetaData(
     }
   }
   std::string unknownKernel;
-  ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength, unknownKernel);
+  bool biasCorrected = false;
+  ReadKernel(file, this->Kernel, this->SupportPerSmoothingLength, unknownKernel, biasCorrected);
+  if (biasCorrected)
+  {
+    this->WarnOnce("GADGET-4 was built with WENDLAND_BIAS_CORRECTION: its Density has each "
+                   "particle's self-contribution reduced (Dehnen & Aly 2012), so it is slightly "
+                   "below the SPH field summed from Masses and SmoothingLength (Particle Density, "
+                   "Level-Set Isosurface's SPH field), which has no such correction. An isovalue "
+                   "taken from Density sits that much lower on the summed field.");
+  }
   if (!unknownKernel.empty())
   {
     this->WarnOnce("HydroScheme names the kernel '" + unknownKernel +

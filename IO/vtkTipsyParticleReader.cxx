@@ -14,9 +14,11 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkTipsyParticleReader);
@@ -94,6 +96,16 @@ bool Plausible(TipsyHeader& h, std::uint64_t fileSize)
   return fileSize >= FileBytes(h, 4, 4);
 }
 
+// Whether `name` is one of kind k's columns in the main file (which an auxiliary array of that
+// name does not replace).
+bool IsMainColumn(int kind, const std::string& name)
+{
+  const auto& scalars = Layouts[kind].Scalars;
+  return name == "velocity" ||
+    std::any_of(scalars.begin(), scalars.end(),
+      [&name](const std::pair<const char*, int>& scalar) { return name == scalar.first; });
+}
+
 // Reads and checks the header; tries big-endian (the standard) first, then little-endian.
 bool ReadHeader(std::ifstream& file, TipsyHeader& header, std::string& problem)
 {
@@ -156,9 +168,11 @@ bool vtkTipsyParticleReader::ReadMetaData(
   this->PositionBytes = header.PositionBytes;
   this->VelocityBytes = header.VelocityBytes;
   const long long counts[3] = { header.Gas, header.Dark, header.Stars };
-  long long offset = 32;
+  long long offset = 32, first = 0;
   this->TypeKinds.clear();
   this->TypeOffsets.clear();
+  this->TypeFirsts.clear();
+  this->AuxiliaryArrays = lsi::io::FindTipsyAuxiliaryArrays(this->FileName, header.Bodies);
   for (int k = 0; k < 3; ++k)
   {
     if (counts[k] > 0)
@@ -172,12 +186,21 @@ bool vtkTipsyParticleReader::ReadMetaData(
         type.Arrays.push_back(scalar.first);
       }
       type.Arrays.push_back("velocity");
+      for (const auto& aux : this->AuxiliaryArrays)
+      {
+        if (!IsMainColumn(k, aux.Name))
+        {
+          type.Arrays.push_back(aux.Name);
+        }
+      }
       types.push_back(type);
       this->TypeKinds.push_back(k);
       this->TypeOffsets.push_back(offset);
+      this->TypeFirsts.push_back(first);
     }
     offset +=
       static_cast<long long>(RecordBytes(k, this->PositionBytes, this->VelocityBytes)) * counts[k];
+    first += counts[k];
   }
   const std::pair<const char*, double> notes[] = { { "Time", header.Time },
     { "TipsyDoublePositions", this->PositionBytes == 8 ? 1.0 : 0.0 },
@@ -274,6 +297,20 @@ bool vtkTipsyParticleReader::ReadParticles(
   if (velocity)
   {
     output->GetPointData()->AddArray(velocity);
+  }
+  for (const auto& aux : this->AuxiliaryArrays)
+  {
+    if (!IsMainColumn(kind, aux.Name) && this->ReadsArray(aux.Name))
+    {
+      const long long first = this->TypeFirsts[type];
+      vtkSmartPointer<vtkDataArray> values =
+        lsi::io::ReadTipsyAuxiliaryArray(aux, first + begin, first + end, problem);
+      if (!values)
+      {
+        return false;
+      }
+      output->GetPointData()->AddArray(values);
+    }
   }
   if (this->TypeKinds[type] == 0) // gas
   {

@@ -14,13 +14,17 @@
  * DOUBLE_POS and DOUBLE_POS_VEL): the file does not say, its size does (exactly the header and
  * records of one layout); they are read as doubles then, and field data TipsyDoublePositions and
  * TipsyDoubleVelocities (0 or 1) say which layout was read. Each type's columns become point
- * arrays (velocity as a vector), gas's rho the active scalars. Particle types ("Gas",
- * "DarkMatter", "Stars"), pieces and output: see vtkParticleSnapshotReader.
+ * arrays (velocity as a vector), gas's rho the active scalars. The auxiliary arrays beside the
+ * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, ...; text or binary,
+ * one value a particle, see TipsyAuxiliaryArrays.h) become point arrays NAME of every type,
+ * except where NAME is a column of the main file. Particle types ("Gas", "DarkMatter",
+ * "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h
 
 #include "LevelSetIsosurfaceIOModule.h" // for export macro
+#include "TipsyAuxiliaryArrays.h"       // for lsi::io::TipsyAuxiliaryArray
 #include "vtkParticleSnapshotReader.h"
 
 #include <string> // for std::string
@@ -53,6 +57,8 @@ private:
   int PositionBytes = 4, VelocityBytes = 4; // 8 in double-precision files (from the size)
   std::vector<int> TypeKinds;               // 0 gas, 1 dark, 2 star, per listed type
   std::vector<long long> TypeOffsets;       // byte offset of each listed type's first record
+  std::vector<long long> TypeFirsts;        // index of each listed type's first particle
+  std::vector<lsi::io::TipsyAuxiliaryArray> AuxiliaryArrays; // SNAPSHOT.NAME files beside it
 };
 
 #endif

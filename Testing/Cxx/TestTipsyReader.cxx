@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The Tipsy reader: writes small Tipsy standard files with known particles (big- and
 // little-endian, with dark and star particles after the gas; single precision, then double
-// precision positions, and positions and velocities) and checks what comes back, then
-// bad files (a clear error, an empty output), then the two real files given as arguments
-// (Data/ChaNGa) with their particle counts and bounds.
+// precision positions, and positions and velocities) and checks what comes back, with
+// auxiliary arrays beside them (ChaNGa's SNAPSHOT.NAME files, text and binary), then bad files (a
+// clear error, an empty output), then the two real files given as arguments (Data/ChaNGa) with
+// their particle counts and bounds.
 #include "vtkTipsyParticleReader.h"
 
 #include "MessageCounter.h"
@@ -35,6 +36,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -320,6 +322,159 @@ void TestDoublePrecision(int velocityBytes, bool bigEndian)
   std::remove(path.c_str());
 }
 
+// An auxiliary array file SNAPSHOT.NAME: binary (a 32-bit count, then the values in `bigEndian`
+// order) or text (the count on a line, then a value a line).
+template <typename T>
+void WriteBinaryArray(
+  const std::string& path, bool bigEndian, std::int32_t count, const std::vector<T>& values)
+{
+  TipsyWriter w(path, bigEndian);
+  w.Put<std::int32_t>(count);
+  for (T value : values)
+  {
+    w.Put<T>(value);
+  }
+}
+void WriteTextArray(
+  const std::string& path, long long count, const std::vector<std::string>& values)
+{
+  std::ofstream file(path);
+  file << count << "\n";
+  for (const std::string& value : values)
+  {
+    file << value << "\n";
+  }
+}
+
+// The particle of kind k a point is (its index in the kind), from its x coordinate (see Value).
+int ParticleOf(int kind, double x)
+{
+  return static_cast<int>(std::lround((x - Value(kind, 0, 1)) / 10.0));
+}
+
+// ChaNGa's and Gasoline's auxiliary arrays beside the snapshot (`bigEndian`: the main file's byte
+// order; the binary arrays are written in both): one value per particle of the whole snapshot,
+// gas first. Each type gets its share, read whole and in pieces, and with the array selection;
+// files of another count, vectors, compressed files and names of the main file's columns are
+// left out.
+void TestAuxiliaryArrays(bool bigEndian)
+{
+  const std::string what = std::string("auxiliary arrays, ") +
+    (bigEndian ? "big-endian snapshot" : "little-endian snapshot");
+  const std::string path = "tipsy_aux.std";
+  WriteTipsy(path, bigEndian);
+  const int total = GasCount + DarkCount + StarCount;
+  std::vector<std::int32_t> iord;
+  std::vector<double> precise;
+  std::vector<float> densities, vectors;
+  std::vector<std::string> fractions, groups, masses, seven;
+  for (int j = 0; j < total; ++j)
+  {
+    iord.push_back(1000 + 7 * j);
+    precise.push_back(1.0 / 3.0 + j);
+    densities.push_back(0.5f * static_cast<float>(j + 1));
+    fractions.push_back(j == 2 ? "1e-3" : std::to_string(0.25 * j));
+    groups.push_back(std::to_string(j % 2 == 0 ? 0 : 3000000000LL + j));
+    masses.push_back("-1");
+    seven.push_back("5");
+    for (int d = 0; d < 3; ++d)
+    {
+      vectors.push_back(static_cast<float>(j));
+    }
+  }
+  seven.push_back("5");
+  WriteBinaryArray(path + ".iord", true, total, iord);         // ChaNGa's XDR order
+  WriteBinaryArray(path + ".rho", false, total, densities);    // the other order
+  WriteBinaryArray(path + ".dbl", !bigEndian, total, precise); // doubles
+  WriteBinaryArray(path + ".acc2", true, total, vectors);      // a vector: left out
+  WriteBinaryArray(path + ".short", true, total,
+    std::vector<float>(densities.begin() + 1,
+      densities.end())); // one value short: left out
+  WriteTextArray(path + ".HI", total, fractions);
+  WriteTextArray(path + ".amiga.grp", total, groups);
+  WriteTextArray(path + ".mass", total, masses);     // the main file's column
+  WriteTextArray(path + ".seven", total, seven);     // another count: left out
+  WriteTextArray(path + ".HI.gz", total, fractions); // compressed: left out
+  const std::vector<std::string> written = { ".iord", ".rho", ".dbl", ".acc2", ".short", ".HI",
+    ".amiga.grp", ".mass", ".seven", ".HI.gz" };
+
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetParticleTypeStatus("DarkMatter", 1);
+  reader->SetParticleTypeStatus("Stars", 1);
+  const int firsts[3] = { 0, GasCount, GasCount + DarkCount };
+  const int counts[3] = { GasCount, DarkCount, StarCount };
+  // Every particle of `blocks` against its auxiliary values; returns how many were checked.
+  const auto checkValues = [&](vtkMultiBlockDataSet* blocks, const std::string& how) {
+    int checked = 0;
+    bool exact = blocks && blocks->GetNumberOfBlocks() == 3, absent = exact, typed = exact;
+    for (unsigned int k = 0; exact && k < 3; ++k)
+    {
+      vtkPolyData* block = vtkPolyData::SafeDownCast(blocks->GetBlock(k));
+      if (block && block->GetNumberOfPoints() == 0)
+      {
+        continue; // a piece without particles of this type
+      }
+      vtkPointData* pd = block ? block->GetPointData() : nullptr;
+      vtkDataArray* a[] = { pd ? pd->GetArray("iord") : nullptr, pd ? pd->GetArray("dbl") : nullptr,
+        pd ? pd->GetArray("HI") : nullptr, pd ? pd->GetArray("amiga.grp") : nullptr,
+        pd ? pd->GetArray("rho") : nullptr, pd ? pd->GetArray("mass") : nullptr };
+      if (!block || std::find(std::begin(a), std::end(a), nullptr) != std::end(a))
+      {
+        exact = false;
+        break;
+      }
+      typed = typed && a[0]->GetDataType() == VTK_TYPE_INT32 && a[1]->GetDataType() == VTK_DOUBLE &&
+        a[3]->GetDataType() == VTK_TYPE_INT64;
+      for (const char* left : { "acc2", "short", "seven", "HI.gz" })
+      {
+        absent = absent && !pd->GetAbstractArray(left);
+      }
+      for (vtkIdType p = 0; p < block->GetNumberOfPoints(); ++p)
+      {
+        double x[3];
+        block->GetPoint(p, x);
+        const int i = ParticleOf(static_cast<int>(k), x[0]);
+        const int j = firsts[k] + i;
+        const double rho = k == 0 ? Value(0, i, 7) : densities[j];
+        exact = exact && i >= 0 && i < counts[k] && a[0]->GetTuple1(p) == iord[j] &&
+          a[1]->GetTuple1(p) == precise[j] && a[2]->GetTuple1(p) == std::stod(fractions[j]) &&
+          a[3]->GetTuple1(p) == std::stod(groups[j]) && a[4]->GetTuple1(p) == rho &&
+          a[5]->GetTuple1(p) == Value(static_cast<int>(k), i, 0);
+        ++checked;
+      }
+    }
+    Check(exact && absent && typed,
+      what + ", " + how +
+        ": every type's share of iord (int32), dbl (doubles), HI, amiga.grp (int64) and rho " +
+        "(gas: the main file's), mass the main file's, the other files left out");
+    return checked;
+  };
+  reader->Update();
+  Check(checkValues(vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput()), "whole") == total,
+    what + ": every particle read");
+  int pieces = 0;
+  for (int piece = 0; piece < 3; ++piece)
+  {
+    reader->UpdatePiece(piece, 3, 0);
+    pieces += checkValues(vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput()),
+      "piece " + std::to_string(piece) + " of 3");
+  }
+  Check(pieces == total, what + ": the pieces hold every particle once");
+  reader->SetPointArrayStatus("iord", 0);
+  reader->UpdatePiece(0, 1, 0);
+  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  vtkPolyData* gas = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+  Check(gas && !gas->GetPointData()->GetArray("iord") && gas->GetPointData()->GetArray("HI"),
+    what + ": an auxiliary array left unselected is not read");
+  for (const std::string& suffix : written)
+  {
+    std::remove((path + suffix).c_str());
+  }
+  std::remove(path.c_str());
+}
+
 void TestBadFiles()
 {
   struct Case
@@ -417,6 +572,8 @@ int main(int argc, char* argv[])
   TestDoublePrecision(4, true);
   TestDoublePrecision(8, true);
   TestDoublePrecision(8, false);
+  TestAuxiliaryArrays(true);
+  TestAuxiliaryArrays(false);
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
   // in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).

@@ -38,7 +38,8 @@ tests can check each one.
 - kernel_swift_<n>.hdf5 (n = 0 ... 7): 10 gas particles each, with SWIFT's HydroScheme
   attributes "Kernel function" (every name SWIFT writes, then "Gaussian", which no reader
   knows, then "Wendland C4" without a gamma) and "Kernel gamma"; kernel_gadget4_<flag>.hdf5: the same with GADGET-4's Config flag
-  WENDLAND_C2_KERNEL, WENDLAND_C4_KERNEL or WENDLAND_C6_KERNEL.
+  WENDLAND_C2_KERNEL, WENDLAND_C4_KERNEL or WENDLAND_C6_KERNEL; kernel_gadget4_bias.hdf5: WENDLAND_C2_KERNEL
+  with WENDLAND_BIAS_CORRECTION.
 - swift_subsampled.hdf5: 10 gas particles in a SWIFT subsampled snapshot (Header OutputType
   "SubSampled", SubSampleFractions 0.1 for the gas): the reader warns.
 - periodic_blob.hdf5: 40,000 gas particles uniform in a periodic box of side 1 (BoxSize 1),
@@ -217,13 +218,16 @@ def kernel_snapshots(path):
             scheme.attrs["Kernel function"] = np.bytes_(name)
             if gamma is not None:
                 scheme.attrs["Kernel gamma"] = np.float32(gamma)
-    for flag in ["WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL"]:
-        with h5py.File(path("kernel_gadget4_%s.hdf5" % flag), "w") as f:
+    for name, flags in [(flag, [flag]) for flag in
+                        ["WENDLAND_C2_KERNEL", "WENDLAND_C4_KERNEL", "WENDLAND_C6_KERNEL"]] + \
+            [("bias", ["WENDLAND_C2_KERNEL", "WENDLAND_BIAS_CORRECTION"])]:
+        with h5py.File(path("kernel_gadget4_%s.hdf5" % name), "w") as f:
             header(f, [10, 0, 0, 0, 0, 0], [10, 0, 0, 0, 0, 0], [0] * 6, 1.0, np.float64(1.0))
             gas(f.create_group("PartType0"), 0, 10)
             config = f.create_group("Config")
             config.attrs["NTYPES"] = np.int32(6)
-            config.attrs[flag] = np.int32(1)
+            for flag in flags:
+                config.attrs[flag] = np.int32(1)
 
 
 def main(out):
