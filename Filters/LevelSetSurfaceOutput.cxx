@@ -13,6 +13,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -247,6 +248,45 @@ bool InterpolatePointArraysSPH(const Neighborhoods& geometry, const SPHField& fi
     aborted, 8192);
 }
 
+bool CopyNearestSampleValues(const Neighborhoods& geometry, const std::vector<double>& points,
+  const std::vector<vtkDataArray*>& sources, const std::vector<vtkDataArray*>& targets,
+  const AbortCheck& aborted)
+{
+  const std::size_t count = points.size() / 3;
+  if (count == 0 || geometry.NumberOfSamples == 0)
+  {
+    return true;
+  }
+  vtkNew<vtkIdList> from, to;
+  from->SetNumberOfIds(static_cast<vtkIdType>(count));
+  to->SetNumberOfIds(static_cast<vtkIdType>(count));
+  vtkIdType* fromIds = from->GetPointer(0);
+  if (!ParallelForInBlocks(
+        count,
+        [&](std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i)
+          {
+            std::uint32_t nearest = 0;
+            double squared = 0.0;
+            geometry.Index->Nearest(&points[3 * i], 1, &nearest, &squared);
+            fromIds[i] = static_cast<vtkIdType>(geometry.Order[nearest]);
+          }
+        },
+        aborted, 8192))
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    to->SetId(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
+  }
+  for (std::size_t a = 0; a < sources.size(); ++a)
+  {
+    targets[a]->InsertTuples(to, from, sources[a]);
+  }
+  return true;
+}
+
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
@@ -287,8 +327,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   {
     return true;
   }
-  // Every numeric point array of the input, except names the filter itself produces.
-  std::vector<vtkSmartPointer<vtkDataArray>> sources, targets;
+  // Every numeric point array of the input, except names the filter itself produces: integer
+  // arrays (ids, group numbers, flags) from the nearest sample, the others interpolated.
+  std::vector<vtkSmartPointer<vtkDataArray>> sources, targets, added;
+  std::vector<vtkDataArray*> integerSources, integerTargets;
   std::vector<const double*> inStorageOrder; // per source: the scalars' values, else null
   vtkDataArray* scalars = activeScalars ? inputData->GetArray(activeScalars) : nullptr;
   for (int a = 0; a < inputData->GetNumberOfArrays(); ++a)
@@ -299,6 +341,17 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
       array->GetNumberOfTuples() != static_cast<vtkIdType>(geometry.NumberOfSamples))
     {
       continue; // malformed arrays (a tuple count other than the points') are left out too
+    }
+    if (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE)
+    {
+      auto target = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
+      target->SetName(array->GetName());
+      target->SetNumberOfComponents(array->GetNumberOfComponents());
+      target->SetNumberOfTuples(m);
+      integerSources.push_back(array);
+      integerTargets.push_back(target);
+      added.push_back(target);
+      continue;
     }
     vtkSmartPointer<vtkDataArray> source = array;
     if (!array->HasStandardMemoryLayout())
@@ -321,6 +374,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     target->SetNumberOfTuples(m);
     sources.push_back(source);
     targets.push_back(target);
+    added.push_back(target);
     inStorageOrder.push_back(array == scalars && scalarsInStorageOrder &&
           scalarsInStorageOrder->size() == geometry.NumberOfSamples
         ? scalarsInStorageOrder->data()
@@ -340,7 +394,12 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   {
     return false;
   }
-  for (vtkDataArray* target : targetList)
+  if (!integerSources.empty() &&
+    !CopyNearestSampleValues(geometry, at, integerSources, integerTargets, aborted))
+  {
+    return false;
+  }
+  for (vtkDataArray* target : added)
   {
     surface->GetPointData()->AddArray(target);
   }

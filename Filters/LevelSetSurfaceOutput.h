@@ -25,7 +25,8 @@ class KeptCandidates;
 
 /// Fills `surface` with the isopoints (no cells), "Normals", "SplatRadius" (`splatScale` times
 /// the distance to the 6th nearest isopoint) and, if `interpolateArrays`, every numeric array
-/// of `inputData` (input point order) interpolated over 2 (n + 1) samples; `activeScalars` (the
+/// of `inputData` (input point order): floating-point ones interpolated over 2 (n + 1) samples,
+/// integer ones the nearest sample's (CopyNearestSampleValues); `activeScalars` (the
 /// isosurface's own scalar) becomes the active scalars, as Contour does. Returns false only when
 /// aborted.
 /// With an SPH field (`field` not null) the arrays are its interpolants instead
@@ -58,6 +59,14 @@ bool InterpolatePointArrays(const Neighborhoods& geometry, const std::vector<dou
   const std::vector<vtkDataArray*>& targets, const AbortCheck& aborted,
   const std::uint32_t* nearest = nullptr,
   const std::vector<const double*>* inStorageOrder = nullptr);
+
+/// For each point of `points`, each array of `sources` (input point order) at the sample nearest
+/// to it, copied into the matching array of `targets` (the same type and components, one tuple
+/// per point, already sized). For integer arrays (particle ids, halo-finder groups, flags), whose
+/// interpolants mean nothing. Returns false only when aborted.
+bool CopyNearestSampleValues(const Neighborhoods& geometry, const std::vector<double>& points,
+  const std::vector<vtkDataArray*>& sources, const std::vector<vtkDataArray*>& targets,
+  const AbortCheck& aborted);
 
 /// Whether `values` (per sample, storage order) are exactly `array`'s (one component, a value
 /// per sample, input order): MakeSurfacePoints may then read them instead of it. Checked for

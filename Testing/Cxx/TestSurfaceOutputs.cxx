@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the surface output carries and how it follows time:
 // - every input point array interpolated onto the isopoints reproduces a linear field exactly;
+//   integer arrays (ids, groups) carry the nearest particle's values instead;
 // - the scalars read in storage order (as a slide reads them) interpolate to the same numbers;
 // - the splat polygons lie in the tangent planes, one per isopoint, with the splat radius;
 // - on a time series the filter runs per time step, and each step keeps its neighbourhoods.
@@ -14,8 +15,11 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -91,6 +95,20 @@ void Configure(vtkLevelSetIsosurface* filter)
 void TestInterpolatedArrays()
 {
   vtkSmartPointer<vtkPolyData> data = Ball(30000, 18.0, 3);
+  // Integer arrays (a particle id, a halo finder's group and flag pair) whose interpolants would
+  // mean nothing: the surface takes the nearest particle's.
+  vtkNew<vtkIdTypeArray> ids;
+  vtkNew<vtkIntArray> groups;
+  ids->SetName("id");
+  groups->SetName("group");
+  groups->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    ids->InsertNextValue(1000 + 3 * i);
+    groups->InsertNextTuple2(static_cast<double>(i % 7), static_cast<double>(-(i % 5)));
+  }
+  data->GetPointData()->AddArray(ids);
+  data->GetPointData()->AddArray(groups);
   vtkNew<vtkLevelSetIsosurface> filter;
   filter->SetInputData(data);
   Configure(filter);
@@ -128,6 +146,38 @@ void TestInterpolatedArrays()
   Check(worstScalar < 1e-9, "linear scalar reproduced to rounding");
   Check(worstVector < 1e-9, "linear vector reproduced to rounding");
   Check(worstFloat < 1e-4, "float array reproduced to float rounding");
+
+  // The integer arrays: their own types, and every 40th isopoint's values are those of the
+  // particle nearest to it (found here by brute force).
+  vtkDataArray* outIds = pd->GetArray("id");
+  vtkDataArray* outGroups = pd->GetArray("group");
+  Check(outIds && outIds->GetDataType() == VTK_ID_TYPE && outGroups &&
+      outGroups->GetDataType() == VTK_INT && outGroups->GetNumberOfComponents() == 2,
+    "integer arrays keep their types and components");
+  int checked = 0, nearestValues = 0;
+  for (vtkIdType i = 0; outIds && outGroups && i < out->GetNumberOfPoints(); i += 40)
+  {
+    double x[3], best = HUGE_VAL;
+    out->GetPoint(i, x);
+    vtkIdType nearest = -1;
+    for (vtkIdType j = 0; j < data->GetNumberOfPoints(); ++j)
+    {
+      const double d2 = vtkMath::Distance2BetweenPoints(x, data->GetPoint(j));
+      if (d2 < best)
+      {
+        best = d2;
+        nearest = j;
+      }
+    }
+    ++checked;
+    nearestValues += outIds->GetComponent(i, 0) == ids->GetComponent(nearest, 0) &&
+      outGroups->GetComponent(i, 0) == groups->GetComponent(nearest, 0) &&
+      outGroups->GetComponent(i, 1) == groups->GetComponent(nearest, 1);
+  }
+  std::cout << nearestValues << " of " << checked
+            << " isopoints checked carry their nearest particle's integer values\n";
+  Check(checked > 20 && nearestValues == checked,
+    "integer arrays: each isopoint has the nearest particle's values");
 
   filter->InterpolateArraysOff();
   filter->Update();
