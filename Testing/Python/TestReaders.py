@@ -168,6 +168,45 @@ if shared is None:
           "%.3g apart on average from the full read's %d, rms distance to the sphere %.5f (full "
           "read %.5f)" % (n_box, n_all, len(box_points), apart, len(all_points), box_rms, all_rms))
 
+# ChaNGa's auxiliary arrays (SNAPSHOT.NAME beside the file) as a user meets them: listed by the
+# reader ParaView picks, carried through Particle Density, and on the surface the integer ones
+# (iord, a halo finder's groups) are the nearest particle's, in their own type.
+if shared is None:
+    import shutil  # noqa: E402
+    import struct  # noqa: E402
+    aux_dir = os.path.join(snapshot_dir, "tipsy_aux")
+    os.makedirs(aux_dir, exist_ok=True)
+    aux_glass = os.path.join(aux_dir, "glass.00100")
+    shutil.copyfile(os.path.join(changa, "adiabtophat_glass_28721.bin"), aux_glass)
+    n = 28721
+    with open(aux_glass + ".iord", "wb") as f:
+        f.write(struct.pack(">i", n) + (5000 + np.arange(n)).astype(">i4").tobytes())
+    with open(aux_glass + ".amiga.grp", "w") as f:
+        f.write("%d\n" % n + "".join("%d\n" % (i % 3) for i in range(n)))
+    with open(aux_glass + ".HI", "w") as f:
+        f.write("%d\n" % n + "".join("%.7g\n" % (0.5 + i / n) for i in range(n)))
+    reader = OpenDataFile(aux_glass)
+    reader.UpdatePipelineInformation()
+    listed = set(reader.GetProperty("PointArrayInfo")[::2])
+    check({"iord", "amiga.grp", "HI"} <= listed,
+          "ChaNGa auxiliary arrays listed by the reader (%s)" % sorted(listed))
+    particles = servermanager.Fetch(reader)
+    tree = cKDTree(vtk_to_numpy(particles.GetPoints().GetData()).astype(float))
+    iord = vtk_to_numpy(particles.GetPointData().GetArray("iord"))
+    groups = vtk_to_numpy(particles.GetPointData().GetArray("amiga.grp"))
+    surface = LevelSetIsosurface(Input=ParticleDensity(Input=reader, NumberOfNeighbors=64),
+                                 IsoValue=1.0 / (2.0 * np.pi * 0.4), SeedRadius=0, OutputType=0)
+    out = servermanager.Fetch(surface)
+    at = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+    nearest = tree.query(at)[1]
+    on = {name: out.GetPointData().GetArray(name) for name in ("iord", "amiga.grp", "HI")}
+    ok = all(a is not None for a in on.values()) and len(at) > 1000
+    ok = ok and on["iord"].GetDataTypeAsString() == "int" and np.array_equal(
+        vtk_to_numpy(on["iord"]), iord[nearest]) and np.array_equal(
+        vtk_to_numpy(on["amiga.grp"]), groups[nearest]) and on["HI"].GetDataType() == 11
+    check(ok, "auxiliary arrays on the surface (%d points): iord (int) and amiga.grp the nearest "
+          "particle's, HI interpolated (double)" % len(at))
+
 # PeriodicRegion as a keyword: a region across the faces of the SWIFT file's periodic box (side
 # 2 pi) holds the particles whose images lie inside it, wrapped or not.
 across = [5.5, 7.5, 1.0, 2.5, -0.5, 0.5]
