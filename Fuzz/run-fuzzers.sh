@@ -2,13 +2,13 @@
 # SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds the libFuzzer targets with clang (ASan, UBSan) in build-fuzz and runs each for a bounded
-# time (FUZZ_SECONDS, default 45: the four targets in 3 minutes; FUZZ_TARGETS to run only some)
+# time (FUZZ_SECONDS, default 30: the four targets in 2 minutes; FUZZ_TARGETS to run only some)
 # on a copy of its corpus in Fuzz/corpus. A crash, a sanitizer report, a leak or an input that
 # takes longer than 20 s fails (exit status not 0); the input is then left in build-fuzz/ as
 # crash-* / timeout-*.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-seconds=${FUZZ_SECONDS:-45}
+seconds=${FUZZ_SECONDS:-30}
 CC=clang CXX=clang++ cmake -S "$here/Fuzz" -B "$here/build-fuzz" -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$here/build-fuzz" -j "$(nproc)"
 cd "$here/build-fuzz"

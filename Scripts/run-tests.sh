@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The tests: install, build, then every CTest test (numerics, filter, accuracy at reduced size,
 # plain VTK example, pvpython, ParaView GUI under Xvfb), then the libFuzzer targets built with
-# clang, ASan and UBSan, a bounded run each (Fuzz/run-fuzzers.sh, FUZZ_SECONDS=45).
+# clang, ASan and UBSan, a bounded run each (Fuzz/run-fuzzers.sh, FUZZ_SECONDS=30).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/Scripts/setup-debian12.sh"
