@@ -707,15 +707,6 @@ bool vtkHDF5SnapshotReader::ReadParticles(
   return true;
 }
 
-void vtkHDF5SnapshotReader::WarnOnce(const std::string& message)
-{
-  // The metadata is read again for each update: each message once per file.
-  if (this->Warned.insert(this->FileName + "\n" + message).second)
-  {
-    vtkWarningMacro(<< this->FileName << ": " << message);
-  }
-}
-
 bool vtkHDF5SnapshotReader::RegionCandidates(std::size_t type, const double bounds[6],
   std::vector<std::pair<long long, long long>>& ranges, std::string& problem)
 {

@@ -82,8 +82,6 @@ private:
   // h = H).
   std::string Kernel = "CubicSpline";
   double SupportPerSmoothingLength = 1.0;
-  std::set<std::string> Warned; // file and message of each warning given (WarnOnce)
-  void WarnOnce(const std::string& message);
 };
 
 #endif

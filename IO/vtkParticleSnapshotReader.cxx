@@ -85,6 +85,14 @@ void vtkParticleSnapshotReader::SetPointArrayStatus(const char* name, int status
   this->PointArraySelection->SetArraySetting(name, status);
 }
 
+void vtkParticleSnapshotReader::WarnOnce(const std::string& message)
+{
+  if (this->Warned.insert(this->FileName + "\n" + message).second)
+  {
+    vtkWarningMacro(<< this->FileName << ": " << message);
+  }
+}
+
 bool vtkParticleSnapshotReader::ReadsArray(const std::string& name)
 {
   return !this->PointArraySelection->ArrayExists(name.c_str()) ||

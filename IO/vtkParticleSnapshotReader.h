@@ -29,6 +29,7 @@
 #include "vtkDataObjectAlgorithm.h"
 #include "vtkNew.h" // for vtkNew
 
+#include <set>     // for std::set
 #include <string>  // for std::string
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
@@ -108,7 +109,8 @@ public:
    * inside when one of its periodic images (its position plus or minus whole boxes) is. A halo
    * cut by a face of the box is then read whole; its particles keep their positions in the box,
    * and vtkLevelSetIsosurface (Periodic on) joins them across the face. Turn off for a run whose
-   * BoxSize is not periodic. No effect without a box (Tipsy files). A region's output carries
+   * BoxSize is not periodic. No effect without a box (a Tipsy file without its run's parameter
+   * file). A region's output carries
    * field data "RegionBounds" and "RegionPeriod" (the period of each axis it wrapped across, 0
    * for none).
    */
@@ -195,6 +197,12 @@ protected:
   bool ReadsArray(const std::string& name);
 
   /**
+   * A warning about the file (its name first), given once per file and message: the metadata
+   * is read again for each update.
+   */
+  void WarnOnce(const std::string& message);
+
+  /**
    * The files of a snapshot split over `parts` files, from the name of any one of them:
    * NAME.K or NAME.K.EXT gives NAME.0[.EXT], NAME.1[.EXT], ...; empty if the name has no such
    * number.
@@ -239,6 +247,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string FileName;
+  std::set<std::string> Warned; // file and message of each warning given (WarnOnce)
 
 private:
   vtkParticleSnapshotReader(const vtkParticleSnapshotReader&) = delete;

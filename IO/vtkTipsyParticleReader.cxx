@@ -3,6 +3,7 @@
 #include "vtkTipsyParticleReader.h"
 
 #include "ByteOrder.h"
+#include "TipsyRunParameters.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -13,8 +14,10 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -201,6 +204,33 @@ bool vtkTipsyParticleReader::ReadMetaData(
     offset +=
       static_cast<long long>(RecordBytes(k, this->PositionBytes, this->VelocityBytes)) * counts[k];
     first += counts[k];
+  }
+  // The box, from the run's parameter file (a Tipsy file does not say).
+  const lsi::io::TipsyRunParameters run = lsi::io::FindTipsyRunParameters(this->FileName);
+  if (!run.File.empty())
+  {
+    vtkNew<vtkStringArray> file;
+    file->SetName("TipsyParameterFile");
+    file->InsertNextValue(run.File);
+    fields->AddArray(file);
+  }
+  const double* period = run.Period;
+  if (run.Periodic &&
+    std::all_of(period, period + 3, [](double L) { return L > 0.0 && std::isfinite(L); }))
+  {
+    vtkNew<vtkDoubleArray> box;
+    box->SetName("BoxSize");
+    for (int a = 0; a < 3; ++a)
+    {
+      box->InsertNextValue(period[a]);
+    }
+    fields->AddArray(box);
+  }
+  else if (run.Periodic)
+  {
+    this->WarnOnce(run.File +
+      " makes the box periodic along some axes only (a period of 0 on the "
+      "others): read as an open box.");
   }
   const std::pair<const char*, double> notes[] = { { "Time", header.Time },
     { "TipsyDoublePositions", this->PositionBytes == 8 ? 1.0 : 0.0 },

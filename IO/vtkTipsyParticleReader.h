@@ -17,7 +17,9 @@
  * arrays (velocity as a vector), gas's rho the active scalars. The auxiliary arrays beside the
  * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, ...; text or binary,
  * one value a particle, see TipsyAuxiliaryArrays.h) become point arrays NAME of every type,
- * except where NAME is a column of the main file. Particle types ("Gas", "DarkMatter",
+ * except where NAME is a column of the main file. The periodic box, which a Tipsy file does not
+ * hold, comes from the run's parameter file (TipsyRunParameters.h) as field data BoxSize (and
+ * TipsyParameterFile, the file read). Particle types ("Gas", "DarkMatter",
  * "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h

@@ -3,7 +3,8 @@
 // The Tipsy reader: writes small Tipsy standard files with known particles (big- and
 // little-endian, with dark and star particles after the gas; single precision, then double
 // precision positions, and positions and velocities) and checks what comes back, with
-// auxiliary arrays beside them (ChaNGa's SNAPSHOT.NAME files, text and binary), then bad files (a
+// auxiliary arrays beside them (ChaNGa's SNAPSHOT.NAME files, text and binary) and the run's
+// parameter file (the periodic box), then bad files (a
 // clear error, an empty output), then the two real files given as arguments (Data/ChaNGa) with
 // their particle counts and bounds.
 #include "vtkTipsyParticleReader.h"
@@ -475,6 +476,80 @@ void TestAuxiliaryArrays(bool bigEndian)
   std::remove(path.c_str());
 }
 
+// The run's parameter file gives the box (a Tipsy file does not): found by achOutName (numbered
+// outputs) or achInFile, in the snapshot's directory or its parent, else the only .param there;
+// dPeriod sets the axes not given, a period of 0 leaves the box open (with a warning).
+void TestRunParameters()
+{
+  struct Case
+  {
+    std::string What, Directory, Snapshot;
+    std::vector<std::pair<std::string, std::string>> Files; // name (in Directory), text
+    std::vector<double> Box;                                // empty: no BoxSize
+    std::string Chosen;                                     // the file read; empty: none
+    int Warnings = 0;
+  };
+  const Case cases[] = {
+    { "achOutName", "tipsy_param_a", "run.000512",
+      { { "run.param", "achOutName = run\nbPeriodic = 1\ndPeriod = 2 # comoving\n" },
+        { "other.param", "achOutName = other\nbPeriodic = 0\n" } },
+      { 2, 2, 2 }, "run.param" },
+    { "achInFile and dxPeriod", "tipsy_param_b", "ics.std",
+      { { "sim.param", "achInFile = \"ics.std\"\nbPeriodic=1\ndPeriod=1\ndxPeriod = 3\n" } },
+      { 3, 1, 1 }, "sim.param" },
+    { "the only .param, defaults", "tipsy_param_c", "snap.std",
+      { { "x.param", "bPeriodic = 1\n" } }, { 1, 1, 1 }, "x.param" },
+    { "a period of 0", "tipsy_param_d", "run.000512",
+      { { "run.param", "achOutName = run\nbPeriodic = 1\ndzPeriod = 0\n" } }, {}, "run.param", 1 },
+    { "two files naming other runs", "tipsy_param_e", "run.000512",
+      { { "a.param", "achOutName = a\nbPeriodic = 1\n" },
+        { "b.param", "achOutName = b\nbPeriodic = 1\n" } },
+      {}, "" },
+    { "not periodic", "tipsy_param_f", "run.00100",
+      { { "run.param", "achOutName = run\nbPeriodic = 0\ndPeriod = 5\n" } }, {}, "run.param" },
+    { "in the parent directory", "tipsy_param_g/output", "run.000512",
+      { { "../run.param", "achOutName = output/run\nbPeriodic = 1\ndPeriod = 4\n" } }, { 4, 4, 4 },
+      "../run.param" },
+  };
+  for (const Case& c : cases)
+  {
+    std::system(("mkdir -p " + c.Directory).c_str());
+    const std::string snapshot = c.Directory + "/" + c.Snapshot;
+    WriteTipsy(snapshot, true);
+    for (const auto& file : c.Files)
+    {
+      std::ofstream(c.Directory + "/" + file.first) << file.second;
+    }
+    vtkNew<vtkTipsyParticleReader> reader;
+    reader->SetFileName(snapshot.c_str());
+    vtkNew<MessageCounter> warnings;
+    reader->AddObserver(vtkCommand::WarningEvent, warnings);
+    reader->Update();
+    vtkDataObject* out = reader->GetOutputDataObject(0);
+    vtkFieldData* fields = out ? out->GetFieldData() : nullptr;
+    vtkDataArray* box =
+      fields ? vtkDataArray::SafeDownCast(fields->GetAbstractArray("BoxSize")) : nullptr;
+    vtkAbstractArray* chosen = fields ? fields->GetAbstractArray("TipsyParameterFile") : nullptr;
+    std::vector<double> got;
+    for (vtkIdType v = 0; box && v < box->GetNumberOfValues(); ++v)
+    {
+      got.push_back(box->GetVariantValue(v).ToDouble());
+    }
+    const std::string file = chosen ? chosen->GetVariantValue(0).ToString() : std::string();
+    const std::string expected = c.Chosen.empty() ? std::string() : c.Directory + "/" + c.Chosen;
+    Check(out && got == c.Box && file == expected && warnings->Count == c.Warnings,
+      "run parameters, " + c.What + ": BoxSize of " + std::to_string(got.size()) +
+        " values, from '" + file + "', " + std::to_string(warnings->Count) + " warnings");
+    for (const auto& written : c.Files)
+    {
+      std::remove((c.Directory + "/" + written.first).c_str());
+    }
+    std::remove(snapshot.c_str());
+  }
+  std::system("rm -rf tipsy_param_a tipsy_param_b tipsy_param_c tipsy_param_d tipsy_param_e "
+              "tipsy_param_f tipsy_param_g");
+}
+
 void TestBadFiles()
 {
   struct Case
@@ -574,6 +649,7 @@ int main(int argc, char* argv[])
   TestDoublePrecision(8, false);
   TestAuxiliaryArrays(true);
   TestAuxiliaryArrays(false);
+  TestRunParameters();
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
   // in the unit sphere) and the shock tube (20,000 in [-1, 1] along z).

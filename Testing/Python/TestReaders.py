@@ -336,6 +336,32 @@ if shared:
     _, cube = open_file(os.path.join(shared, "changa_cube300.tbin"))
     check_points(cube, "ChaNGa cube300 (dark matter only)", 110592, ["mass", "eps", "phi"],
                  time=0.05)
+    # The cosmological box with its run's parameter file beside it (as ChaNGa's testcosmo has,
+    # achInFile naming it, periodic, dPeriod 1): BoxSize from it, so that a region across the
+    # x faces wraps, holding the particles whose images lie inside.
+    import shutil  # noqa: E402
+    import numpy as np  # noqa: E402
+    from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+    run_dir = os.path.join(snapshot_dir, "tipsy_run")
+    os.makedirs(run_dir, exist_ok=True)
+    boxed = os.path.join(run_dir, "cube300.tbin")
+    shutil.copyfile(os.path.join(shared, "changa_cube300.tbin"), boxed)
+    with open(os.path.join(run_dir, "cosmo.param"), "w") as f:
+        f.write("achInFile = cube300.tbin\nachOutName = cosmo\nbPeriodic = 1\ndPeriod = 1\n")
+    reader, whole = open_file(boxed)
+    box = whole.GetFieldData().GetArray("BoxSize") if whole else None
+    check(box is not None and [box.GetValue(k) for k in range(3)] == [1.0, 1.0, 1.0],
+          "cube300 beside cosmo.param: BoxSize 1 (got %s)"
+          % ([box.GetValue(k) for k in range(box.GetNumberOfValues())] if box else None))
+    x = vtk_to_numpy(whole.GetPoints().GetData()).astype(float)[:, 0]
+    reader.ReadRegion = 1
+    reader.RegionBounds = [0.4, 0.6, -0.5, 0.5, -0.5, 0.5]
+    reader.UpdatePipeline()
+    region = servermanager.Fetch(reader)
+    expected = int(np.count_nonzero((x >= 0.4) | (x + 1.0 <= 0.6)))
+    check(region.GetNumberOfPoints() == expected and expected > 0,
+          "cube300 region x in [0.4, 0.6] wraps across the face: %d particles (expected %d)"
+          % (region.GetNumberOfPoints(), expected))
     _, sod = open_file(os.path.join(shared, "swift_sodshock3d_glass_002.hdf5"))
     check_points(sod, "SWIFT Sod shock glass", 50653,
                  ["Density", "SmoothingLength", "Masses", "Acceleration", "InternalEnergy"],
