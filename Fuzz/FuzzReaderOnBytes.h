@@ -15,16 +15,30 @@
 #include <cstdio>
 #include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
+// `beside`: files written next to it first (the path's stem, "/tmp/fuzz-reader-PID", plus each
+// one's name: auxiliary files, a parameter file) with their bytes, removed after.
 template <typename Reader>
-int FuzzReaderOnBytes(const std::uint8_t* data, std::size_t size, const char* suffix)
+int FuzzReaderOnBytes(const std::uint8_t* data, std::size_t size, const char* suffix,
+  const std::vector<std::pair<std::string, std::string>>& beside = {})
 {
   vtkObject::GlobalWarningDisplayOff(); // bad files are expected: no message flood
-  const std::string path = "/tmp/fuzz-reader-" + std::to_string(getpid()) + suffix;
+  const std::string stem = "/tmp/fuzz-reader-" + std::to_string(getpid());
+  const std::string path = stem + suffix;
   if (FILE* out = std::fopen(path.c_str(), "wb"))
   {
     std::fwrite(data, 1, size, out);
     std::fclose(out);
+  }
+  for (const auto& file : beside)
+  {
+    if (FILE* out = std::fopen((stem + file.first).c_str(), "wb"))
+    {
+      std::fwrite(file.second.data(), 1, file.second.size(), out);
+      std::fclose(out);
+    }
   }
   vtkNew<Reader> reader;
   reader->SetFileName(path.c_str());
@@ -52,6 +66,10 @@ int FuzzReaderOnBytes(const std::uint8_t* data, std::size_t size, const char* su
   reader->SetRegionChunkParticles(3);
   reader->Update();
   std::remove(path.c_str());
+  for (const auto& file : beside)
+  {
+    std::remove((stem + file.first).c_str());
+  }
   return 0;
 }
 

@@ -30,6 +30,15 @@ for order, label in ((">", "big"), ("<", "little")):
     star = struct.pack(order + "11f", 1e-4, 0.5, 0.5, 0.5, 0, 0, 0, 0.02, 0.1, 0.05, 0)
     write("FuzzTipsyReader", "mixed-" + label, header + gas + dark + star)
     write("FuzzTipsyReader", "truncated-" + label, (header + gas)[:60])
+    # With auxiliary arrays (binary floats, text integers, a vector to leave out) and the run's
+    # parameter file (a periodic box), each after its marker line.
+    n = 5
+    binary = struct.pack(">i", n) + struct.pack(">5f", *range(n))
+    text = ("%d\n" % n + "".join("%d\n" % (7 * i) for i in range(n))).encode()
+    vector = struct.pack(">i", n) + struct.pack(">15f", *range(3 * n))
+    params = b"achOutName = run\nbPeriodic = 1\ndPeriod = 40\ndzPeriod = 0 # open along z\n"
+    write("FuzzTipsyReader", "beside-" + label, header + gas + dark + star + b"\n#AUX\n" + binary +
+          b"\n#AUX\n" + text + b"\n#AUX\n" + vector + b"\n#PARAM\n" + params)
     # Double-precision positions (ChaNGa's bDoublePos), then positions and velocities too: the
     # reader tells them from the file's size.
     for vel, name in (("3f", "double-positions-"), ("3d", "double-velocities-")):
