@@ -17,8 +17,25 @@
 namespace lsi
 {
 
+namespace
+{
+// Whether tuple i of `array` comes before tuple j (component by component).
+bool TupleBefore(vtkDataArray* array, vtkIdType i, vtkIdType j)
+{
+  for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+  {
+    const double a = array->GetComponent(i, c), b = array->GetComponent(j, c);
+    if (a != b)
+    {
+      return a < b;
+    }
+  }
+  return false;
+}
+} // namespace
+
 vtkSmartPointer<vtkPolyData> MergeDuplicatePoints(vtkPointSet* input, std::vector<double>& values,
-  std::vector<vtkIdType>& mergedId, vtkIdType& merged)
+  std::vector<vtkIdType>& mergedId, vtkIdType& merged, vtkDataArray* mass)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   std::vector<std::array<double, 3>> x(static_cast<std::size_t>(n));
@@ -61,6 +78,25 @@ vtkSmartPointer<vtkPolyData> MergeDuplicatePoints(vtkPointSet* input, std::vecto
     groupSize[mergedId[i]] += 1.0;
   }
 
+  // Which points count towards a group's summed mass: all, but a global id met before in the
+  // group (the same particle written again) counts once.
+  std::vector<char> counted(static_cast<std::size_t>(n), 1);
+  vtkDataArray* ids = input->GetPointData()->GetGlobalIds();
+  if (ids && ids->GetNumberOfTuples() == n)
+  {
+    for (std::size_t k = 1; k < order.size(); ++k)
+    {
+      for (std::size_t j = k; j-- > 0 && representative[order[j]] == representative[order[k]];)
+      {
+        if (ids->GetComponent(order[j], 0) == ids->GetComponent(order[k], 0))
+        {
+          counted[order[k]] = 0;
+          break;
+        }
+      }
+    }
+  }
+
   auto out = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -79,26 +115,47 @@ vtkSmartPointer<vtkPolyData> MergeDuplicatePoints(vtkPointSet* input, std::vecto
       continue; // malformed arrays were reported on the input already
     }
     const int components = array->GetNumberOfComponents();
-    std::vector<double> sum(static_cast<std::size_t>(m) * components, 0.0);
-    for (vtkIdType i = 0; i < n; ++i)
+    vtkSmartPointer<vtkDataArray> combined = vtk::TakeSmartPointer(array->NewInstance());
+    combined->SetName(array->GetName());
+    combined->SetNumberOfComponents(components);
+    combined->SetNumberOfTuples(m);
+    if (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE)
     {
-      for (int c = 0; c < components; ++c)
+      std::vector<vtkIdType> smallest(kept);
+      for (vtkIdType i = 0; i < n; ++i)
       {
-        sum[mergedId[i] * components + c] += array->GetComponent(i, c);
+        vtkIdType& best = smallest[mergedId[i]];
+        best = TupleBefore(array, i, best) ? i : best;
+      }
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        combined->SetTuple(k, smallest[k], array);
       }
     }
-    vtkSmartPointer<vtkDataArray> average = vtk::TakeSmartPointer(array->NewInstance());
-    average->SetName(array->GetName());
-    average->SetNumberOfComponents(components);
-    average->SetNumberOfTuples(m);
-    for (vtkIdType k = 0; k < m; ++k)
+    else
     {
-      for (int c = 0; c < components; ++c)
+      const bool summed = array == mass;
+      std::vector<double> sum(static_cast<std::size_t>(m) * components, 0.0);
+      for (vtkIdType i = 0; i < n; ++i)
       {
-        average->SetComponent(k, c, sum[k * components + c] / groupSize[k]);
+        for (int c = 0; c < components && (!summed || counted[i]); ++c)
+        {
+          sum[mergedId[i] * components + c] += array->GetComponent(i, c);
+        }
+      }
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          combined->SetComponent(k, c, sum[k * components + c] / (summed ? 1.0 : groupSize[k]));
+        }
       }
     }
-    out->GetPointData()->AddArray(average);
+    out->GetPointData()->AddArray(combined);
+    if (ids == array)
+    {
+      out->GetPointData()->SetGlobalIds(combined);
+    }
     if (source->GetScalars() == array)
     {
       out->GetPointData()->SetActiveScalars(array->GetName());

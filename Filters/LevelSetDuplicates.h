@@ -12,18 +12,23 @@
 
 #include <vector>
 
+class vtkDataArray;
 class vtkPointSet;
 class vtkPolyData;
 
 namespace lsi
 {
 
-/// The input with each group of coincident points merged into its first point, every numeric
-/// point array (and `values`, the scalar in input order, replaced) averaged over the group;
-/// mergedId[i] is the merged point that input point i became. Field data are passed on.
-/// `merged` receives how many points were merged away.
+/// The input with each group of coincident points merged into its first point: `values` (the
+/// scalar in input order, replaced) and every floating-point point array averaged over the
+/// group, except `mass` (the SPH field's masses, if not null), which is summed, so that the SPH
+/// field sum_j m_j W keeps the group's mass (particles that share a global id, the input's
+/// GlobalIds, are one particle written more than once: counted once); integer arrays (ids,
+/// groups, flags) take the group's smallest tuple (an average would mean nothing; the smallest
+/// does not depend on the input's order). mergedId[i] is the merged point that input point i
+/// became. Field data are passed on. `merged` receives how many points were merged away.
 vtkSmartPointer<vtkPolyData> MergeDuplicatePoints(vtkPointSet* input, std::vector<double>& values,
-  std::vector<vtkIdType>& mergedId, vtkIdType& merged);
+  std::vector<vtkIdType>& mergedId, vtkIdType& merged, vtkDataArray* mass = nullptr);
 
 } // namespace lsi
 

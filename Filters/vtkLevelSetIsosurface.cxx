@@ -484,11 +484,17 @@ bool vtkLevelSetIsosurface::PrepareParticles(vtkPointSet* input, lsi::RunParticl
   {
     values.resize(static_cast<std::size_t>(original->GetNumberOfPoints())); // images appended
     vtkIdType merged = 0;
+    // On the SPH field the masses are summed (the field keeps each group's mass).
+    vtkDataArray* mass = lsi::MarkedMassArray(original, this->MassArray);
     vtkSmartPointer<vtkPointSet> distinct =
-      lsi::MergeDuplicatePoints(original, values, mergedId, merged);
+      lsi::MergeDuplicatePoints(original, values, mergedId, merged, mass);
     vtkWarningMacro(<< merged << " points coincide with another point (for example point "
-                    << geometry->FirstDuplicate
-                    << "): each group was merged into one, its values averaged.");
+                    << geometry->FirstDuplicate << "): each group was merged into one, its values "
+                    << "averaged"
+                    << (mass ? std::string(", its masses (") + mass->GetName() +
+                             ") summed (once per global id)"
+                             : std::string())
+                    << ", integer arrays its smallest value.");
     work = this->WithPeriodicImages(distinct, values);
     geometry = work ? this->FindNeighborhoods(work->GetPoints(), false) : nullptr;
   }

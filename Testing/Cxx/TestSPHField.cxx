@@ -21,6 +21,9 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -512,6 +515,91 @@ void TestQuickAtCloudEdge(vtkPolyData* glass, const Particles& p)
     "Evrard at the cloud's edge: the method's free-boundary points, within 5%");
 }
 
+// `glass` with every particle written twice (all its arrays; field data kept), an integer
+// array "tag" (the first copies 0..n-1, the second n..2n-1), and global ids that are the same
+// for both copies (one particle written twice) or not (two particles at one place).
+vtkSmartPointer<vtkPolyData> WrittenTwice(vtkPolyData* glass, bool sameIds)
+{
+  const vtkIdType n = glass->GetNumberOfPoints();
+  auto twice = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->InsertNextPoint(glass->GetPoint(i));
+    }
+  }
+  twice->SetPoints(points);
+  for (int a = 0; a < glass->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = glass->GetPointData()->GetArray(a);
+    vtkSmartPointer<vtkDataArray> copies = vtk::TakeSmartPointer(array->NewInstance());
+    copies->SetName(array->GetName());
+    copies->SetNumberOfComponents(array->GetNumberOfComponents());
+    for (int copy = 0; copy < 2; ++copy)
+    {
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        copies->InsertNextTuple(i, array);
+      }
+    }
+    twice->GetPointData()->AddArray(copies);
+  }
+  vtkNew<vtkIntArray> tag;
+  vtkNew<vtkIdTypeArray> ids;
+  tag->SetName("tag");
+  ids->SetName("ParticleIDs");
+  for (vtkIdType j = 0; j < 2 * n; ++j)
+  {
+    tag->InsertNextValue(static_cast<int>(j));
+    ids->InsertNextValue(sameIds ? j % n : j);
+  }
+  twice->GetPointData()->AddArray(tag);
+  twice->GetPointData()->SetGlobalIds(ids);
+  twice->GetFieldData()->ShallowCopy(glass->GetFieldData());
+  return twice;
+}
+
+// Particles at one place on the SPH field: merged with a warning, the group's masses summed,
+// so the field keeps its mass. Two particles at each place (distinct ids) make the field twice
+// the glass's: the surface at twice the isovalue is the glass's surface at the isovalue. One
+// particle written twice (the same id) is counted once: the glass's surface at the isovalue.
+// The integer tag on the surface is the nearest merged particle's smallest (the first copies').
+void TestDuplicates(vtkPolyData* glass, double iso, const double seed[3])
+{
+  const vtkSmartPointer<vtkPolyData> reference =
+    Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS);
+  for (bool sameIds : { false, true })
+  {
+    const double level = sameIds ? iso : 2.0 * iso;
+    vtkNew<vtkLevelSetIsosurface> filter;
+    vtkNew<lsi::test::MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    const vtkSmartPointer<vtkPolyData> out =
+      Run(WrittenTwice(glass, sameIds), level, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, filter);
+    double worst = out->GetNumberOfPoints() == reference->GetNumberOfPoints() ? 0.0 : HUGE_VAL;
+    for (vtkIdType i = 0; worst < HUGE_VAL && i < out->GetNumberOfPoints(); ++i)
+    {
+      worst = std::max(worst,
+        std::sqrt(vtkMath::Distance2BetweenPoints(out->GetPoint(i), reference->GetPoint(i))));
+    }
+    vtkDataArray* tag = out->GetPointData()->GetArray("tag");
+    double largestTag = tag ? tag->GetRange()[1] : HUGE_VAL;
+    const std::string what = sameIds ? "one particle written twice (same ids), at the isovalue"
+                                     : "two particles at each place, at twice the isovalue";
+    std::cout << "duplicates, " << what << ": " << out->GetNumberOfPoints() << " isopoints ("
+              << reference->GetNumberOfPoints() << " without), moved at most " << worst
+              << "; warning: " << warnings->Last << "\n";
+    Check(worst < 1e-12 && warnings->Count == 1 &&
+        warnings->Last.find("summed") != std::string::npos && tag &&
+        tag->GetDataType() == VTK_INT && largestTag < glass->GetNumberOfPoints(),
+      "duplicates on the SPH field, " + what +
+        ": the glass's surface, one warning, the tag the first copies'");
+  }
+}
+
 void TestEvrard(const std::string& path)
 {
   vtkSmartPointer<vtkPolyData> glass = WithSummedDensity(path);
@@ -566,6 +654,7 @@ void TestEvrard(const std::string& path)
   TestEnclosed(filter);
   TestQuickIsoValueChange(glass, p, iso);
   TestQuickAtCloudEdge(glass, p);
+  TestDuplicates(glass, iso, seed);
 
   // The default output: every splat corner on the level, its normal the field's.
   auto splats = Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::SPLATS);
