@@ -342,26 +342,13 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     {
       continue; // malformed arrays (a tuple count other than the points') are left out too
     }
-    if (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE)
-    {
-      auto target = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
-      target->SetName(array->GetName());
-      target->SetNumberOfComponents(array->GetNumberOfComponents());
-      target->SetNumberOfTuples(m);
-      integerSources.push_back(array);
-      integerTargets.push_back(target);
-      added.push_back(target);
-      continue;
-    }
-    vtkSmartPointer<vtkDataArray> source = array;
-    if (!array->HasStandardMemoryLayout())
-    {
-      // Read from many threads: only arrays with plain memory are safe for that.
-      source = vtkSmartPointer<vtkDoubleArray>::New();
-      source->DeepCopy(array);
-    }
+    const bool integer = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
     vtkSmartPointer<vtkDataArray> target;
-    if (array->GetDataType() == VTK_FLOAT)
+    if (integer)
+    {
+      target = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance()); // its own type
+    }
+    else if (array->GetDataType() == VTK_FLOAT)
     {
       target = vtkSmartPointer<vtkFloatArray>::New();
     }
@@ -372,9 +359,22 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     target->SetName(array->GetName());
     target->SetNumberOfComponents(array->GetNumberOfComponents());
     target->SetNumberOfTuples(m);
+    added.push_back(target);
+    if (integer)
+    {
+      integerSources.push_back(array);
+      integerTargets.push_back(target);
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> source = array;
+    if (!array->HasStandardMemoryLayout())
+    {
+      // Read from many threads: only arrays with plain memory are safe for that.
+      source = vtkSmartPointer<vtkDoubleArray>::New();
+      source->DeepCopy(array);
+    }
     sources.push_back(source);
     targets.push_back(target);
-    added.push_back(target);
     inStorageOrder.push_back(array == scalars && scalarsInStorageOrder &&
           scalarsInStorageOrder->size() == geometry.NumberOfSamples
         ? scalarsInStorageOrder->data()
