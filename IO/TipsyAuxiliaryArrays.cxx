@@ -40,9 +40,10 @@ bool NamesIntegers(std::string name)
 }
 
 // A text array: a first line holding the particle count and nothing else, then exactly that
-// many values (whitespace-separated). `integers`: no value has a fraction, an exponent, an
-// infinity or a NaN.
-bool IsTextArray(std::ifstream& file, long long particles, bool& integers)
+// many values (whitespace-separated), or three times as many (a vector: ChaNGa writes every
+// particle's x, then every y, then every z). `integers`: no value has a fraction, an exponent,
+// an infinity or a NaN.
+bool IsTextArray(std::ifstream& file, long long particles, bool& integers, int& components)
 {
   std::string first;
   if (!std::getline(file, first) || first.size() > 32)
@@ -86,11 +87,13 @@ bool IsTextArray(std::ifstream& file, long long particles, bool& integers)
       }
     }
   }
-  return values == particles;
+  components = values == 3 * particles ? 3 : 1;
+  return values == particles || values == 3 * particles;
 }
 
 // A binary array: a 32-bit count equal to the particle count (either byte order), then exactly
-// that many 4- or 8-byte values.
+// that many 4- or 8-byte values, or three a particle (a vector: x, y, z of each particle in
+// turn, as ChaNGa reads them).
 bool IsBinaryArray(
   std::ifstream& file, long long particles, std::uint64_t size, TipsyAuxiliaryArray& array)
 {
@@ -105,14 +108,20 @@ bool IsBinaryArray(
     {
       continue;
     }
-    for (int bytes : { 4, 8 })
+    for (int components : { 1, 3 })
     {
-      if (size == 4 + static_cast<std::uint64_t>(bytes) * static_cast<std::uint64_t>(particles))
+      for (int bytes : { 4, 8 })
       {
-        array.BigEndian = big;
-        array.ValueBytes = bytes;
-        array.Integers = bytes == 4 && NamesIntegers(array.Name);
-        return true;
+        if (size ==
+          4 +
+            static_cast<std::uint64_t>(bytes * components) * static_cast<std::uint64_t>(particles))
+        {
+          array.BigEndian = big;
+          array.ValueBytes = bytes;
+          array.Components = components;
+          array.Integers = bytes == 4 && components == 1 && NamesIntegers(array.Name);
+          return true;
+        }
       }
     }
   }
@@ -120,12 +129,30 @@ bool IsBinaryArray(
 }
 
 template <typename ArrayType>
-vtkSmartPointer<vtkDataArray> NewArray(const std::string& name, long long count)
+vtkSmartPointer<vtkDataArray> NewArray(const std::string& name, long long count, int components)
 {
   auto array = vtkSmartPointer<ArrayType>::New();
   array->SetName(name.c_str());
-  array->SetNumberOfValues(static_cast<vtkIdType>(count));
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(count));
   return array;
+}
+
+// Sets value `k` (tuple * components + component) of `array` (vtkTypeInt64Array or
+// vtkDoubleArray) from `token`; false if it is not a number.
+bool SetFromText(vtkDataArray* array, bool integers, vtkIdType k, const std::string& token)
+{
+  char* stop = nullptr;
+  errno = 0;
+  if (integers)
+  {
+    static_cast<vtkTypeInt64Array*>(array)->SetValue(k, std::strtoll(token.c_str(), &stop, 10));
+  }
+  else
+  {
+    static_cast<vtkDoubleArray*>(array)->SetValue(k, std::strtod(token.c_str(), &stop));
+  }
+  return stop != token.c_str() && *stop == '\0' && errno != ERANGE;
 }
 
 vtkSmartPointer<vtkDataArray> ReadText(
@@ -134,34 +161,29 @@ vtkSmartPointer<vtkDataArray> ReadText(
   std::ifstream file(aux.Path);
   std::string token;
   std::getline(file, token); // the particle count
-  for (long long i = 0; i < begin && file >> token; ++i)
+  const int components = aux.Components;
+  auto array = aux.Integers ? NewArray<vtkTypeInt64Array>(aux.Name, end - begin, components)
+                            : NewArray<vtkDoubleArray>(aux.Name, end - begin, components);
+  long long read = 0; // values read after the count
+  for (int c = 0; c < components; ++c)
   {
-  }
-  auto array = aux.Integers ? NewArray<vtkTypeInt64Array>(aux.Name, end - begin)
-                            : NewArray<vtkDoubleArray>(aux.Name, end - begin);
-  for (long long i = begin; i < end; ++i)
-  {
-    char* stop = nullptr;
-    errno = 0;
-    if (!(file >> token))
+    // A vector's components one after the other: every particle's x, then every y, then z.
+    for (const long long first = c * aux.Particles + begin; read < first && file >> token;)
     {
-      problem = "auxiliary array " + aux.Path + " ends before particle " + std::to_string(i);
-      return nullptr;
+      ++read;
     }
-    const vtkIdType at = static_cast<vtkIdType>(i - begin);
-    if (aux.Integers)
+    for (long long i = begin; i < end; ++i, ++read)
     {
-      static_cast<vtkTypeInt64Array*>(array.Get())
-        ->SetValue(at, std::strtoll(token.c_str(), &stop, 10));
-    }
-    else
-    {
-      static_cast<vtkDoubleArray*>(array.Get())->SetValue(at, std::strtod(token.c_str(), &stop));
-    }
-    if (stop == token.c_str() || *stop != '\0' || errno == ERANGE)
-    {
-      problem = "auxiliary array " + aux.Path + ": \"" + token + "\" is not a number";
-      return nullptr;
+      if (!(file >> token))
+      {
+        problem = "auxiliary array " + aux.Path + " ends before particle " + std::to_string(i);
+        return nullptr;
+      }
+      if (!SetFromText(array, aux.Integers, (i - begin) * components + c, token))
+      {
+        problem = "auxiliary array " + aux.Path + ": \"" + token + "\" is not a number";
+        return nullptr;
+      }
     }
   }
   return array;
@@ -171,41 +193,43 @@ vtkSmartPointer<vtkDataArray> ReadBinary(
   const TipsyAuxiliaryArray& aux, long long begin, long long end, std::string& problem)
 {
   std::ifstream file(aux.Path, std::ios::binary);
-  std::vector<char> bytes(static_cast<std::size_t>(end - begin) * aux.ValueBytes);
-  file.seekg(4 + begin * aux.ValueBytes);
+  const long long valueBytes = static_cast<long long>(aux.ValueBytes) * aux.Components;
+  std::vector<char> bytes(static_cast<std::size_t>((end - begin) * valueBytes));
+  file.seekg(4 + begin * valueBytes);
   if (!file || !file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
   {
     problem = "could not read auxiliary array " + aux.Path + " (changed since it was found?)";
     return nullptr;
   }
   const vtkIdType n = static_cast<vtkIdType>(end - begin);
+  const vtkIdType values = n * aux.Components;
   vtkSmartPointer<vtkDataArray> array;
   if (aux.ValueBytes == 8)
   {
-    array = NewArray<vtkDoubleArray>(aux.Name, n);
-    for (vtkIdType i = 0; i < n; ++i)
+    array = NewArray<vtkDoubleArray>(aux.Name, n, aux.Components);
+    for (vtkIdType k = 0; k < values; ++k)
     {
       static_cast<vtkDoubleArray*>(array.Get())
-        ->SetValue(i, FromBytes<double>(&bytes[8 * static_cast<std::size_t>(i)], aux.BigEndian));
+        ->SetValue(k, FromBytes<double>(&bytes[8 * static_cast<std::size_t>(k)], aux.BigEndian));
     }
   }
   else if (aux.Integers)
   {
-    array = NewArray<vtkTypeInt32Array>(aux.Name, n);
-    for (vtkIdType i = 0; i < n; ++i)
+    array = NewArray<vtkTypeInt32Array>(aux.Name, n, 1);
+    for (vtkIdType k = 0; k < values; ++k)
     {
       static_cast<vtkTypeInt32Array*>(array.Get())
         ->SetValue(
-          i, FromBytes<std::int32_t>(&bytes[4 * static_cast<std::size_t>(i)], aux.BigEndian));
+          k, FromBytes<std::int32_t>(&bytes[4 * static_cast<std::size_t>(k)], aux.BigEndian));
     }
   }
   else
   {
-    array = NewArray<vtkFloatArray>(aux.Name, n);
-    for (vtkIdType i = 0; i < n; ++i)
+    array = NewArray<vtkFloatArray>(aux.Name, n, aux.Components);
+    for (vtkIdType k = 0; k < values; ++k)
     {
       static_cast<vtkFloatArray*>(array.Get())
-        ->SetValue(i, FromBytes<float>(&bytes[4 * static_cast<std::size_t>(i)], aux.BigEndian));
+        ->SetValue(k, FromBytes<float>(&bytes[4 * static_cast<std::size_t>(k)], aux.BigEndian));
     }
   }
   return array;
@@ -227,6 +251,7 @@ std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
   {
     const std::string name = listing.GetFile(f);
     TipsyAuxiliaryArray array;
+    array.Particles = particles;
     array.Name = name.substr(std::min(prefix.size(), name.size()));
     array.Path = directory.empty() ? name : directory + "/" + name;
     if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
@@ -251,7 +276,7 @@ std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
     }
     file.clear();
     file.seekg(0);
-    if (IsTextArray(file, particles, array.Integers))
+    if (IsTextArray(file, particles, array.Integers, array.Components))
     {
       array.Text = true;
       found.push_back(array);

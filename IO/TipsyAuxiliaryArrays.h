@@ -5,7 +5,7 @@
 // one value per particle of the whole snapshot, in the snapshot's order (gas, dark matter,
 // stars). Two encodings, as pynbody reads them: text (the particle count on the first line, then
 // the values), and binary (a 32-bit particle count, then 32-bit floats or integers, or 64-bit
-// floats; either byte order).
+// floats; either byte order); vectors (three values a particle) as ChaNGa reads them.
 #ifndef TipsyAuxiliaryArrays_h
 #define TipsyAuxiliaryArrays_h
 
@@ -24,25 +24,28 @@ struct TipsyAuxiliaryArray
   std::string Name; // what follows "SNAPSHOT." in the file's name
   std::string Path;
   bool Text = false;
-  bool BigEndian = true; // binary files
-  int ValueBytes = 4;    // binary files: 4 or 8
-  bool Integers = false; // 32-bit integers (binary), or text without a fraction or an exponent
+  bool BigEndian = true;   // binary files
+  int ValueBytes = 4;      // binary files: 4 or 8
+  bool Integers = false;   // 32-bit integers (binary), or text without a fraction or an exponent
+  int Components = 1;      // 3: a vector (binary: x, y, z per particle; text: all x, all y, all z)
+  long long Particles = 0; // in the whole snapshot (the count the file starts with)
 };
 
 /**
  * The auxiliary arrays beside `snapshot` that hold exactly `particles` values, one a particle,
- * sorted by name. A binary file holds 32-bit integers where its name says so (iord, igasorder,
- * iordergas, grp and NAME.grp: pynbody's list), else floats. Files of another particle count, of
- * three values a particle (vector arrays, as acc2) or of another size are not arrays of this
+ * or three (vectors, as acc2, the layout ChaNGa reads), sorted by name. A binary file holds
+ * 32-bit integers where its name says so (iord, igasorder, iordergas, grp and NAME.grp: pynbody's
+ * list), else floats. Files of another particle count or of another size are not arrays of this
  * snapshot and are left out; so are compressed ones (.gz).
  */
 std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
   const std::string& snapshot, long long particles);
 
 /**
- * Values `begin` to `end` (indices over the whole snapshot) of `array`: 32-bit integers
- * (binary) or 64-bit integers (text), floats (binary 4 bytes) or doubles (binary 8 bytes, text).
- * Null, with `problem` set, when the file cannot be read so far (changed since it was found).
+ * Values `begin` to `end` (indices over the whole snapshot) of `array`, 1 or 3 components: 32-bit
+ * integers (binary) or 64-bit integers (text), floats (binary 4 bytes) or doubles (binary 8 bytes,
+ * text). Null, with `problem` set, when the file cannot be read so far (changed since it was
+ * found).
  */
 vtkSmartPointer<vtkDataArray> ReadTipsyAuxiliaryArray(
   const TipsyAuxiliaryArray& array, long long begin, long long end, std::string& problem);

@@ -15,12 +15,12 @@
  * records of one layout); they are read as doubles then, and field data TipsyDoublePositions and
  * TipsyDoubleVelocities (0 or 1) say which layout was read. Each type's columns become point
  * arrays (velocity as a vector), gas's rho the active scalars. The auxiliary arrays beside the
- * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, ...; text or binary,
- * one value a particle, see TipsyAuxiliaryArrays.h) become point arrays NAME of every type,
- * except where NAME is a column of the main file. The periodic box, which a Tipsy file does not
- * hold, comes from the run's parameter file (TipsyRunParameters.h) as field data BoxSize (and
- * TipsyParameterFile, the file read). Particle types ("Gas", "DarkMatter",
- * "Stars"), pieces and output: see vtkParticleSnapshotReader.
+ * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, acc2, ...; text or
+ * binary, one value a particle or three, see TipsyAuxiliaryArrays.h) become point arrays NAME of
+ * every type, except where NAME is a column of the main file. The periodic box, which a Tipsy file
+ * does not hold, comes from the run's parameter file (TipsyRunParameters.h) as field data BoxSize
+ * (and TipsyParameterFile, the file read). Particle types ("Gas", "DarkMatter", "Stars"), pieces
+ * and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h

@@ -355,9 +355,10 @@ int ParticleOf(int kind, double x)
 
 // ChaNGa's and Gasoline's auxiliary arrays beside the snapshot (`bigEndian`: the main file's byte
 // order; the binary arrays are written in both): one value per particle of the whole snapshot,
-// gas first. Each type gets its share, read whole and in pieces, and with the array selection;
-// files of another count, vectors, compressed files and names of the main file's columns are
-// left out.
+// gas first, or three for a vector (binary: x, y, z of each particle; text: all x, all y, all
+// z, as ChaNGa reads them). Each type gets its share, read whole and in pieces, and with the
+// array selection; files of another count, compressed files and names of the main file's
+// columns are left out.
 void TestAuxiliaryArrays(bool bigEndian)
 {
   const std::string what = std::string("auxiliary arrays, ") +
@@ -368,7 +369,7 @@ void TestAuxiliaryArrays(bool bigEndian)
   std::vector<std::int32_t> iord;
   std::vector<double> precise;
   std::vector<float> densities, vectors;
-  std::vector<std::string> fractions, groups, masses, seven;
+  std::vector<std::string> fractions, groups, masses, seven, curl(3 * total), two;
   for (int j = 0; j < total; ++j)
   {
     iord.push_back(1000 + 7 * j);
@@ -378,16 +379,18 @@ void TestAuxiliaryArrays(bool bigEndian)
     groups.push_back(std::to_string(j % 2 == 0 ? 0 : 3000000000LL + j));
     masses.push_back("-1");
     seven.push_back("5");
+    two.insert(two.end(), { "1", "2" });
     for (int d = 0; d < 3; ++d)
     {
-      vectors.push_back(static_cast<float>(j));
+      vectors.push_back(static_cast<float>(j) + 0.25f * static_cast<float>(d));
+      curl[d * total + j] = std::to_string(10 * d + j) + ".5";
     }
   }
   seven.push_back("5");
   WriteBinaryArray(path + ".iord", true, total, iord);         // ChaNGa's XDR order
   WriteBinaryArray(path + ".rho", false, total, densities);    // the other order
   WriteBinaryArray(path + ".dbl", !bigEndian, total, precise); // doubles
-  WriteBinaryArray(path + ".acc2", true, total, vectors);      // a vector: left out
+  WriteBinaryArray(path + ".acc2", true, total, vectors);      // a vector
   WriteBinaryArray(path + ".short", true, total,
     std::vector<float>(densities.begin() + 1,
       densities.end())); // one value short: left out
@@ -395,9 +398,11 @@ void TestAuxiliaryArrays(bool bigEndian)
   WriteTextArray(path + ".amiga.grp", total, groups);
   WriteTextArray(path + ".mass", total, masses);     // the main file's column
   WriteTextArray(path + ".seven", total, seven);     // another count: left out
+  WriteTextArray(path + ".curl", total, curl);       // a vector: all x, all y, all z
+  WriteTextArray(path + ".two", total, two);         // two values a particle: left out
   WriteTextArray(path + ".HI.gz", total, fractions); // compressed: left out
   const std::vector<std::string> written = { ".iord", ".rho", ".dbl", ".acc2", ".short", ".HI",
-    ".amiga.grp", ".mass", ".seven", ".HI.gz" };
+    ".amiga.grp", ".mass", ".seven", ".curl", ".two", ".HI.gz" };
 
   vtkNew<vtkTipsyParticleReader> reader;
   reader->SetFileName(path.c_str());
@@ -420,15 +425,17 @@ void TestAuxiliaryArrays(bool bigEndian)
       vtkPointData* pd = block ? block->GetPointData() : nullptr;
       vtkDataArray* a[] = { pd ? pd->GetArray("iord") : nullptr, pd ? pd->GetArray("dbl") : nullptr,
         pd ? pd->GetArray("HI") : nullptr, pd ? pd->GetArray("amiga.grp") : nullptr,
-        pd ? pd->GetArray("rho") : nullptr, pd ? pd->GetArray("mass") : nullptr };
+        pd ? pd->GetArray("rho") : nullptr, pd ? pd->GetArray("mass") : nullptr,
+        pd ? pd->GetArray("acc2") : nullptr, pd ? pd->GetArray("curl") : nullptr };
       if (!block || std::find(std::begin(a), std::end(a), nullptr) != std::end(a))
       {
         exact = false;
         break;
       }
       typed = typed && a[0]->GetDataType() == VTK_TYPE_INT32 && a[1]->GetDataType() == VTK_DOUBLE &&
-        a[3]->GetDataType() == VTK_TYPE_INT64;
-      for (const char* left : { "acc2", "short", "seven", "HI.gz" })
+        a[3]->GetDataType() == VTK_TYPE_INT64 && a[6]->GetDataType() == VTK_FLOAT &&
+        a[6]->GetNumberOfComponents() == 3 && a[7]->GetNumberOfComponents() == 3;
+      for (const char* left : { "short", "seven", "two", "HI.gz" })
       {
         absent = absent && !pd->GetAbstractArray(left);
       }
@@ -443,13 +450,19 @@ void TestAuxiliaryArrays(bool bigEndian)
           a[1]->GetTuple1(p) == precise[j] && a[2]->GetTuple1(p) == std::stod(fractions[j]) &&
           a[3]->GetTuple1(p) == std::stod(groups[j]) && a[4]->GetTuple1(p) == rho &&
           a[5]->GetTuple1(p) == Value(static_cast<int>(k), i, 0);
+        for (int d = 0; d < 3; ++d)
+        {
+          exact = exact && a[6]->GetComponent(p, d) == vectors[3 * j + d] &&
+            a[7]->GetComponent(p, d) == std::stod(curl[d * total + j]);
+        }
         ++checked;
       }
     }
     Check(exact && absent && typed,
       what + ", " + how +
-        ": every type's share of iord (int32), dbl (doubles), HI, amiga.grp (int64) and rho " +
-        "(gas: the main file's), mass the main file's, the other files left out");
+        ": every type's share of iord (int32), dbl (doubles), HI, amiga.grp (int64), rho " +
+        "(gas: the main file's), the vectors acc2 (binary) and curl (text), mass the main " +
+        "file's, the other files left out");
     return checked;
   };
   reader->Update();
