@@ -236,8 +236,32 @@ vtkSmartPointer<vtkDataArray> ReadBinary(
 }
 } // namespace
 
+namespace
+{
+// Whether the file at array.Path is an auxiliary array of `particles` particles (and which).
+bool IsAuxiliaryArray(long long particles, TipsyAuxiliaryArray& array)
+{
+  std::ifstream file(array.Path, std::ios::binary);
+  file.seekg(0, std::ios::end);
+  const std::uint64_t size = static_cast<std::uint64_t>(std::max<std::streamoff>(0, file.tellg()));
+  file.seekg(0);
+  if (!file)
+  {
+    return false;
+  }
+  if (IsBinaryArray(file, particles, size, array))
+  {
+    return true;
+  }
+  file.clear();
+  file.seekg(0);
+  array.Text = IsTextArray(file, particles, array.Integers, array.Components);
+  return array.Text;
+}
+} // namespace
+
 std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
-  const std::string& snapshot, long long particles)
+  const std::string& snapshot, long long particles, TipsyAuxiliaryCache* cache)
 {
   std::vector<TipsyAuxiliaryArray> found;
   std::string directory = vtksys::SystemTools::GetFilenamePath(snapshot);
@@ -260,26 +284,29 @@ std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
     {
       continue;
     }
-    std::ifstream file(array.Path, std::ios::binary);
-    file.seekg(0, std::ios::end);
-    const std::uint64_t size =
-      static_cast<std::uint64_t>(std::max<std::streamoff>(0, file.tellg()));
-    file.seekg(0);
-    if (!file)
+    // A file looked at before, unchanged (its size and modification time), for as many
+    // particles: what was found then (a text file is read whole to be recognised).
+    const TipsyAuxiliaryCache::Stamp stamp = { vtksys::SystemTools::FileLength(array.Path),
+      static_cast<long long>(vtksys::SystemTools::ModifiedTime(array.Path)), particles };
+    auto known = cache ? cache->Files.find(array.Path) : TipsyAuxiliaryCache::Map::iterator();
+    if (cache && known != cache->Files.end() && known->second.first == stamp)
     {
+      if (known->second.second.Particles > 0)
+      {
+        found.push_back(known->second.second);
+      }
       continue;
     }
-    if (IsBinaryArray(file, particles, size, array))
+    const bool isArray = IsAuxiliaryArray(particles, array);
+    if (isArray)
     {
       found.push_back(array);
-      continue;
     }
-    file.clear();
-    file.seekg(0);
-    if (IsTextArray(file, particles, array.Integers, array.Components))
+    if (cache)
     {
-      array.Text = true;
-      found.push_back(array);
+      TipsyAuxiliaryArray entry = array;
+      entry.Particles = isArray ? particles : 0; // 0: not an array
+      cache->Files[array.Path] = { stamp, entry };
     }
   }
   std::sort(found.begin(), found.end(),

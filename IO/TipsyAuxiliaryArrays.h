@@ -12,7 +12,9 @@
 #include "vtkDataArray.h"
 #include "vtkSmartPointer.h"
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lsi
@@ -31,15 +33,35 @@ struct TipsyAuxiliaryArray
   long long Particles = 0; // in the whole snapshot (the count the file starts with)
 };
 
+/// What FindTipsyAuxiliaryArrays found of each file it looked at, by path, with the file's size
+/// and modification time and the particle count: the reader reads its metadata again on each
+/// update, and a text file is read whole to be recognised.
+struct TipsyAuxiliaryCache
+{
+  struct Stamp
+  {
+    unsigned long long Size;
+    long long Time;
+    long long Particles;
+    bool operator==(const Stamp& o) const
+    {
+      return this->Size == o.Size && this->Time == o.Time && this->Particles == o.Particles;
+    }
+  };
+  using Map = std::map<std::string, std::pair<Stamp, TipsyAuxiliaryArray>>; // Particles 0: none
+  Map Files;
+};
+
 /**
  * The auxiliary arrays beside `snapshot` that hold exactly `particles` values, one a particle,
  * or three (vectors, as acc2, the layout ChaNGa reads), sorted by name. A binary file holds
  * 32-bit integers where its name says so (iord, igasorder, iordergas, grp and NAME.grp: pynbody's
  * list), else floats. Files of another particle count or of another size are not arrays of this
- * snapshot and are left out; so are compressed ones (.gz).
+ * snapshot and are left out; so are compressed ones (.gz). `cache`, if given, keeps what was
+ * found of each file, which is not looked at again while unchanged.
  */
 std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
-  const std::string& snapshot, long long particles);
+  const std::string& snapshot, long long particles, TipsyAuxiliaryCache* cache = nullptr);
 
 /**
  * Values `begin` to `end` (indices over the whole snapshot) of `array`, 1 or 3 components: 32-bit

@@ -175,7 +175,8 @@ bool vtkTipsyParticleReader::ReadMetaData(
   this->TypeKinds.clear();
   this->TypeOffsets.clear();
   this->TypeFirsts.clear();
-  this->AuxiliaryArrays = lsi::io::FindTipsyAuxiliaryArrays(this->FileName, header.Bodies);
+  this->AuxiliaryArrays =
+    lsi::io::FindTipsyAuxiliaryArrays(this->FileName, header.Bodies, &this->AuxiliaryCache);
   for (int k = 0; k < 3; ++k)
   {
     if (counts[k] > 0)

@@ -61,6 +61,7 @@ private:
   std::vector<long long> TypeOffsets;       // byte offset of each listed type's first record
   std::vector<long long> TypeFirsts;        // index of each listed type's first particle
   std::vector<lsi::io::TipsyAuxiliaryArray> AuxiliaryArrays; // SNAPSHOT.NAME files beside it
+  lsi::io::TipsyAuxiliaryCache AuxiliaryCache;               // what was found of each file
 };
 
 #endif

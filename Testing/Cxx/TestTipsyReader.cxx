@@ -19,6 +19,7 @@
 #include "vtkCommand.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
@@ -489,6 +490,29 @@ void TestAuxiliaryArrays(bool bigEndian)
   std::remove(path.c_str());
 }
 
+// The reader remembers what each file beside the snapshot is (a text array is read whole to be
+// recognised), by its size and time: a file changed on disk is looked at again.
+void TestAuxiliaryFileChanged()
+{
+  const std::string path = "tipsy_aux_changed.std";
+  WriteTipsy(path, true);
+  const int total = GasCount + DarkCount + StarCount;
+  WriteTextArray(path + ".HI", total, std::vector<std::string>(total, "0.5"));
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkDataSet* gas = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  const bool before = gas && gas->GetPointData()->GetArray("HI");
+  WriteTextArray(path + ".HI", total, std::vector<std::string>(total + 1, "0.5")); // one too many
+  reader->Modified();
+  reader->Update();
+  gas = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  Check(before && gas && !gas->GetPointData()->GetArray("HI"),
+    "an auxiliary array read, then changed on disk to another count: left out on the next update");
+  std::remove((path + ".HI").c_str());
+  std::remove(path.c_str());
+}
+
 // The run's parameter file gives the box (a Tipsy file does not): found by achOutName (numbered
 // outputs) or achInFile, in the snapshot's directory or its parent, else the only .param there;
 // dPeriod sets the axes not given, a period of 0 leaves the box open (with a warning).
@@ -662,6 +686,7 @@ int main(int argc, char* argv[])
   TestDoublePrecision(8, false);
   TestAuxiliaryArrays(true);
   TestAuxiliaryArrays(false);
+  TestAuxiliaryFileChanged();
   TestRunParameters();
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
