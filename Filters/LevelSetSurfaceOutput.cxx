@@ -266,10 +266,18 @@ bool CopyNearestSampleValues(const Neighborhoods& geometry, const std::vector<do
         [&](std::size_t begin, std::size_t end) {
           for (std::size_t i = begin; i < end; ++i)
           {
-            std::uint32_t nearest = 0;
-            double squared = 0.0;
-            geometry.Index->Nearest(&points[3 * i], 1, &nearest, &squared);
-            fromIds[i] = static_cast<vtkIdType>(geometry.Order[nearest]);
+            // Of two samples equally near, the one first in coordinate order: the same choice
+            // whatever the tree (each rank's own under MPI).
+            std::uint32_t nearest[2] = { 0, 0 };
+            double squared[2] = { 0.0, HUGE_VAL };
+            const std::size_t found = geometry.Index->Nearest(&points[3 * i], 2, nearest, squared);
+            std::uint32_t chosen = nearest[0];
+            if (found == 2 && squared[1] == squared[0])
+            {
+              const double *a = geometry.Position(nearest[0]), *b = geometry.Position(nearest[1]);
+              chosen = std::lexicographical_compare(b, b + 3, a, a + 3) ? nearest[1] : nearest[0];
+            }
+            fromIds[i] = static_cast<vtkIdType>(geometry.Order[chosen]);
           }
         },
         aborted, 8192))

@@ -432,9 +432,54 @@ void TestTimeSeries()
 }
 } // namespace
 
+// CopyNearestSampleValues where two samples are equally near (points midway between two grid
+// samples, the distances exactly equal): the one first in coordinate order gives its value,
+// whatever the input's order (each rank's tree is its own under MPI).
+void TestNearestTies()
+{
+  std::vector<vtkIdType> picked[2];
+  for (int reversed = 0; reversed < 2; ++reversed)
+  {
+    vtkNew<vtkPoints> grid;
+    vtkNew<vtkIntArray> ids;
+    const int n = 6;
+    for (int k = 0; k < n * n * n; ++k)
+    {
+      const int j = reversed ? n * n * n - 1 - k : k;
+      grid->InsertNextPoint(j % n, (j / n) % n, j / (n * n));
+      ids->InsertNextValue(j);
+    }
+    lsi::Neighborhoods geometry;
+    lsi::BuildNeighborhoods(grid, 8, geometry, lsi::AbortCheck());
+    std::vector<double> points;
+    for (int k = 0; k < n - 1; ++k)
+    {
+      points.insert(points.end(), { k + 0.5, 2.0, 3.0 }); // between (k, 2, 3) and (k + 1, 2, 3)
+      points.insert(points.end(), { 1.0, k + 0.5, 4.0 }); // between (1, k, 4) and (1, k + 1, 4)
+    }
+    vtkNew<vtkIntArray> out;
+    out->SetNumberOfTuples(static_cast<vtkIdType>(points.size() / 3));
+    lsi::CopyNearestSampleValues(geometry, points, { ids }, { out }, lsi::AbortCheck());
+    for (vtkIdType i = 0; i < out->GetNumberOfTuples(); ++i)
+    {
+      picked[reversed].push_back(out->GetValue(i));
+    }
+  }
+  bool first = true;
+  for (std::size_t i = 0; i < picked[0].size(); ++i)
+  {
+    const int k = static_cast<int>(i / 2);
+    const vtkIdType expected = i % 2 == 0 ? k + 2 * 6 + 3 * 36 : 1 + k * 6 + 4 * 36;
+    first = first && picked[0][i] == expected && picked[1][i] == expected;
+  }
+  Check(first && picked[0].size() == 10,
+    "nearest-value ties: the sample first in coordinate order, in either input order");
+}
+
 int main()
 {
   TestInterpolatedArrays();
+  TestNearestTies();
   TestScalarsInStorageOrder();
   TestSplats();
   TestTimeSeries();
