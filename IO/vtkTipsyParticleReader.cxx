@@ -8,6 +8,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -339,6 +340,15 @@ bool vtkTipsyParticleReader::ReadParticles(
       if (!values)
       {
         return false;
+      }
+      if (aux.Name == "iord" && values->GetNumberOfComponents() == 1)
+      {
+        // The particle orders are the particles' global ids (as HDF5's ParticleIDs).
+        vtkNew<vtkIdTypeArray> ids;
+        ids->DeepCopy(values);
+        ids->SetName(aux.Name.c_str());
+        output->GetPointData()->SetGlobalIds(ids);
+        continue;
       }
       output->GetPointData()->AddArray(values);
     }

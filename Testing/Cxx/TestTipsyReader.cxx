@@ -433,9 +433,10 @@ void TestAuxiliaryArrays(bool bigEndian)
         exact = false;
         break;
       }
-      typed = typed && a[0]->GetDataType() == VTK_TYPE_INT32 && a[1]->GetDataType() == VTK_DOUBLE &&
-        a[3]->GetDataType() == VTK_TYPE_INT64 && a[6]->GetDataType() == VTK_FLOAT &&
-        a[6]->GetNumberOfComponents() == 3 && a[7]->GetNumberOfComponents() == 3;
+      typed = typed && a[0]->GetDataType() == VTK_ID_TYPE && a[0] == pd->GetGlobalIds() &&
+        a[1]->GetDataType() == VTK_DOUBLE && a[3]->GetDataType() == VTK_TYPE_INT64 &&
+        a[6]->GetDataType() == VTK_FLOAT && a[6]->GetNumberOfComponents() == 3 &&
+        a[7]->GetNumberOfComponents() == 3;
       for (const char* left : { "short", "seven", "two", "HI.gz" })
       {
         absent = absent && !pd->GetAbstractArray(left);
@@ -461,7 +462,8 @@ void TestAuxiliaryArrays(bool bigEndian)
     }
     Check(exact && absent && typed,
       what + ", " + how +
-        ": every type's share of iord (int32), dbl (doubles), HI, amiga.grp (int64), rho " +
+        ": every type's share of iord (the global ids), dbl (doubles), HI, amiga.grp (int64), "
+        "rho " +
         "(gas: the main file's), the vectors acc2 (binary) and curl (text), mass the main " +
         "file's, the other files left out");
     return checked;

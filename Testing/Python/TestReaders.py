@@ -201,11 +201,14 @@ if shared is None:
     nearest = tree.query(at)[1]
     on = {name: out.GetPointData().GetArray(name) for name in ("iord", "amiga.grp", "HI")}
     ok = all(a is not None for a in on.values()) and len(at) > 1000
-    ok = ok and on["iord"].GetDataTypeAsString() == "int" and np.array_equal(
+    # (The particles' global ids; on the surface a plain array, its points not being particles.)
+    ok = ok and particles.GetPointData().GetGlobalIds() is not None and \
+        out.GetPointData().GetGlobalIds() is None and \
+        on["iord"].GetDataTypeAsString() == "idtype" and np.array_equal(
         vtk_to_numpy(on["iord"]), iord[nearest]) and np.array_equal(
         vtk_to_numpy(on["amiga.grp"]), groups[nearest]) and on["HI"].GetDataType() == 11
-    check(ok, "auxiliary arrays on the surface (%d points): iord (int) and amiga.grp the nearest "
-          "particle's, HI interpolated (double)" % len(at))
+    check(ok, "auxiliary arrays on the surface (%d points): iord (the particles' global ids) and "
+          "amiga.grp the nearest particle's, HI interpolated (double)" % len(at))
 
 # PeriodicRegion as a keyword: a region across the faces of the SWIFT file's periodic box (side
 # 2 pi) holds the particles whose images lie inside it, wrapped or not.
