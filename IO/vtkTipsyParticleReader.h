@@ -17,10 +17,10 @@
  * arrays (velocity as a vector), gas's rho the active scalars. The auxiliary arrays beside the
  * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, acc2, ...; text or
  * binary, one value a particle or three, see TipsyAuxiliaryArrays.h) become point arrays NAME of
- * every type, except where NAME is a column of the main file. The periodic box, which a Tipsy file
- * does not hold, comes from the run's parameter file (TipsyRunParameters.h) as field data BoxSize
- * (and TipsyParameterFile, the file read). Particle types ("Gas", "DarkMatter", "Stars"), pieces
- * and output: see vtkParticleSnapshotReader.
+ * every type, except where NAME is a column of the main file (iord, the particle orders, is the
+ * global ids). The periodic box, which a Tipsy file does not hold, comes from the run's parameter
+ * file (TipsyRunParameters.h) as field data BoxSize (and TipsyParameterFile, the file read).
+ * Particle types ("Gas", "DarkMatter", "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h
