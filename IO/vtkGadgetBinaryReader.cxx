@@ -32,7 +32,6 @@ struct vtkGadgetBinaryReader::Internals
   };
   std::vector<Part> Parts;
   std::vector<int> TypeNumbers; // GADGET type of each listed type
-  std::string Warned;           // the last warning about left-out blocks (given once per file)
 };
 
 namespace
@@ -217,9 +216,7 @@ bool vtkGadgetBinaryReader::ReadMetaData(
   std::vector<ParticleType>& types, double& time, vtkFieldData* fields, std::string& problem)
 {
   Internals& internal = *this->Internal;
-  const std::string warned = internal.Warned;
   internal = Internals();
-  internal.Warned = warned;
   gadget::FileLayout opened;
   if (!ReadLayoutOf(this->FileName, opened, problem))
   {
@@ -273,13 +270,10 @@ bool vtkGadgetBinaryReader::ReadMetaData(
     }
     internal.Parts.push_back(std::move(part));
   }
-  // (The meta data is read at each pipeline pass: the warning is given once per file.)
-  const std::string warning = this->FileName + ": blocks left out, their sizes fitting no " +
-    "particle type's count (or a name met twice): " + leftOut;
-  if (!leftOut.empty() && warning != internal.Warned)
+  if (!leftOut.empty())
   {
-    vtkWarningMacro(<< warning);
-    internal.Warned = warning;
+    const std::string why = "their sizes fitting no particle type's count (or a name met twice)";
+    this->WarnOnce("blocks left out, " + why + ": " + leftOut);
   }
   std::vector<long long> totals(gadget::NumberOfTypes, 0);
   std::vector<std::vector<std::string>> arraysOf(gadget::NumberOfTypes);
