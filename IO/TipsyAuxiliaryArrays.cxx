@@ -234,10 +234,7 @@ vtkSmartPointer<vtkDataArray> ReadBinary(
   }
   return array;
 }
-} // namespace
 
-namespace
-{
 // Whether the file at array.Path is an auxiliary array of `particles` particles (and which).
 bool IsAuxiliaryArray(long long particles, TipsyAuxiliaryArray& array)
 {
@@ -289,11 +286,11 @@ std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
     const TipsyAuxiliaryCache::Stamp stamp = { vtksys::SystemTools::FileLength(array.Path),
       static_cast<long long>(vtksys::SystemTools::ModifiedTime(array.Path)), particles };
     auto known = cache ? cache->Files.find(array.Path) : TipsyAuxiliaryCache::Map::iterator();
-    if (cache && known != cache->Files.end() && known->second.first == stamp)
+    if (cache && known != cache->Files.end() && known->second.Of == stamp)
     {
-      if (known->second.second.Particles > 0)
+      if (known->second.IsArray)
       {
-        found.push_back(known->second.second);
+        found.push_back(known->second.Array);
       }
       continue;
     }
@@ -304,9 +301,7 @@ std::vector<TipsyAuxiliaryArray> FindTipsyAuxiliaryArrays(
     }
     if (cache)
     {
-      TipsyAuxiliaryArray entry = array;
-      entry.Particles = isArray ? particles : 0; // 0: not an array
-      cache->Files[array.Path] = { stamp, entry };
+      cache->Files[array.Path] = { stamp, isArray, array };
     }
   }
   std::sort(found.begin(), found.end(),

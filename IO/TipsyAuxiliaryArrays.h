@@ -14,7 +14,6 @@
 
 #include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace lsi
@@ -48,7 +47,13 @@ struct TipsyAuxiliaryCache
       return this->Size == o.Size && this->Time == o.Time && this->Particles == o.Particles;
     }
   };
-  using Map = std::map<std::string, std::pair<Stamp, TipsyAuxiliaryArray>>; // Particles 0: none
+  struct Entry
+  {
+    Stamp Of;                  // the file as it was looked at
+    bool IsArray;              // whether it was an auxiliary array of the snapshot
+    TipsyAuxiliaryArray Array; // which, if so
+  };
+  using Map = std::map<std::string, Entry>;
   Map Files;
 };
 
