@@ -86,7 +86,7 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   }
   std::string hName, mName, rhoName;
   arrays.SmoothingLength = FindArray(input, request.SmoothingLengthArray, "SmoothingLengthArray",
-    { "SmoothingLength", "SmoothingLengths", "hsmooth" }, hName);
+    { "SmoothingLength", "SmoothingLengths", "smoothlength" }, hName);
   arrays.Mass =
     FindArray(input, request.MassArray, "MassArray", { "Masses", "Mass", "mass" }, mName);
   arrays.Density = FindArray(
@@ -140,10 +140,12 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
   {
     vtkDataArray* marked = vtkDataArray::SafeDownCast(
       input->GetFieldData()->GetAbstractArray("SupportPerSmoothingLength"));
-    // Without a marker: GADGET's convention (h is the support), or Tipsy's (2 h) for hsmooth.
-    arrays.SupportPerSmoothingLength = marked && marked->GetNumberOfTuples() > 0
-      ? marked->GetTuple1(0)
-      : (hName == "hsmooth" ? 2.0 : 1.0);
+    // Without a marker: GADGET's convention (h is the support), or Gasoline's and ChaNGa's (2 h)
+    // for the names they give h (and hsmooth, named by the user: the Tipsy column's name).
+    const bool tipsy = hName == "smoothlength" || hName == "SPHH" || hName == "SphH" ||
+      hName == "hsmall" || hName == "hsmooth";
+    arrays.SupportPerSmoothingLength =
+      marked && marked->GetNumberOfTuples() > 0 ? marked->GetTuple1(0) : (tipsy ? 2.0 : 1.0);
   }
   choice = std::string("Field: the SPH interpolant, ") + NamesOf(arrays.Kernel).Label +
     " kernel with support " + std::to_string(arrays.SupportPerSmoothingLength) + " x '" + hName +

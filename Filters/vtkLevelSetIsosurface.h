@@ -329,7 +329,8 @@ public:
   /**
    * The kernel's support radius H per smoothing length h, H = SupportPerSmoothingLength h.
    * 0 (default): as the reader marked it ("SupportPerSmoothingLength" field data: GADGET and
-   * GIZMO 1, SWIFT its Kernel gamma, Tipsy 2), else 2 for an array named hsmooth, else 1.
+   * GIZMO 1, SWIFT its Kernel gamma, Tipsy 2), else 2 for Gasoline's and ChaNGa's names
+   * (smoothlength, SPHH, SphH, hsmall, hsmooth), else 1.
    */
   vtkSetClampWarnMacro(SupportPerSmoothingLength, double, 0.0, 100.0);
   vtkGetMacro(SupportPerSmoothingLength, double);
@@ -339,7 +340,8 @@ public:
   /**
    * The point arrays of the SPH field. Empty (default): the arrays the reader marked
    * (field data "SmoothingLengthArray", "MassArray", "DensityArray"), else the usual names
-   * (SmoothingLength(s), hsmooth; Masses, Mass, mass; Density, Densities, rho). Without a
+   * (SmoothingLength(s), smoothlength; Masses, Mass, mass; Density, Densities, rho; not a
+   * Tipsy file's hsmooth, the gravitational softening in Gasoline's and ChaNGa's). Without a
    * density array the densities are summed from the masses.
    */
   vtkSetStdStringFromCharMacro(SmoothingLengthArray);

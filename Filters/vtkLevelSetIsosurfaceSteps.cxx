@@ -240,6 +240,20 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   vtkDebugMacro(<< choice);
   if (!sph)
   {
+    // A snapshot's particles (the reader marked their densities and masses) without smoothing
+    // lengths: the simulation's field is not known, and a fit of the samples stands in for it.
+    const bool snapshot = !lsi::MarkedArrayName(input, "DensityArray").empty() &&
+      !lsi::MarkedArrayName(input, "MassArray").empty();
+    if (request.Model == 0 && !arrays.SmoothingLength && snapshot && this->ReportsForAll())
+    {
+      vtkWarningMacro("The particles carry densities and masses but no smoothing lengths (an "
+                      "AREPO snapshot; a Tipsy file without its SNAPSHOT.smoothlength, hsmooth "
+                      "being the softening), so the simulation's SPH field is not known: using "
+                      "the MLS fit of the samples. Name the smoothing lengths "
+                      "(SmoothingLengthArray), or make them with Particle Density "
+                      "(NumberOfNeighbors: the run's neighbour number, nSmooth for ChaNGa and "
+                      "Gasoline).");
+    }
     return true;
   }
   if (!arrays.UnknownKernel.empty() && this->ReportsForAll())

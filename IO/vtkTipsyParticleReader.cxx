@@ -5,6 +5,7 @@
 #include "ByteOrder.h"
 #include "TipsyRunParameters.h"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -108,6 +109,22 @@ bool IsMainColumn(int kind, const std::string& name)
   return name == "velocity" ||
     std::any_of(scalars.begin(), scalars.end(),
       [&name](const std::pair<const char*, int>& scalar) { return name == scalar.first; });
+}
+
+// The auxiliary array of the SPH smoothing lengths h among those read, "" without one:
+// Gasoline's and ChaNGa's "smoothlength" (bDohOutput), Gasoline's gas-only "SPHH", older
+// ChaNGa's "SphH" and "hsmall"; each is fBall / 2.
+std::string TipsySmoothingLengthArray(vtkPolyData* particles)
+{
+  for (const char* name : { "smoothlength", "SPHH", "SphH", "hsmall" })
+  {
+    vtkDataArray* array = particles->GetPointData()->GetArray(name);
+    if (array && array->GetNumberOfComponents() == 1)
+    {
+      return name;
+    }
+  }
+  return std::string();
 }
 
 // Reads and checks the header; tries big-endian (the standard) first, then little-endian.
@@ -355,9 +372,12 @@ bool vtkTipsyParticleReader::ReadParticles(
   }
   if (this->TypeKinds[type] == 0) // gas
   {
-    SPHMarkers markers; // Gasoline and ChaNGa: the cubic spline's support is 2 hsmooth
+    // The smoothing length is not the hsmooth column: Gasoline, ChaNGa and PKDGRAV write the
+    // gravitational softening there. Their h (half the radius fBall of the nSmooth nearest, the
+    // cubic spline's support being 2 h) is an auxiliary array, when the run wrote it.
+    SPHMarkers markers;
     markers.Density = "rho";
-    markers.SmoothingLength = "hsmooth";
+    markers.SmoothingLength = TipsySmoothingLengthArray(output);
     markers.Mass = "mass";
     markers.SupportPerSmoothingLength = 2.0;
     MarkSPHArrays(output, markers);

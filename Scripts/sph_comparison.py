@@ -30,6 +30,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -388,6 +389,40 @@ def main():
         r.ParticleTypes = types
         return ParticleDensity(Input=r, NumberOfNeighbors=64)
 
+    def changa_output(path, softening, n_smooth=32):
+        # The glass as ChaNGa writes an output of it: rho its SPH density over the nSmooth
+        # nearest (Particle Density, H = fBall), the hsmooth column the gravitational softening
+        # (ChaNGa's, Gasoline's and PKDGRAV's writers put it there), and h = fBall / 2 in the
+        # auxiliary file SNAPSHOT.smoothlength (ChaNGa's bDohOutput), big-endian as XDR.
+        r = OpenDataFile(path)
+        r.UpdatePipelineInformation()
+        r.ParticleTypes = ["Gas"]
+        d = ParticleDensity(Input=r, NumberOfNeighbors=n_smooth)
+        glass = fetch(d)
+        pd = glass.GetPointData()
+        x = points_of(glass)
+        n = len(x)
+        rows = np.zeros((n, 12), dtype=">f4")
+        rows[:, 0] = vtk_to_numpy(pd.GetArray("mass"))
+        rows[:, 1:4] = x
+        rows[:, 7] = vtk_to_numpy(pd.GetArray("Density"))
+        rows[:, 8] = 100.0
+        rows[:, 9] = softening
+        out_dir = tempfile.mkdtemp(prefix="changa_output_")
+        snapshot = os.path.join(out_dir, "evrard.000100")
+        with open(snapshot, "wb") as f:
+            f.write(np.array([(1.0, n, 3, n, 0, 0, 0)],
+                             dtype=">f8,>i4,>i4,>i4,>i4,>i4,>i4").tobytes())
+            f.write(rows.tobytes())
+        with open(snapshot + ".smoothlength", "wb") as f:
+            f.write(np.array([n], dtype=">i4").tobytes())
+            f.write((0.5 * vtk_to_numpy(pd.GetArray("SmoothingLength"))).astype(">f4").tobytes())
+        Delete(d)
+        Delete(r)
+        out = OpenDataFile(snapshot)
+        out.UpdatePipelineInformation()
+        return out
+
     # name: (source maker, isovalue rule, description)
     cases = {
         "gadget4-gassphere": (
@@ -413,6 +448,10 @@ def main():
             lambda: tipsy_with_density(os.path.join(data, "adiabtophat_glass_28721.bin"),
                                        ["Gas"]),
             "Evrard glass, 28,721 particles, density by SPH summation (Particle Density, 64)"),
+        "changa-evrard-output": (
+            lambda: changa_output(os.path.join(data, "adiabtophat_glass_28721.bin"), 0.03),
+            "the Evrard glass as ChaNGa writes an output: rho its SPH density over nSmooth = 32, "
+            "h = fBall / 2 in SNAPSHOT.smoothlength, the hsmooth column the softening 0.03"),
         "changa-galaxy": (
             lambda: tipsy_with_density(os.path.join(data, "changa_run581.20000"), ["Stars"]),
             "ChaNGa galaxy stars, 5,321 particles, density by SPH summation: clustered"),
@@ -483,9 +522,13 @@ def main():
             # apart. The truth's grid covers the seeded clump's particles.
             iso = float(np.quantile(summed, 0.9))
             near = seeded_particles(x, summed, iso, seed)
-        if name == "evrard-summed":
+        if name in ("evrard-summed", "changa-evrard-output"):
             iso = 1.0 / (2 * PI * 0.5)  # analytic surface r = 0.5
             seed = np.zeros(3)
+        if name == "changa-evrard-output":
+            # Over 32 neighbours the field dips below the isovalue in a small pocket at the
+            # centre, whose surface is the nearest to the origin: seed near the sphere instead.
+            seed = np.array([0.4, 0.0, 0.0])
         print("  isovalue %.6g, seed (%.4g, %.4g, %.4g), kernel %s, H = %g h" % (
             iso, seed[0], seed[1], seed[2], kernel, factor), flush=True)
         t = time.time()
@@ -496,11 +539,16 @@ def main():
               flush=True)
         rows = {}
         seed_radius = float(factor * h[np.argmax(summed)])
-        for output_type, label in ((1, "filter, default (splats)"), (0, "filter, Isopoints")):
+        runs = [(1, "filter, default (splats)", {}), (0, "filter, Isopoints", {})]
+        if name == "changa-evrard-output":
+            # The marking the Tipsy reader made before: hsmooth (the softening) as h, support 2 h.
+            runs.append((1, "filter, hsmooth as h (splats)",
+                         dict(SmoothingLengthArray="hsmooth", SupportPerSmoothingLength=2.0)))
+        for output_type, label, extra in runs:
             t = time.time()
             f = LevelSetIsosurface(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
                                    SeedCenter=list(seed), SeedRadius=seed_radius,
-                                   OutputType=output_type)
+                                   OutputType=output_type, **extra)
             out = fetch(f)
             seconds = time.time() - t
             f.UpdatePropertyInformation()

@@ -515,6 +515,52 @@ void TestAuxiliaryFileChanged()
   std::remove(path.c_str());
 }
 
+// The gas's SPH field: rho and mass always, and the smoothing lengths of the auxiliary array
+// Gasoline and ChaNGa write (smoothlength, SPHH, SphH, hsmall: h, the cubic spline's support
+// 2 h), never the hsmooth column (their gravitational softening).
+void TestSmoothingLengthMarkers()
+{
+  const std::string path = "tipsy_hsml.std";
+  WriteTipsy(path, true);
+  const int total = GasCount + DarkCount + StarCount;
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  auto marker = [&](const char* name) {
+    reader->Modified();
+    reader->Update();
+    vtkDataObject* gas = reader->GetOutputDataObject(0);
+    vtkAbstractArray* array = gas ? gas->GetFieldData()->GetAbstractArray(name) : nullptr;
+    return array ? array->GetVariantValue(0).ToString() : std::string();
+  };
+  Check(marker("SmoothingLengthArray").empty() && marker("SPHKernel").empty() &&
+      marker("DensityArray") == "rho" && marker("MassArray") == "mass",
+    "no smoothing-length file: rho and mass marked, hsmooth (the softening) not");
+  std::vector<float> h(total);
+  for (int j = 0; j < total; ++j)
+  {
+    h[j] = 0.01f * static_cast<float>(j + 1);
+  }
+  WriteTextArray(path + ".SphH", total, std::vector<std::string>(total, "0.5"));
+  Check(marker("SmoothingLengthArray") == "SphH" && marker("SupportPerSmoothingLength") == "2",
+    "older ChaNGa's SphH marked as the smoothing length, support 2 h");
+  WriteBinaryArray(path + ".smoothlength", true, total, h);
+  const bool marked = marker("SmoothingLengthArray") == "smoothlength" &&
+    marker("SupportPerSmoothingLength") == "2" && marker("SPHKernel") == "CubicSpline";
+  vtkDataSet* gas = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  vtkDataArray* values = gas ? gas->GetPointData()->GetArray("smoothlength") : nullptr;
+  Check(marked && values && values->GetNumberOfTuples() == GasCount &&
+      values->GetTuple1(GasCount - 1) == h[GasCount - 1],
+    "smoothlength (before SphH) marked as the smoothing length, support 2 h, the cubic spline");
+  reader->SetPointArrayStatus("smoothlength", 0);
+  Check(marker("SmoothingLengthArray") == "SphH", "smoothlength unread: SphH marked");
+  reader->SetPointArrayStatus("SphH", 0);
+  Check(marker("SmoothingLengthArray").empty(), "both unread: no smoothing length marked");
+  for (const char* extension : { ".SphH", ".smoothlength", "" })
+  {
+    std::remove((path + extension).c_str());
+  }
+}
+
 // The run's parameter file gives the box (a Tipsy file does not): found by achOutName (numbered
 // outputs) or achInFile, in the snapshot's directory or its parent, else the only .param there;
 // dPeriod sets the axes not given, a period of 0 leaves the box open (with a warning).
@@ -641,9 +687,9 @@ void TestRealFile(const std::string& path, vtkIdType expectedGas, double halfExt
     vtkAbstractArray* array = out->GetFieldData()->GetAbstractArray(name);
     return array ? array->GetVariantValue(0).ToString() : std::string();
   };
-  Check(marker("SmoothingLengthArray") == "hsmooth" && marker("MassArray") == "mass" &&
-      marker("SPHKernel") == "CubicSpline" && marker("SupportPerSmoothingLength") == "2",
-    path + ": the SPH field marked: hsmooth, mass, cubic spline with support 2 hsmooth");
+  Check(marker("SmoothingLengthArray").empty() && marker("MassArray") == "mass" &&
+      marker("DensityArray") == "rho",
+    path + ": rho and mass marked, not hsmooth (the softening: no smoothlength file beside it)");
 }
 // The galaxy snapshot has no gas: the first type there is (dark matter) is read by default,
 // and all types give the header's counts, 3,627 dark and 5,321 star particles.
@@ -689,6 +735,7 @@ int main(int argc, char* argv[])
   TestAuxiliaryArrays(true);
   TestAuxiliaryArrays(false);
   TestAuxiliaryFileChanged();
+  TestSmoothingLengthMarkers();
   TestRunParameters();
   TestBadFiles();
   // The real files of Data/ChaNGa (see Data/README.md): the Evrard glass (28,721 gas particles
