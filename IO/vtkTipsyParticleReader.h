@@ -18,9 +18,12 @@
  * file (ChaNGa's and Gasoline's SNAPSHOT.NAME files: iord, HI, OxMassFrac, acc2, ...; text or
  * binary, one value a particle or three, see TipsyAuxiliaryArrays.h) become point arrays NAME of
  * every type, except where NAME is a column of the main file (iord, the particle orders, is the
- * global ids). The periodic box, which a Tipsy file does not hold, comes from the run's parameter
- * file (TipsyRunParameters.h) as field data BoxSize (and TipsyParameterFile, the file read).
- * Particle types ("Gas", "DarkMatter", "Stars"), pieces and output: see vtkParticleSnapshotReader.
+ * global ids). The gas's SPH field is marked with rho, mass and the smoothing lengths of the
+ * auxiliary array smoothlength (or SPHH, SphH, hsmall; h = fBall / 2, support 2 h), never with
+ * hsmooth, where Gasoline, ChaNGa and PKDGRAV write the gravitational softening. The periodic box,
+ * which a Tipsy file does not hold, comes from the run's parameter file (TipsyRunParameters.h) as
+ * field data BoxSize (and TipsyParameterFile, the file read). Particle types ("Gas", "DarkMatter",
+ * "Stars"), pieces and output: see vtkParticleSnapshotReader.
  */
 #ifndef vtkTipsyParticleReader_h
 #define vtkTipsyParticleReader_h

@@ -784,6 +784,33 @@ void TestEvrard(const std::string& path)
   Check(errors->Count == 1 && none->GetNumberOfPoints() == 0 &&
       errors->Last.find("smoothing length") != std::string::npos,
     "Field = SPH without smoothing lengths: an error that says so, and no output");
+
+  // A snapshot's particles (densities and masses marked, as a Tipsy output without its
+  // .smoothlength or an AREPO snapshot) without smoothing lengths: the fit, with a warning.
+  auto marked = vtkSmartPointer<vtkPolyData>::New();
+  marked->DeepCopy(bare);
+  for (const auto& marker :
+    { std::make_pair("DensityArray", "Density"), std::make_pair("MassArray", "mass") })
+  {
+    vtkNew<vtkStringArray> name;
+    name->SetName(marker.first);
+    name->InsertNextValue(marker.second);
+    marked->GetFieldData()->AddArray(name);
+  }
+  for (vtkPolyData* input : { bare.Get(), marked.Get() })
+  {
+    vtkNew<vtkLevelSetIsosurface> automatic;
+    automatic->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Density");
+    vtkNew<lsi::test::MessageCounter> warnings;
+    automatic->AddObserver(vtkCommand::WarningEvent, warnings);
+    Run(input, iso, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, automatic);
+    const bool said = warnings->All.find("no smoothing lengths") != std::string::npos;
+    Check(!automatic->GetUsedSPHField() && automatic->GetNumberOfIsopoints() > 1000 &&
+        said == (input == marked.Get()),
+      input == marked.Get()
+        ? "marked densities and masses, no smoothing lengths: the fit, with a warning"
+        : "unmarked point data without smoothing lengths: the fit, no such warning");
+  }
 }
 
 // The shock tube's own rho and hsmooth columns are placeholders (rho 0 for 17k of its 20k
