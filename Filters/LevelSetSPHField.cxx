@@ -5,6 +5,7 @@
 #include "IsopointRefinement.h"
 #include "LevelSetParameters.h"
 #include "LevelSetSplines.h"
+#include "SmoothingLengthNames.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -85,8 +86,8 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
     return false;
   }
   std::string hName, mName, rhoName;
-  arrays.SmoothingLength = FindArray(input, request.SmoothingLengthArray, "SmoothingLengthArray",
-    { "SmoothingLength", "SmoothingLengths", "smoothlength" }, hName);
+  arrays.SmoothingLength = FindArray(
+    input, request.SmoothingLengthArray, "SmoothingLengthArray", UsualSmoothingLengthNames, hName);
   arrays.Mass =
     FindArray(input, request.MassArray, "MassArray", { "Masses", "Mass", "mass" }, mName);
   arrays.Density = FindArray(
@@ -141,11 +142,10 @@ bool FindSPHArrays(vtkPointSet* input, vtkDataArray* scalars, const SPHFieldRequ
     vtkDataArray* marked = vtkDataArray::SafeDownCast(
       input->GetFieldData()->GetAbstractArray("SupportPerSmoothingLength"));
     // Without a marker: GADGET's convention (h is the support), or Gasoline's and ChaNGa's (2 h)
-    // for the names they give h (and hsmooth, named by the user: the Tipsy column's name).
-    const bool tipsy = hName == "smoothlength" || hName == "SPHH" || hName == "SphH" ||
-      hName == "hsmall" || hName == "hsmooth";
-    arrays.SupportPerSmoothingLength =
-      marked && marked->GetNumberOfTuples() > 0 ? marked->GetTuple1(0) : (tipsy ? 2.0 : 1.0);
+    // for the names they give h.
+    arrays.SupportPerSmoothingLength = marked && marked->GetNumberOfTuples() > 0
+      ? marked->GetTuple1(0)
+      : SupportPerSmoothingLengthOfName(hName);
   }
   choice = std::string("Field: the SPH interpolant, ") + NamesOf(arrays.Kernel).Label +
     " kernel with support " + std::to_string(arrays.SupportPerSmoothingLength) + " x '" + hName +
@@ -553,47 +553,6 @@ bool GatherAndSolveOntoLevel(const SPHField& field, double isoValue, Eigen::Vect
   }
   field.Gather(p.data(), reach, candidates); // the point stays within the reach
   return SolveOntoLevel(field, candidates, isoValue, p, direction, reach, tolerance, normal);
-}
-
-double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
-  const std::vector<double>& values, double isoValue, const Communicator& ranks)
-{
-  // The samples next to the surface: a neighbour on the other side of the isovalue (all
-  // samples if there is none). Under MPI, the owned samples of every rank.
-  std::vector<double> supports, radii;
-  const std::vector<std::uint32_t> sample = OwnedRadiusSample(geometry, ranks);
-  for (const std::size_t i : sample)
-  {
-    const bool above = values[geometry.Order[i]] > isoValue;
-    const Neighborhoods::SampleRow row = geometry.FixedSampleRow(i);
-    for (int m = 1; m < geometry.Stride; ++m)
-    {
-      if ((values[geometry.Order[row.Ids[m]]] > isoValue) != above)
-      {
-        supports.push_back(field.Support(i));
-        radii.push_back(row.Radius);
-        break;
-      }
-    }
-  }
-  if (ranks.Sum(static_cast<double>(supports.size())) == 0.0)
-  {
-    for (const std::size_t i : sample)
-    {
-      supports.push_back(field.Support(i));
-      radii.push_back(geometry.FixedSampleRow(i).Radius);
-    }
-  }
-  ranks.GatherAll(supports);
-  ranks.GatherAll(radii);
-  if (supports.empty())
-  {
-    return 1.0;
-  }
-  const std::size_t half = supports.size() / 2;
-  std::nth_element(supports.begin(), supports.begin() + half, supports.end());
-  std::nth_element(radii.begin(), radii.begin() + half, radii.end());
-  return radii[half] > 0.0 ? supports[half] / radii[half] : 1.0;
 }
 
 bool SPHOffsetsAtSamples(const Neighborhoods& geometry, const SPHField& field, double isoValue,

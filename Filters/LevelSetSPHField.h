@@ -160,6 +160,12 @@ public:
   /// The support radius H_j of sample j (storage order).
   double Support(std::size_t j) const { return this->H[j]; }
 
+  /// The kernel sums of the masses at sample i: in i's own support (gather,
+  /// sum_j m_j W(r_ij, H_i), the density most codes store) and in each neighbour's (scatter,
+  /// sum_j m_j W(r_ij, H_j), this field's density at x_i). massOf(j): sample j's mass.
+  template <typename MassOf>
+  void KernelSumsAt(std::size_t i, MassOf&& massOf, double& gather, double& scatter) const;
+
 private:
   struct Node
   {
@@ -305,6 +311,23 @@ void SPHField::ForEachWeightAmong(
   }
 }
 
+template <typename MassOf>
+void SPHField::KernelSumsAt(std::size_t i, MassOf&& massOf, double& gather, double& scatter) const
+{
+  gather = scatter = 0.0;
+  const double* xi = this->Geometry.Position(i);
+  const double own = this->H[i];
+  // Every sample within either support: those whose support reaches within H_i of x_i.
+  this->ForEachSupportReaching(xi, xi, own, [&](std::uint32_t j) {
+    const double* xj = this->Geometry.Position(j);
+    const double d[3] = { xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2] };
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double m = (r < own || r < this->H[j]) ? massOf(j) : 0.0;
+    gather += r < own ? m * SPHKernelValue(this->Kernel, r, own) : 0.0;
+    scatter += r < this->H[j] ? m * SPHKernelValue(this->Kernel, r, this->H[j]) : 0.0;
+  });
+}
+
 /// Moves p along the line with `direction` (unit, out of f > f_iso) onto the field's level
 /// `isoValue`, no further than `reach` (IsopointRefinement.h's SolveOnLine, to `tolerance`),
 /// evaluating among `candidates` (gathered around the start for at least that reach). On success
@@ -373,14 +396,6 @@ struct SPHPointGroup
   }
   double Reach(std::size_t i) const { return this->Reaches[i - this->First]; }
 };
-
-/// The median kernel support over the median neighbourhood radius (distance to the n-th
-/// neighbour), among the samples next to the surface (a neighbour on the other side of
-/// `isoValue` in `values`, input order): about 1 or more for real SPH data, far less for
-/// placeholder smoothing lengths or ones that vanish at the surface, where the field cannot
-/// resolve it. Measured on the fixed sample of OwnedRadiusSample.
-double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
-  const std::vector<double>& values, double isoValue, const Communicator& ranks = SingleProcess());
 
 /// The SPH field at every sample (storage order) minus the isovalue, in parallel: the data's
 /// sign at the samples as the field itself gives it. Returns false only when aborted.

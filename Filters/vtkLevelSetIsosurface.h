@@ -298,8 +298,11 @@ public:
    * simulation defines, rho(x) = sum_j m_j W(|x - x_j|, H_j) for the density and
    * A(x) = sum_j (m_j / rho_j) A_j W(|x - x_j|, H_j) for any other array, with each particle's
    * own support H_j (not normalised); the samples' signs come from it too. On other point data
-   * (sensors, no smoothing lengths) the MLS fit of the samples. MLS_FIELD and SPH_FIELD force
-   * one; SPH_FIELD is an error without smoothing lengths and masses.
+   * (sensors, no smoothing lengths) the MLS fit of the samples, as on smoothing lengths that
+   * do not describe the particles (LevelSetSPHFieldChecks.h: supports far below the spacing,
+   * or stored densities more than 1.25 times off the kernel sums of the masses), with a
+   * warning. MLS_FIELD and SPH_FIELD force one (SPH_FIELD still warns); SPH_FIELD is an error
+   * without smoothing lengths and masses.
    */
   vtkSetClampWarnMacro(Field, int, AUTOMATIC_FIELD, SPH_FIELD);
   vtkGetMacro(Field, int);

@@ -19,6 +19,7 @@
 #include "LevelSetParameters.h"
 #include "LevelSetPeriodicImages.h"
 #include "LevelSetSPHField.h"
+#include "LevelSetSPHFieldChecks.h"
 #include "LevelSetSeedSpheres.h"
 #include "LevelSetTiming.h"
 
@@ -27,6 +28,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace
@@ -299,6 +301,32 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
                       "kernel support is "
         << fit << " times the median distance to the " << geometry.Stride - 1
         << "th neighbour. The SPH field is used, as Field asks, but it is spiky.");
+    }
+  }
+  // Stored densities the kernel sums of the masses do not give (by far more than the codes'
+  // conventions differ): the smoothing lengths are not the ones the simulation used with them.
+  const lsi::DensityMismatch mismatch =
+    lsi::StoredDensityMismatch(geometry, *field, arrays, values, this->IsoValue, ranks);
+  constexpr double tolerance = 1.25;
+  if (mismatch.Factor() > tolerance)
+  {
+    if (reports)
+    {
+      vtkWarningMacro("The stored densities '"
+        << arrays.Density->GetName() << "' are not the kernel sums of the masses with these "
+        << "smoothing lengths: at the surface the sums are " << std::exp(mismatch.MedianLogRatio)
+        << " times them (median of " << mismatch.Particles << " particles, " << mismatch.Convention
+        << " form). The smoothing lengths may be a softening or stale, SupportPerSmoothingLength "
+           "or Kernel not the simulation's, or the densities in other units than the masses and "
+           "lengths. "
+        << (this->Field == AUTOMATIC_FIELD
+               ? "Using the MLS fit of the samples; set Field to SPH to use the SPH field anyway."
+               : "The SPH field is used, as Field asks."));
+    }
+    if (this->Field == AUTOMATIC_FIELD)
+    {
+      field.reset();
+      return true;
     }
   }
   if (summed > 0 && reports)

@@ -3,6 +3,7 @@
 #include "vtkTipsyParticleReader.h"
 
 #include "ByteOrder.h"
+#include "SmoothingLengthNames.h"
 #include "TipsyRunParameters.h"
 
 #include "vtkDataArray.h"
@@ -111,12 +112,11 @@ bool IsMainColumn(int kind, const std::string& name)
       [&name](const std::pair<const char*, int>& scalar) { return name == scalar.first; });
 }
 
-// The auxiliary array of the SPH smoothing lengths h among those read, "" without one:
-// Gasoline's and ChaNGa's "smoothlength" (bDohOutput), Gasoline's gas-only "SPHH", older
-// ChaNGa's "SphH" and "hsmall"; each is fBall / 2.
+// The auxiliary array of the SPH smoothing lengths h among those read, "" without one
+// (SmoothingLengthNames.h: each is fBall / 2).
 std::string TipsySmoothingLengthArray(vtkPolyData* particles)
 {
-  for (const char* name : { "smoothlength", "SPHH", "SphH", "hsmall" })
+  for (const char* name : lsi::TipsySmoothingLengthNames)
   {
     vtkDataArray* array = particles->GetPointData()->GetArray(name);
     if (array && array->GetNumberOfComponents() == 1)

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the per-sample numerics (Filters/Numerics), against known answers.
 #include "AutomaticParameters.h"
+#include "DensityConsistency.h"
 #include "IsoValueShift.h"
 #include "IsopointRefinement.h"
 #include "LevelSetSplines.h"
@@ -1314,9 +1315,38 @@ void TestSampleArrays()
     "a vector filled after AdviseHugePages holds its values");
 }
 
+// The stored densities against the kernel sums: log ratios per particle in the three
+// conventions, unusable particles left out, and the convention whose median is nearest 0.
+void TestDensityConsistency()
+{
+  lsi::DensityLogRatios r;
+  Check(lsi::LogRatiosOf(2.0, 4.0, 2.0, r) && r.Gather == 0.0 &&
+      std::abs(r.Scatter - std::log(2.0)) < 1e-15 && std::abs(r.Symmetric - std::log(1.5)) < 1e-15,
+    "density ratios: gather 2 / 2, scatter 4 / 2, symmetric 3 / 2, as logarithms");
+  Check(!lsi::LogRatiosOf(2.0, 4.0, 0.0, r) && !lsi::LogRatiosOf(2.0, 4.0, std::nan(""), r) &&
+      !lsi::LogRatiosOf(0.0, 4.0, 2.0, r) && !lsi::LogRatiosOf(2.0, HUGE_VAL, 2.0, r),
+    "density ratios: a zero, NaN or infinite density or sum is not counted");
+  const std::vector<double> gather = { 0.01, -0.02, 0.5, 0.03 }, scatter(4, 0.3),
+                            symmetric(4, -0.1);
+  const lsi::DensityMismatch m = lsi::MedianDensityMismatch(gather, scatter, symmetric);
+  Check(m.Particles == 4 && std::abs(m.MedianLogRatio - 0.02) < 1e-15 &&
+      std::string(m.Convention) == "gather" && std::abs(m.Factor() - std::exp(0.02)) < 1e-15,
+    "density mismatch: the gather median (0.01 + 0.03) / 2, nearest 0 of 0.02, 0.3, -0.1");
+  const std::vector<double> shuffled = { 0.5, 0.03, -0.02, 0.01 };
+  const lsi::DensityMismatch n = lsi::MedianDensityMismatch(scatter, shuffled, { -0.4, 0.2, -0.3 });
+  Check(n.MedianLogRatio == m.MedianLogRatio && std::string(n.Convention) == "scatter",
+    "density mismatch: the same median in any order, whichever convention it is");
+  const lsi::DensityMismatch both = lsi::MedianDensityMismatch({ -0.7 }, { 0.8 }, { 0.75 });
+  Check(both.MedianLogRatio == -0.7 && std::abs(both.Factor() - std::exp(0.7)) < 1e-15,
+    "density mismatch: sums below the stored densities give a factor above 1 too");
+  Check(lsi::MedianDensityMismatch({}, {}, {}).Factor() == 1.0,
+    "density mismatch: no particles, a factor of 1");
+}
+
 int main()
 {
   TestSampleArrays();
+  TestDensityConsistency();
   TestIsoValueShift();
   TestTangentBasis();
   TestSPHKernels();

@@ -538,11 +538,18 @@ vtkSmartPointer<vtkPolyData> WrittenTwice(vtkPolyData* glass, bool sameIds)
     vtkSmartPointer<vtkDataArray> copies = vtk::TakeSmartPointer(array->NewInstance());
     copies->SetName(array->GetName());
     copies->SetNumberOfComponents(array->GetNumberOfComponents());
+    // Two particles at each place have twice the density, as a code would store it (one
+    // particle written twice keeps its own).
+    const bool doubled = !sameIds && std::string(array->GetName()) == "Density";
     for (int copy = 0; copy < 2; ++copy)
     {
       for (vtkIdType i = 0; i < n; ++i)
       {
         copies->InsertNextTuple(i, array);
+        if (doubled)
+        {
+          copies->SetTuple1(copies->GetNumberOfTuples() - 1, 2.0 * array->GetTuple1(i));
+        }
       }
     }
     twice->GetPointData()->AddArray(copies);
@@ -597,6 +604,63 @@ void TestDuplicates(vtkPolyData* glass, double iso, const double seed[3])
         tag->GetDataType() == VTK_INT && largestTag < glass->GetNumberOfPoints(),
       "duplicates on the SPH field, " + what +
         ": the glass's surface, one warning, the tag the first copies'");
+  }
+}
+
+// Stored densities the kernel sums of the masses do not give: the smoothing lengths (or the
+// densities' units) are not the simulation's. Particle Density's own densities and lengths
+// agree (no warning), as do ones 10% off (within the codes' conventions); a support half the
+// one the densities were summed with, or densities in other units, warn: with Field Automatic
+// the MLS fit is used, with Field SPH the SPH field, as asked.
+void TestStoredDensityCheck(vtkPolyData* glass, double iso, const double seed[3])
+{
+  auto scaled = [&](double factor) {
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(glass);
+    vtkDataArray* rho = copy->GetPointData()->GetArray("Density");
+    for (vtkIdType i = 0; i < rho->GetNumberOfTuples(); ++i)
+    {
+      rho->SetTuple1(i, factor * rho->GetTuple1(i));
+    }
+    return copy;
+  };
+  struct Case
+  {
+    const char* What;
+    double DensityFactor, Support;
+    int Field;
+    bool Warns;
+  };
+  const Case cases[] = {
+    { "Particle Density's densities and lengths", 1.0, 0.0, vtkLevelSetIsosurface::AUTOMATIC_FIELD,
+      false },
+    { "densities 10% above the sums", 1.1, 0.0, vtkLevelSetIsosurface::AUTOMATIC_FIELD, false },
+    { "supports half the densities' (Field Automatic)", 1.0, 0.5,
+      vtkLevelSetIsosurface::AUTOMATIC_FIELD, true },
+    { "densities in other units (Field SPH)", 1000.0, 0.0, vtkLevelSetIsosurface::SPH_FIELD, true },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLevelSetIsosurface> filter;
+    filter->SetField(c.Field);
+    filter->SetSupportPerSmoothingLength(c.Support);
+    vtkNew<lsi::test::MessageCounter> warnings;
+    filter->AddObserver(vtkCommand::WarningEvent, warnings);
+    // (The isovalue in the densities' units, as a user picks it from their range.)
+    const double level = c.DensityFactor > 100.0 ? c.DensityFactor * iso : iso;
+    Run(scaled(c.DensityFactor), level, seed, 0.1, vtkLevelSetIsosurface::ISOPOINTS, filter);
+    const std::size_t at = warnings->All.find("are not the kernel sums");
+    std::cout << "stored densities, " << c.What << ": " << filter->GetNumberOfIsopoints()
+              << " isopoints, SPH field " << filter->GetUsedSPHField() << ", " << warnings->Count
+              << " warnings " << warnings->All.substr(0, 300)
+              << (at == std::string::npos ? std::string() : ": ..." + warnings->All.substr(at, 120))
+              << "\n";
+    const bool sph = c.Field == vtkLevelSetIsosurface::SPH_FIELD || !c.Warns;
+    // (In other units the SPH field never reaches the isovalue: no surface, but not silently.)
+    Check((at != std::string::npos) == c.Warns && filter->GetUsedSPHField() == sph &&
+        (filter->GetNumberOfIsopoints() > 1000) == (c.DensityFactor < 100.0),
+      std::string("stored densities, ") + c.What +
+        (c.Warns ? ": a warning, and the field Field asks for" : ": no warning, the SPH field"));
   }
 }
 
@@ -655,6 +719,7 @@ void TestEvrard(const std::string& path)
   TestQuickIsoValueChange(glass, p, iso);
   TestQuickAtCloudEdge(glass, p);
   TestDuplicates(glass, iso, seed);
+  TestStoredDensityCheck(glass, iso, seed);
 
   // The default output: every splat corner on the level, its normal the field's.
   auto splats = Run(glass, iso, seed, 0.1, vtkLevelSetIsosurface::SPLATS);
