@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetDuplicates.h"
 
+#include "LevelSetArrayKinds.h"
+
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
@@ -119,7 +121,7 @@ vtkSmartPointer<vtkPolyData> MergeDuplicatePoints(vtkPointSet* input, std::vecto
     combined->SetName(array->GetName());
     combined->SetNumberOfComponents(components);
     combined->SetNumberOfTuples(m);
-    if (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE)
+    if (HoldsLabels(array))
     {
       std::vector<vtkIdType> smallest(kept);
       for (vtkIdType i = 0; i < n; ++i)

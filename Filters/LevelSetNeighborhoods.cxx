@@ -757,10 +757,11 @@ std::uint32_t SinglePrecisionBits(double x)
 
 bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const
 {
-  if (every <= 1)
-  {
-    return true;
-  }
+  return every <= 1 || this->PositionHash(i) % every == 0;
+}
+
+std::uint64_t Neighborhoods::PositionHash(std::size_t i) const
+{
   std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
   for (int k = 0; k < 3; ++k)
   {
@@ -770,7 +771,7 @@ bool Neighborhoods::InRadiusSample(std::size_t i, std::uint64_t every) const
     hash *= 0xbf58476d1ce4e5b9ULL;
     hash ^= hash >> 27;
   }
-  return hash % every == 0;
+  return hash;
 }
 
 } // namespace lsi

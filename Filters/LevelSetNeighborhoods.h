@@ -183,6 +183,9 @@ struct Neighborhoods
   /// global scales: chosen by a hash of its coordinates, so the same particles are chosen
   /// whatever their order, storage, precision (float or double) or MPI rank.
   bool InRadiusSample(std::size_t i, std::uint64_t every) const;
+  /// The hash of sample i's coordinates (as single precision) that InRadiusSample takes: the
+  /// same for the same particle on any rank, in any order. Its high bits pick a sub-sample.
+  std::uint64_t PositionHash(std::size_t i) const;
   /// The samples of that sample for which keep(i) holds, in storage order. The sample itself
   /// is chosen once per `every` (a parallel pass over all samples) and kept: a run asks for it
   /// several times (the build, the surface's scale, the SPH support ratio). Main thread only.

@@ -178,6 +178,10 @@ private:
   void Build(std::uint32_t index, std::uint32_t begin, std::uint32_t end);
   template <typename Visit>
   void ForEachSupportHolding(const double* x, Visit&& visit, double extra = 0.0) const;
+  // Visits (at least) every sample closer than `radius` to x, whatever its support: the
+  // samples of the leaves within that radius.
+  template <typename Visit>
+  void ForEachSampleNear(const double* x, double radius, Visit&& visit) const;
   // Visits every sample whose support reaches within `extra` of the box [lower, upper], in the
   // order ForEachSupportHolding meets them: the same walk, entering a node when the box lies
   // within its largest support plus `extra`.
@@ -218,6 +222,38 @@ void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extr
     }
     const double reach = node.MaximumSupport + extra;
     if (!(d2 < reach * reach))
+    {
+      continue;
+    }
+    if (node.Left == 0)
+    {
+      for (std::uint32_t j = node.Begin; j < node.End; ++j)
+      {
+        visit(j);
+      }
+      continue;
+    }
+    stack[top++] = node.Left;
+    stack[top++] = node.Left + 1;
+  }
+}
+
+template <typename Visit>
+void SPHField::ForEachSampleNear(const double* x, double radius, Visit&& visit) const
+{
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double outside = std::max(node.Lower[k] - x[k], x[k] - node.Upper[k]);
+      d2 += outside > 0.0 ? outside * outside : 0.0;
+    }
+    if (!(d2 < radius * radius))
     {
       continue;
     }
@@ -317,14 +353,20 @@ void SPHField::KernelSumsAt(std::size_t i, MassOf&& massOf, double& gather, doub
   gather = scatter = 0.0;
   const double* xi = this->Geometry.Position(i);
   const double own = this->H[i];
-  // Every sample within either support: those whose support reaches within H_i of x_i.
-  this->ForEachSupportReaching(xi, xi, own, [&](std::uint32_t j) {
+  auto distance = [&](std::uint32_t j) {
     const double* xj = this->Geometry.Position(j);
     const double d[3] = { xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2] };
-    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const double m = (r < own || r < this->H[j]) ? massOf(j) : 0.0;
-    gather += r < own ? m * SPHKernelValue(this->Kernel, r, own) : 0.0;
-    scatter += r < this->H[j] ? m * SPHKernelValue(this->Kernel, r, this->H[j]) : 0.0;
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  };
+  // Two walks, each over about one support's ball (one walk for both would search a ball of
+  // H_i + H_j: eight times the volume).
+  this->ForEachSupportHolding(xi, [&](std::uint32_t j) {
+    const double r = distance(j);
+    scatter += r < this->H[j] ? massOf(j) * SPHKernelValue(this->Kernel, r, this->H[j]) : 0.0;
+  });
+  this->ForEachSampleNear(xi, own, [&](std::uint32_t j) {
+    const double r = distance(j);
+    gather += r < own ? massOf(j) * SPHKernelValue(this->Kernel, r, own) : 0.0;
   });
 }
 

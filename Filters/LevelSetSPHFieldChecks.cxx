@@ -14,6 +14,9 @@ namespace lsi
 {
 namespace
 {
+// About how many particles next to the surface the stored densities are compared at.
+constexpr double DensityCheckParticles = 1024;
+
 // The owned samples of the fixed sample next to the surface: a neighbour on the other side of
 // the isovalue (all of them if there is none on any rank).
 std::vector<std::uint32_t> SamplesNextToSurface(const Neighborhoods& geometry,
@@ -68,6 +71,17 @@ DensityMismatch StoredDensityMismatch(const Neighborhoods& geometry, const SPHFi
   if (arrays.Density)
   {
     near = SamplesNextToSurface(geometry, values, isoValue, ranks);
+    // A median is known to within a few percent of the ratios' spread from a thousand
+    // particles: 1 to 2 times DensityCheckParticles of them, chosen by position (the same on
+    // any rank). Each costs two walks of the hierarchy, about 10 microseconds.
+    const double all = ranks.Sum(static_cast<double>(near.size()));
+    const auto every = static_cast<std::uint64_t>(all / DensityCheckParticles);
+    if (every > 1)
+    {
+      near.erase(std::remove_if(near.begin(), near.end(),
+                   [&](std::uint32_t i) { return (geometry.PositionHash(i) >> 32) % every != 0; }),
+        near.end());
+    }
   }
   // Each particle's ratios on its own (a few dozen kernel evaluations each), in parallel; the
   // medians do not depend on the order.

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LevelSetSurfaceOutput.h"
 
+#include "LevelSetArrayKinds.h"
 #include "LevelSetIsopoints.h"
 
 #include "LevelSetMLSFit.h"
@@ -350,7 +351,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     {
       continue; // malformed arrays (a tuple count other than the points') are left out too
     }
-    const bool integer = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+    const bool integer = HoldsLabels(array);
     vtkSmartPointer<vtkDataArray> target;
     if (integer)
     {

@@ -30,6 +30,8 @@ for order, label in ((">", "big"), ("<", "little")):
     star = struct.pack(order + "11f", 1e-4, 0.5, 0.5, 0.5, 0, 0, 0, 0.02, 0.1, 0.05, 0)
     write("FuzzTipsyReader", "mixed-" + label, header + gas + dark + star)
     write("FuzzTipsyReader", "truncated-" + label, (header + gas)[:60])
+    # The header without its pad (28 bytes), as older tools wrote it.
+    write("FuzzTipsyReader", "unpadded-" + label, header[:28] + gas + dark + star)
     # With auxiliary arrays (binary floats, text integers, a binary vector) and the run's
     # parameter file (a periodic box), each after its marker line.
     n = 5

@@ -37,6 +37,9 @@ struct TipsyHeader
   std::int32_t Bodies = 0, Dimensions = 0, Gas = 0, Dark = 0, Stars = 0;
   bool BigEndian = true;
   int PositionBytes = 4, VelocityBytes = 4; // 8: doubles (the file's size tells)
+  // 32: the standard header, padded to 8 bytes; 28: the header as older tools and 32-bit
+  // machines wrote it, without the pad (the file's size tells).
+  int HeaderBytes = 32;
 };
 
 using lsi::FromBytes;
@@ -63,11 +66,12 @@ std::uint64_t RecordBytes(int kind, int positionBytes, int velocityBytes)
   return 4ull * (Layouts[kind].Columns - 6) + 3ull * positionBytes + 3ull * velocityBytes;
 }
 
-std::uint64_t FileBytes(const TipsyHeader& h, int positionBytes, int velocityBytes)
+std::uint64_t FileBytes(
+  const TipsyHeader& h, int positionBytes, int velocityBytes, int headerBytes = 32)
 {
   const std::uint64_t counts[3] = { static_cast<std::uint64_t>(h.Gas),
     static_cast<std::uint64_t>(h.Dark), static_cast<std::uint64_t>(h.Stars) };
-  std::uint64_t bytes = 32;
+  std::uint64_t bytes = static_cast<std::uint64_t>(headerBytes);
   for (int k = 0; k < 3; ++k)
   {
     bytes += counts[k] * RecordBytes(k, positionBytes, velocityBytes);
@@ -75,9 +79,11 @@ std::uint64_t FileBytes(const TipsyHeader& h, int positionBytes, int velocityByt
   return bytes;
 }
 
-// A consistent header, and the record precision the file's size fits: exactly one of the
-// double-precision layouts (positions; positions and velocities), else floats with the file at
-// least as long as they need (files with trailing bytes were always read so).
+// A consistent header, and the header size and record precision the file's size fits exactly:
+// the padded header (32 bytes) or the unpadded one (28), with floats or one of the
+// double-precision layouts (positions; positions and velocities). Else the padded header and
+// floats, with the file at least as long as they need (files with trailing bytes were always
+// read so).
 bool Plausible(TipsyHeader& h, std::uint64_t fileSize)
 {
   if (h.Gas < 0 || h.Dark < 0 || h.Stars < 0 || h.Dimensions < 1 || h.Dimensions > 3 ||
@@ -85,20 +91,24 @@ bool Plausible(TipsyHeader& h, std::uint64_t fileSize)
   {
     return false;
   }
-  h.PositionBytes = h.VelocityBytes = 4;
-  if (fileSize == FileBytes(h, 4, 4))
+  const int layouts[3][2] = { { 4, 4 }, { 8, 4 }, { 8, 8 } };
+  for (int headerBytes : { 32, 28 })
   {
-    return true;
-  }
-  for (int velocityBytes : { 4, 8 })
-  {
-    if (h.Bodies > 0 && fileSize == FileBytes(h, 8, velocityBytes))
+    for (const auto& layout : layouts)
     {
-      h.PositionBytes = 8;
-      h.VelocityBytes = velocityBytes;
-      return true;
+      // (With no particles only the header's size tells, and floats are as good as doubles.)
+      if ((layout[0] == 4 || h.Bodies > 0) &&
+        fileSize == FileBytes(h, layout[0], layout[1], headerBytes))
+      {
+        h.PositionBytes = layout[0];
+        h.VelocityBytes = layout[1];
+        h.HeaderBytes = headerBytes;
+        return true;
+      }
     }
   }
+  h.PositionBytes = h.VelocityBytes = 4;
+  h.HeaderBytes = 32;
   return fileSize >= FileBytes(h, 4, 4);
 }
 
@@ -133,10 +143,10 @@ bool ReadHeader(std::ifstream& file, TipsyHeader& header, std::string& problem)
   file.seekg(0, std::ios::end);
   const std::uint64_t size = static_cast<std::uint64_t>(file.tellg());
   file.seekg(0);
-  char bytes[32];
-  if (size < 32 || !file.read(bytes, 32))
+  char bytes[28];
+  if (size < 28 || !file.read(bytes, 28))
   {
-    problem = "shorter than a Tipsy header (32 bytes)";
+    problem = "shorter than a Tipsy header (28 bytes, 32 with its pad)";
     return false;
   }
   for (bool big : { true, false })
@@ -189,7 +199,7 @@ bool vtkTipsyParticleReader::ReadMetaData(
   this->PositionBytes = header.PositionBytes;
   this->VelocityBytes = header.VelocityBytes;
   const long long counts[3] = { header.Gas, header.Dark, header.Stars };
-  long long offset = 32, first = 0;
+  long long offset = header.HeaderBytes, first = 0;
   this->TypeKinds.clear();
   this->TypeOffsets.clear();
   this->TypeFirsts.clear();

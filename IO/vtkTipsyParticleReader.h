@@ -5,7 +5,8 @@
  * @brief   Reads the gas, dark-matter and star particles of a Tipsy "standard" binary file.
  *
  * Tipsy standard files (used by ChaNGa, Gasoline, PKDGRAV) hold a 32-byte header (double time;
- * int32 nbodies, ndim, nsph, ndark, nstar; 4 bytes padding), then nsph gas particles of 12
+ * int32 nbodies, ndim, nsph, ndark, nstar; 4 bytes padding; files from older tools and 32-bit
+ * machines lack the padding, a 28-byte header the file's size tells), then nsph gas particles of 12
  * float32 each (mass, x, y, z, vx, vy, vz, rho, temp, hsmooth, metals, phi), ndark dark-matter
  * particles of 9 (mass, x, y, z, vx, vy, vz, eps, phi) and nstar star particles of 11 (mass, x,
  * y, z, vx, vy, vz, metals, tform, eps, phi). The standard byte order is big-endian (XDR);

@@ -114,7 +114,7 @@ void PutRecord(TipsyWriter& w, int kind, int i, int columns, int positionBytes, 
 }
 
 void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0,
-  int positionBytes = 4, int velocityBytes = 4)
+  int positionBytes = 4, int velocityBytes = 4, bool padded = true)
 {
   {
     TipsyWriter w(path, bigEndian);
@@ -124,7 +124,10 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0,
     w.Put<std::int32_t>(GasCount);
     w.Put<std::int32_t>(DarkCount);
     w.Put<std::int32_t>(StarCount);
-    w.Put<std::int32_t>(0); // pad
+    if (padded)
+    {
+      w.Put<std::int32_t>(0); // pad
+    }
     const int counts[3] = { GasCount, DarkCount, StarCount }, columns[3] = { 12, 9, 11 };
     for (int k = 0; k < 3; ++k)
     {
@@ -144,11 +147,15 @@ void WriteTipsy(const std::string& path, bool bigEndian, int droppedBytes = 0,
   }
 }
 
-void TestKnownParticles(bool bigEndian)
+// Every column of every type read back exactly, in either byte order, with the standard
+// header (32 bytes) or the unpadded one (28) of older tools.
+void TestKnownParticles(bool bigEndian, bool padded = true)
 {
-  const std::string order = bigEndian ? "big-endian" : "little-endian";
-  const std::string path = "tipsy_test_" + order + ".std";
-  WriteTipsy(path, bigEndian);
+  const std::string order =
+    std::string(bigEndian ? "big-endian" : "little-endian") + (padded ? "" : ", unpadded header");
+  const std::string path =
+    std::string("tipsy_test_") + (bigEndian ? "big" : "little") + (padded ? "" : "_28") + ".std";
+  WriteTipsy(path, bigEndian, 0, 4, 4, padded);
   Check(vtkTipsyParticleReader::CanReadFile(path.c_str()), order + ": CanReadFile");
   vtkNew<vtkTipsyParticleReader> reader;
   reader->SetFileName(path.c_str());
@@ -257,13 +264,13 @@ void TestKnownParticles(bool bigEndian)
 // Double-precision positions (ChaNGa's bDoublePos), and positions and velocities
 // (bDoubleVel too): recognised from the file's size, every value read back exactly, the
 // positions and velocities as doubles, the layout said in field data.
-void TestDoublePrecision(int velocityBytes, bool bigEndian)
+void TestDoublePrecision(int velocityBytes, bool bigEndian, bool padded = true)
 {
   const std::string what = std::string("double positions") +
     (velocityBytes == 8 ? " and velocities" : "") +
-    (bigEndian ? ", big-endian" : ", little-endian");
+    (bigEndian ? ", big-endian" : ", little-endian") + (padded ? "" : ", unpadded header");
   const std::string path = "tipsy_test_double.std";
-  WriteTipsy(path, bigEndian, 0, 8, velocityBytes);
+  WriteTipsy(path, bigEndian, 0, 8, velocityBytes, padded);
   Check(vtkTipsyParticleReader::CanReadFile(path.c_str()), what + ": CanReadFile");
   vtkNew<vtkTipsyParticleReader> reader;
   reader->SetFileName(path.c_str());
@@ -729,9 +736,12 @@ int main(int argc, char* argv[])
 {
   TestKnownParticles(true);
   TestKnownParticles(false);
+  TestKnownParticles(true, false);
+  TestKnownParticles(false, false);
   TestDoublePrecision(4, true);
   TestDoublePrecision(8, true);
   TestDoublePrecision(8, false);
+  TestDoublePrecision(8, true, false);
   TestAuxiliaryArrays(true);
   TestAuxiliaryArrays(false);
   TestAuxiliaryFileChanged();
