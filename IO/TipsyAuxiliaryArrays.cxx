@@ -14,10 +14,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
+#include <charconv>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <system_error>
+#include <vector>
 
 namespace lsi
 {
@@ -138,50 +140,129 @@ vtkSmartPointer<vtkDataArray> NewArray(const std::string& name, long long count,
   return array;
 }
 
-// Sets value `k` (tuple * components + component) of `array` (vtkTypeInt64Array or
-// vtkDoubleArray) from `token`; false if it is not a number.
-bool SetFromText(vtkDataArray* array, bool integers, vtkIdType k, const std::string& token)
+// The whitespace-separated values of a text file, read in large blocks (an istream's >> per
+// value costs more than the parse).
+class TextTokens
 {
-  char* stop = nullptr;
-  errno = 0;
+public:
+  explicit TextTokens(std::istream& file)
+    : File(file)
+    , Buffer(1 << 20)
+  {
+  }
+  /// The next value's characters [begin, end), valid until the next call; false at the end.
+  bool Next(const char*& begin, const char*& end)
+  {
+    for (;;)
+    {
+      while (this->Position < this->Filled && IsSpace(this->Buffer[this->Position]))
+      {
+        ++this->Position;
+      }
+      std::size_t stop = this->Position;
+      while (stop < this->Filled && !IsSpace(this->Buffer[stop]))
+      {
+        ++stop;
+      }
+      // (A value that reaches the block's end may go on in the next block.)
+      if (stop > this->Position && (stop < this->Filled || this->AtEnd))
+      {
+        begin = this->Buffer.data() + this->Position;
+        end = this->Buffer.data() + stop;
+        this->Position = stop;
+        return true;
+      }
+      if (this->AtEnd)
+      {
+        return false;
+      }
+      this->Refill();
+    }
+  }
+
+private:
+  // (std::isspace's characters in the C locale, without its call per character.)
+  static bool IsSpace(char c)
+  {
+    return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+  }
+  // Keeps the unread characters, then reads the next block after them.
+  void Refill()
+  {
+    const std::size_t kept = this->Filled - this->Position;
+    std::copy(this->Buffer.begin() + static_cast<std::ptrdiff_t>(this->Position),
+      this->Buffer.begin() + static_cast<std::ptrdiff_t>(this->Filled), this->Buffer.begin());
+    if (kept == this->Buffer.size())
+    {
+      this->Buffer.resize(2 * this->Buffer.size()); // one value longer than a block
+    }
+    this->File.read(
+      this->Buffer.data() + kept, static_cast<std::streamsize>(this->Buffer.size() - kept));
+    this->Filled = kept + static_cast<std::size_t>(this->File.gcount());
+    this->Position = 0;
+    this->AtEnd = !this->File;
+  }
+  std::istream& File;
+  std::vector<char> Buffer;
+  std::size_t Position = 0, Filled = 0;
+  bool AtEnd = false;
+};
+
+// Sets value `k` (tuple * components + component) of `array` (vtkTypeInt64Array or
+// vtkDoubleArray) from the characters [begin, end); false if they are not one number in range.
+bool SetFromText(
+  vtkDataArray* array, bool integers, vtkIdType k, const char* begin, const char* end)
+{
+  // (from_chars takes no '+', which strtod and the files allow.)
+  const char* first =
+    (end - begin > 1 && *begin == '+' && begin[1] != '-' && begin[1] != '+') ? begin + 1 : begin;
+  std::from_chars_result parsed;
   if (integers)
   {
-    static_cast<vtkTypeInt64Array*>(array)->SetValue(k, std::strtoll(token.c_str(), &stop, 10));
+    long long value = 0;
+    parsed = std::from_chars(first, end, value);
+    static_cast<vtkTypeInt64Array*>(array)->SetValue(k, value);
   }
   else
   {
-    static_cast<vtkDoubleArray*>(array)->SetValue(k, std::strtod(token.c_str(), &stop));
+    double value = 0.0;
+    parsed = std::from_chars(first, end, value);
+    static_cast<vtkDoubleArray*>(array)->SetValue(k, value);
   }
-  return stop != token.c_str() && *stop == '\0' && errno != ERANGE;
+  return parsed.ec == std::errc() && parsed.ptr == end;
 }
 
 vtkSmartPointer<vtkDataArray> ReadText(
   const TipsyAuxiliaryArray& aux, long long begin, long long end, std::string& problem)
 {
-  std::ifstream file(aux.Path);
-  std::string token;
-  std::getline(file, token); // the particle count
+  std::ifstream file(aux.Path, std::ios::binary);
+  std::string count;
+  std::getline(file, count); // the particle count
+  TextTokens tokens(file);
   const int components = aux.Components;
   auto array = aux.Integers ? NewArray<vtkTypeInt64Array>(aux.Name, end - begin, components)
                             : NewArray<vtkDoubleArray>(aux.Name, end - begin, components);
   long long read = 0; // values read after the count
+  const char *first = nullptr, *last = nullptr;
   for (int c = 0; c < components; ++c)
   {
     // A vector's components one after the other: every particle's x, then every y, then z.
-    for (const long long first = c * aux.Particles + begin; read < first && file >> token;)
+    for (const long long skipTo = c * aux.Particles + begin;
+         read < skipTo && tokens.Next(first, last);)
     {
       ++read;
     }
     for (long long i = begin; i < end; ++i, ++read)
     {
-      if (!(file >> token))
+      if (!tokens.Next(first, last))
       {
         problem = "auxiliary array " + aux.Path + " ends before particle " + std::to_string(i);
         return nullptr;
       }
-      if (!SetFromText(array, aux.Integers, (i - begin) * components + c, token))
+      if (!SetFromText(array, aux.Integers, (i - begin) * components + c, first, last))
       {
-        problem = "auxiliary array " + aux.Path + ": \"" + token + "\" is not a number";
+        problem =
+          "auxiliary array " + aux.Path + ": \"" + std::string(first, last) + "\" is not a number";
         return nullptr;
       }
     }

@@ -522,6 +522,66 @@ void TestAuxiliaryFileChanged()
   std::remove(path.c_str());
 }
 
+// A text array read in blocks: values that straddle a block's end (1 MiB) and one longer than
+// a block are read whole. Leading zeros make the values long: value i is 000...0i.25, read
+// back exactly; a vector's three parts likewise.
+void TestLongTextValues()
+{
+  const std::string path = "tipsy_aux_long.std";
+  WriteTipsy(path, true);
+  const int total = GasCount + DarkCount + StarCount;
+  std::vector<std::string> values, vector;
+  for (int i = 0; i < total; ++i)
+  {
+    const std::size_t zeros = i == 2 ? 1500000 : 400000 + 1000 * static_cast<std::size_t>(i);
+    values.push_back(std::string(zeros, '0') + std::to_string(i) + ".25");
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int i = 0; i < total; ++i)
+    {
+      vector.push_back(std::string(300000, '0') + std::to_string(10 * i + c) + ".5");
+    }
+  }
+  WriteTextArray(path + ".long", total, values);
+  WriteTextArray(path + ".longvec", total, vector);
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetParticleTypeStatus("DarkMatter", 1);
+  reader->SetParticleTypeStatus("Stars", 1);
+  reader->Update();
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  double worst = blocks ? 0.0 : HUGE_VAL;
+  int first = 0;
+  for (unsigned int k = 0; blocks && k < blocks->GetNumberOfBlocks(); ++k)
+  {
+    vtkDataSet* block = vtkDataSet::SafeDownCast(blocks->GetBlock(k));
+    vtkDataArray* scalar = block ? block->GetPointData()->GetArray("long") : nullptr;
+    vtkDataArray* triple = block ? block->GetPointData()->GetArray("longvec") : nullptr;
+    if (!scalar || !triple || triple->GetNumberOfComponents() != 3)
+    {
+      worst = HUGE_VAL;
+      break;
+    }
+    for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i)
+    {
+      const int particle = first + static_cast<int>(i);
+      worst = std::max(worst, std::abs(scalar->GetTuple1(i) - (particle + 0.25)));
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, std::abs(triple->GetComponent(i, c) - (10 * particle + c + 0.5)));
+      }
+    }
+    first += static_cast<int>(block->GetNumberOfPoints());
+  }
+  Check(worst == 0.0 && first == total,
+    "text arrays with values across blocks and longer than one: every value read back exactly");
+  std::remove((path + ".long").c_str());
+  std::remove((path + ".longvec").c_str());
+  std::remove(path.c_str());
+}
+
 // The gas's SPH field: rho and mass always, and the smoothing lengths of the auxiliary array
 // Gasoline and ChaNGa write (smoothlength, SPHH, SphH, hsmall: h, the cubic spline's support
 // 2 h), never the hsmooth column (their gravitational softening).
@@ -745,6 +805,7 @@ int main(int argc, char* argv[])
   TestAuxiliaryArrays(true);
   TestAuxiliaryArrays(false);
   TestAuxiliaryFileChanged();
+  TestLongTextValues();
   TestSmoothingLengthMarkers();
   TestRunParameters();
   TestBadFiles();
