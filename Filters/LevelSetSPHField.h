@@ -182,6 +182,10 @@ private:
   // samples of the leaves within that radius.
   template <typename Visit>
   void ForEachSampleNear(const double* x, double radius, Visit&& visit) const;
+  // Visits the samples of every leaf within reachOf(node) of x, entering each node within its
+  // reach (the walk of the two above).
+  template <typename ReachOf, typename Visit>
+  void ForEachSampleOfLeavesNear(const double* x, ReachOf&& reachOf, Visit&& visit) const;
   // Visits every sample whose support reaches within `extra` of the box [lower, upper], in the
   // order ForEachSupportHolding meets them: the same walk, entering a node when the box lies
   // within its largest support plus `extra`.
@@ -203,11 +207,10 @@ private:
   bool IsValid = false;
 };
 
-template <typename Visit>
-void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extra) const
+template <typename ReachOf, typename Visit>
+void SPHField::ForEachSampleOfLeavesNear(const double* x, ReachOf&& reachOf, Visit&& visit) const
 {
-  // The storage order is the kd-tree's leaf order, so contiguous ranges are compact boxes; a
-  // node is entered when x is within the largest support of its samples.
+  // The storage order is the kd-tree's leaf order, so contiguous ranges are compact boxes.
   std::uint32_t stack[64];
   int top = 0;
   stack[top++] = 0;
@@ -220,7 +223,7 @@ void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extr
       const double outside = std::max(node.Lower[k] - x[k], x[k] - node.Upper[k]);
       d2 += outside > 0.0 ? outside * outside : 0.0;
     }
-    const double reach = node.MaximumSupport + extra;
+    const double reach = reachOf(node);
     if (!(d2 < reach * reach))
     {
       continue;
@@ -239,35 +242,18 @@ void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extr
 }
 
 template <typename Visit>
+void SPHField::ForEachSupportHolding(const double* x, Visit&& visit, double extra) const
+{
+  // A node is entered when x is within the largest support of its samples.
+  this->ForEachSampleOfLeavesNear(
+    x, [extra](const Node& node) { return node.MaximumSupport + extra; }, visit);
+}
+
+template <typename Visit>
 void SPHField::ForEachSampleNear(const double* x, double radius, Visit&& visit) const
 {
-  std::uint32_t stack[64];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
-  {
-    const Node& node = this->Nodes[stack[--top]];
-    double d2 = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double outside = std::max(node.Lower[k] - x[k], x[k] - node.Upper[k]);
-      d2 += outside > 0.0 ? outside * outside : 0.0;
-    }
-    if (!(d2 < radius * radius))
-    {
-      continue;
-    }
-    if (node.Left == 0)
-    {
-      for (std::uint32_t j = node.Begin; j < node.End; ++j)
-      {
-        visit(j);
-      }
-      continue;
-    }
-    stack[top++] = node.Left;
-    stack[top++] = node.Left + 1;
-  }
+  this->ForEachSampleOfLeavesNear(
+    x, [radius](const Node&) { return radius; }, visit);
 }
 
 template <typename Visit>

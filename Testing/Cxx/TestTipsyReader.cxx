@@ -28,6 +28,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkVariant.h"
 
 #include <algorithm>
@@ -261,6 +262,19 @@ void TestKnownParticles(bool bigEndian, bool padded = true)
   std::remove(path.c_str());
 }
 
+// Every particle type of the Tipsy file at `path`: a multiblock, one block per type (null if
+// the read failed).
+vtkSmartPointer<vtkMultiBlockDataSet> ReadEveryType(const std::string& path)
+{
+  vtkNew<vtkTipsyParticleReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetParticleTypeStatus("DarkMatter", 1);
+  reader->SetParticleTypeStatus("Stars", 1);
+  reader->Update();
+  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+}
+
 // Double-precision positions (ChaNGa's bDoublePos), and positions and velocities
 // (bDoubleVel too): recognised from the file's size, every value read back exactly, the
 // positions and velocities as doubles, the layout said in field data.
@@ -272,13 +286,7 @@ void TestDoublePrecision(int velocityBytes, bool bigEndian, bool padded = true)
   const std::string path = "tipsy_test_double.std";
   WriteTipsy(path, bigEndian, 0, 8, velocityBytes, padded);
   Check(vtkTipsyParticleReader::CanReadFile(path.c_str()), what + ": CanReadFile");
-  vtkNew<vtkTipsyParticleReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->UpdateInformation();
-  reader->SetParticleTypeStatus("DarkMatter", 1);
-  reader->SetParticleTypeStatus("Stars", 1);
-  reader->Update();
-  vtkMultiBlockDataSet* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  const vtkSmartPointer<vtkMultiBlockDataSet> blocks = ReadEveryType(path);
   const std::vector<std::pair<const char*, int>> columnsOf[] = {
     { { "mass", 0 }, { "rho", 7 }, { "temp", 8 }, { "hsmooth", 9 }, { "metals", 10 },
       { "phi", 11 } },
@@ -545,13 +553,7 @@ void TestLongTextValues()
   }
   WriteTextArray(path + ".long", total, values);
   WriteTextArray(path + ".longvec", total, vector);
-  vtkNew<vtkTipsyParticleReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->UpdateInformation();
-  reader->SetParticleTypeStatus("DarkMatter", 1);
-  reader->SetParticleTypeStatus("Stars", 1);
-  reader->Update();
-  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  const vtkSmartPointer<vtkMultiBlockDataSet> blocks = ReadEveryType(path);
   double worst = blocks ? 0.0 : HUGE_VAL;
   int first = 0;
   for (unsigned int k = 0; blocks && k < blocks->GetNumberOfBlocks(); ++k)
