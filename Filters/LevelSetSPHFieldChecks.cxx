@@ -17,8 +17,8 @@ namespace
 // About how many particles next to the surface the stored densities are compared at.
 constexpr double DensityCheckParticles = 1024;
 
-// The owned samples of the fixed sample next to the surface: a neighbour on the other side of
-// the isovalue (all of them if there is none on any rank).
+} // namespace
+
 std::vector<std::uint32_t> SamplesNextToSurface(const Neighborhoods& geometry,
   const std::vector<double>& values, double isoValue, const Communicator& ranks)
 {
@@ -40,13 +40,11 @@ std::vector<std::uint32_t> SamplesNextToSurface(const Neighborhoods& geometry,
   return ranks.Sum(static_cast<double>(near.size())) == 0.0 ? sample : near;
 }
 
-} // namespace
-
 double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const SPHField& field,
-  const std::vector<double>& values, double isoValue, const Communicator& ranks)
+  const std::vector<std::uint32_t>& nextToSurface, const Communicator& ranks)
 {
   std::vector<double> supports, radii;
-  for (const std::uint32_t i : SamplesNextToSurface(geometry, values, isoValue, ranks))
+  for (const std::uint32_t i : nextToSurface)
   {
     supports.push_back(field.Support(i));
     radii.push_back(geometry.FixedSampleRow(i).Radius);
@@ -64,13 +62,13 @@ double MedianSupportPerNeighborhoodRadius(const Neighborhoods& geometry, const S
 }
 
 DensityMismatch StoredDensityMismatch(const Neighborhoods& geometry, const SPHField& field,
-  const SPHFieldArrays& arrays, const std::vector<double>& values, double isoValue,
+  const SPHFieldArrays& arrays, const std::vector<std::uint32_t>& nextToSurface,
   const Communicator& ranks)
 {
   std::vector<std::uint32_t> near;
   if (arrays.Density)
   {
-    near = SamplesNextToSurface(geometry, values, isoValue, ranks);
+    near = nextToSurface;
     // A median is known to within a few percent of the ratios' spread from a thousand
     // particles: 1 to 2 times DensityCheckParticles of them, chosen by position (the same on
     // any rank). Each costs two walks of the hierarchy, about 10 microseconds.

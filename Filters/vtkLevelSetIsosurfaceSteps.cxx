@@ -275,8 +275,11 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   // Placeholder smoothing lengths (some files carry a constant or stale column) do not describe
   // these particles: a support far below the neighbourhood radius leaves most of space empty.
   const lsi::Distribution& ranks = *this->Internal->Ranks;
+  // (Both checks measure at the same samples: found once.)
+  const std::vector<std::uint32_t> nextToSurface =
+    lsi::SamplesNextToSurface(geometry, values, this->IsoValue, ranks);
   const double fit =
-    lsi::MedianSupportPerNeighborhoodRadius(geometry, *field, values, this->IsoValue, ranks);
+    lsi::MedianSupportPerNeighborhoodRadius(geometry, *field, nextToSurface, ranks);
   const bool reports = this->ReportsForAll();
   const double summed = ranks.Sum(static_cast<double>(field->SummedDensities));
   if (fit < 0.5)
@@ -306,7 +309,7 @@ bool vtkLevelSetIsosurface::BuildSPHField(vtkPointSet* input, const lsi::Neighbo
   // Stored densities the kernel sums of the masses do not give (by far more than the codes'
   // conventions differ): the smoothing lengths are not the ones the simulation used with them.
   const lsi::DensityMismatch mismatch =
-    lsi::StoredDensityMismatch(geometry, *field, arrays, values, this->IsoValue, ranks);
+    lsi::StoredDensityMismatch(geometry, *field, arrays, nextToSurface, ranks);
   constexpr double tolerance = 1.25;
   if (mismatch.Factor() > tolerance)
   {
