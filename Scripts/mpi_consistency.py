@@ -3,7 +3,7 @@
 """The same outputs on any number of MPI ranks, on the real snapshots in ../shared/data.
 
   [mpiexec -n N] pvbatch Scripts/mpi_consistency.py run PLUGIN DATA_DIR OUT.npz [distribute]
-                  [only=NAME,...]
+                  [only=NAME,...] [made=DIR]
       runs the filter on each snapshot (or the named ones: only=galaxy-stars,galaxy-stars-box,
       say, whose file Data/ChaNGa holds too) (as read: each rank reads its share; with `distribute`,
       after ParaView's Distribute Points, whose float coordinates differ from the file's) and
@@ -16,6 +16,8 @@
       particles' mean spacing), the Enclosed table's volumes and masses (relative) and centres
       of mass (in the mean spacing), and the densities (relative); with TOLERANCE, fails (exit
       1) where one of them is larger (TestMPIConsistency).
+  With made=DIR, also the snapshots Scripts/make_halo_tracer_snapshot.py wrote there (SWIFT's
+  layout, strongly adaptive, a passive tracer's isosurface; in Mpc and in kpc).
 Scripts/run-mpi-consistency.sh runs it on 1 to 4 ranks and compares each with one process."""
 import os
 import sys
@@ -23,7 +25,7 @@ import sys
 import numpy as np
 
 
-def run(plugin, data, out, distribute, only):
+def run(plugin, data, out, distribute, only, made=None):
     from paraview import servermanager
     from paraview.simple import Calculator, Delete, DistributePoints, LoadPlugin
     from snapshot_sources import open_snapshot
@@ -65,6 +67,14 @@ def run(plugin, data, out, distribute, only):
             Input=read("swift_robertsflow_g32.hdf5", ["Gas (PartType0)"]),
             ResultArrayName="VelocityZ", Function="Velocities_Z"), 0.7, "VelocityZ"),
     ]
+    if made:
+        # Made here: a Plummer halo in a uniform background, Wendland C2 (SWIFT's gamma h);
+        # the tracer's isosurface crosses densities 800 times apart.
+        for name, file in (("halo-tracer", "halo_tracer.hdf5"),
+                           ("halo-tracer-kpc", "halo_tracer_kpc.hdf5")):
+            cases.append((name, lambda file=file: read(os.path.join(made, file),
+                                                       ["Gas (PartType0)"]),
+                          float(np.exp(-0.5)), "PassiveTracer"))
     saved = {}
     for name, make, rule, scalar, *options in [c for c in cases if not only or c[0] in only]:
         source = make()
@@ -166,6 +176,7 @@ def compare(first, second, tolerance=None):
 if __name__ == "__main__":
     if sys.argv[1] == "run":
         only = [n for a in sys.argv[5:] if a.startswith("only=") for n in a[5:].split(",")]
-        run(sys.argv[2], sys.argv[3], sys.argv[4], "distribute" in sys.argv[5:], only)
+        made = next((a[5:] for a in sys.argv[5:] if a.startswith("made=")), None)
+        run(sys.argv[2], sys.argv[3], sys.argv[4], "distribute" in sys.argv[5:], only, made)
     else:
         compare(sys.argv[2], sys.argv[3], float(sys.argv[4]) if len(sys.argv) > 4 else None)

@@ -44,7 +44,7 @@ from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellLocator, vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D, vtkPolyDataConnectivityFilter
 from vtkmodules.vtkFiltersPoints import (vtkSPHCubicKernel, vtkSPHInterpolator,
-                                         vtkSPHQuinticKernel)
+                                         vtkSPHQuinticKernel, vtkWendlandQuinticKernel)
 
 PI = np.pi
 
@@ -202,7 +202,8 @@ def used_points(poly):
 
 
 class Scorer:
-    def __init__(self, truth, iso, h_file, x, seed, bounds_pad, box=None, near=None):
+    def __init__(self, truth, iso, h_file, x, seed, bounds_pad, box=None, near=None,
+                 outside=None):
         self.truth, self.iso, self.x, self.box = truth, iso, x, box
         self.h_tree = cKDTree(x)
         self.h_file = h_file
@@ -229,7 +230,10 @@ class Scorer:
         t = time.time()
         field = truth.on_grid(lo, step, dims)
         self.truth_seconds = time.time() - t
-        whole, region = contour(image_of(field, lo, step), iso, seed)
+        # The seeded component: the surface nearest the seed, or nearest `outside` (a point
+        # just outside it) where the field has pockets below the isovalue next to the seed.
+        whole, region = contour(image_of(field, lo, step), iso,
+                                seed if outside is None else outside)
         for poly in (whole, region):
             p = points_of(poly)
             for _ in range(2):
@@ -423,6 +427,20 @@ def main():
         out.UpdatePipelineInformation()
         return out
 
+    made = {}
+
+    def halo_tracer(name):
+        # A strongly adaptive snapshot in SWIFT's layout, made by the repository's own script
+        # (a Plummer halo in a uniform background, relaxed towards a glass, Wendland C2, a
+        # passive tracer whose isosurface crosses densities 600 times apart), in Mpc and in kpc.
+        if "dir" not in made:
+            made["dir"] = tempfile.mkdtemp(prefix="halo_tracer_")
+            script = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                  "make_halo_tracer_snapshot.py")
+            subprocess.run(["/usr/bin/python3", script, made["dir"]], check=True,
+                           stdout=subprocess.DEVNULL)
+        return hdf5(os.path.join(made["dir"], name), ["Gas (PartType0)"])
+
     # name: (source maker, isovalue rule, description)
     cases = {
         "gadget4-gassphere": (
@@ -459,6 +477,12 @@ def main():
             lambda: tipsy_with_density(os.path.join(data, "changa_cube300.tbin"), ["DarkMatter"]),
             "ChaNGa cosmological box, 110,592 dark-matter particles at t = 0.05, density by SPH "
             "summation: nearly uniform; the densest tenth, clumps near one another"),
+        "swift-halo-tracer": (
+            lambda: halo_tracer("halo_tracer.hdf5"),
+            "made here (Scripts/make_halo_tracer_snapshot.py): 80,000 particles, a Plummer halo "
+            "in a uniform background relaxed towards a glass, SWIFT's Wendland C2 (H = "
+            "1.936492 h), the isosurface exp(-1/2) of a passive tracer's SPH interpolant: along "
+            "it the density spans 600x, h 8x; also the same file in kpc and Msun"),
     }
 
     def hdf5_or_tipsy(path):
@@ -501,6 +525,9 @@ def main():
         scalar = rho_name
         if name == "swift-robertsflow-vz":
             scalar = "VelocityZ"
+        if name == "swift-halo-tracer":
+            scalar = "PassiveTracer"
+        if scalar != rho_name:
             a = vtk_to_numpy(pd.GetArray(scalar)).astype(float)
             truth = SPHTruth(x, m / rho * a, factor * h, kernel, box)
         else:
@@ -516,7 +543,16 @@ def main():
         if name == "swift-robertsflow-vz":
             iso = 0.7  # vz spans +-1.43: tubes around the flow's cells
         seed = x[np.argmax(summed)]
-        near = None
+        near, outside = None, None
+        if name == "swift-halo-tracer":
+            # The tracer's blob: near the sphere |x - (0.2, 0, 0)| = 0.25. The truth's grid
+            # covers its particles, not the whole cube.
+            # The interpolant may have pockets below the isovalue inside the blob (its
+            # normalisation sum_j m_j / rho_j W varies by +-3.5% here): the truth is the outer
+            # surface, found from a point 0.05 outside it.
+            iso = float(np.exp(-0.5))
+            near = seeded_particles(x, summed, iso, seed)
+            outside = np.array([0.5, 0.0, 0.0])
         if name == "changa-cube300":
             # The densest tenth (an overdensity): separate clumps, some a fraction of a support
             # apart. The truth's grid covers the seeded clump's particles.
@@ -532,7 +568,7 @@ def main():
         print("  isovalue %.6g, seed (%.4g, %.4g, %.4g), kernel %s, H = %g h" % (
             iso, seed[0], seed[1], seed[2], kernel, factor), flush=True)
         t = time.time()
-        scorer = Scorer(truth, iso, h, x, seed, 0.0, box, near)
+        scorer = Scorer(truth, iso, h, x, seed, 0.0, box, near, outside)
         print("  truth: grid step %.3g (median support at the isovalue %.3g), %d vertices in "
               "the seeded component, %.1f s" % (scorer.grid_step, scorer.H_iso,
                                                 len(scorer.region_points), time.time() - t),
@@ -544,25 +580,45 @@ def main():
             # The marking the Tipsy reader made before: hsmooth (the softening) as h, support 2 h.
             runs.append((1, "filter, hsmooth as h (splats)",
                          dict(SmoothingLengthArray="hsmooth", SupportPerSmoothingLength=2.0)))
-        for output_type, label, extra in runs:
+        other_units = None
+        if name == "swift-halo-tracer":
+            # The same particles in kpc and Msun: the output, scaled back, must be the same.
+            other_units = (halo_tracer("halo_tracer_kpc.hdf5"), 1e3)
+            runs.append((1, "filter, in kpc (splats)", {}, other_units))
+        outputs = {}
+        for output_type, label, extra, *units in runs:
+            run_source, length = units[0] if units else (source, 1.0)
             t = time.time()
-            f = LevelSetIsosurface(Input=source, Scalars=["POINTS", scalar], IsoValue=iso,
-                                   SeedCenter=list(seed), SeedRadius=seed_radius,
+            f = LevelSetIsosurface(Input=run_source, Scalars=["POINTS", scalar], IsoValue=iso,
+                                   SeedCenter=list(length * seed), SeedRadius=length * seed_radius,
                                    OutputType=output_type, **extra)
             out = fetch(f)
             seconds = time.time() - t
             f.UpdatePropertyInformation()
             used_sph = f.GetProperty("UsedSPHField").GetData()
+            if out.GetNumberOfPoints() > 0 and length != 1.0:
+                scaled = vtk_to_numpy(out.GetPoints().GetData())
+                scaled /= length
+                out.GetPoints().Modified()
             o = dsa.WrapDataObject(out)
             if out.GetNumberOfPoints() == 0:
                 rows[label] = dict(points=0)
             else:
                 p = np.asarray(o.Points, dtype=float)
                 n = np.asarray(o.PointData["Normals"], dtype=float)
+                outputs[label] = p
                 rows[label] = scorer.score(p, n, True, out if output_type == 1 else None)
             rows[label]["seconds"] = seconds
             rows[label]["sph_field"] = bool(used_sph)
             Delete(f)
+        if other_units is not None:
+            a, b = outputs.get("filter, default (splats)"), outputs.get("filter, in kpc (splats)")
+            if a is not None and b is not None:
+                gap = cKDTree(a).query(b)[0] / scorer.local_h(b)
+                print("  in kpc against in Mpc: %d and %d points, the farthest %.2e h from the "
+                      "nearest" % (len(a), len(b), gap.max()))
+                rows["filter, in kpc (splats)"]["largest_gap_to_mpc_output_h"] = float(gap.max())
+            Delete(other_units[0])
         # ParaView's grid route.
         t = time.time()
         rows["ParaView SPH grid route"] = grid_route(particles, kernel, scorer, iso, seed,
@@ -593,6 +649,8 @@ def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name, scalar
     # VTK's kernels: support = CutoffFactor x SpatialStep (cubic 2, quintic 3), one global step.
     if kernel == "QuinticSpline":
         k, cutoff = vtkSPHQuinticKernel(), 3.0
+    elif kernel == "WendlandC2":  # VTK's "Wendland quintic" is the 3-D Wendland C2
+        k, cutoff = vtkWendlandQuinticKernel(), 2.0
     else:
         k, cutoff = vtkSPHCubicKernel(), 2.0
     step = scorer.H_iso / cutoff
