@@ -6,12 +6,11 @@
 #include "LevelSetHaloReach.h"
 #include "LevelSetNeighborhoods.h"
 #include "LevelSetParallel.h"
+#include "SpatialPartition.h"
 
 #include "vtkCommunicator.h"
-#include "vtkDistributedPointCloudFilter.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
-#include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -34,7 +33,8 @@ enum Tag
   GhostTag = 71001,
   RefreshTag = 71002,
   ToOwnersTag = 71003,
-  GatherTag = 71004
+  GatherTag = 71004,
+  SpreadTag = 71005
 };
 
 // The points and point arrays of `ids` of `input` (all of them when ids is null), as a vertex-
@@ -75,7 +75,14 @@ vtkSmartPointer<vtkPolyData> PointsOf(vtkPointSet* input, const std::vector<vtkI
     subset->SetNumberOfComponents(array->GetNumberOfComponents());
     subset->SetNumberOfTuples(n);
     array->GetTuples(list, subset);
-    piece->GetPointData()->AddArray(subset);
+    if (array == from->GetGlobalIds())
+    {
+      piece->GetPointData()->SetGlobalIds(vtkDataArray::SafeDownCast(subset));
+    }
+    else
+    {
+      piece->GetPointData()->AddArray(subset);
+    }
   }
   piece->GetFieldData()->ShallowCopy(input->GetFieldData());
   return piece;
@@ -126,7 +133,14 @@ vtkSmartPointer<vtkPolyData> Concatenated(const std::vector<vtkSmartPointer<vtkP
       }
       at += n;
     }
-    out->GetPointData()->AddArray(joined);
+    if (model == first->GetGlobalIds())
+    {
+      out->GetPointData()->SetGlobalIds(vtkDataArray::SafeDownCast(joined));
+    }
+    else
+    {
+      out->GetPointData()->AddArray(joined);
+    }
   }
   out->GetFieldData()->ShallowCopy(pieces.front()->GetFieldData());
   return out;
@@ -337,16 +351,11 @@ vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::str
 
   // The piece is the input itself (a shallow copy, so that its field data can be replaced), or
   // the redistributed particles.
-  vtkPointSet* source = input;
-  vtkNew<vtkDistributedPointCloudFilter> distribute;
-  vtkMPIController* mpi = vtkMPIController::SafeDownCast(this->Controller);
-  const bool redistribute = (imbalance > 1.5 || overlap > 1.5) && mpi;
+  vtkSmartPointer<vtkPointSet> source = input;
+  const bool redistribute = imbalance > 1.5 || overlap > 1.5;
   if (redistribute)
   {
-    distribute->SetController(mpi);
-    distribute->SetInputData(input);
-    distribute->Update();
-    source = vtkPointSet::SafeDownCast(distribute->GetOutputDataObject(0));
+    source = this->SpreadBySpace(input);
     std::ostringstream why;
     why << "redistributed by space: the largest piece held " << imbalance
         << " times the mean, the pieces' boxes " << overlap << " times the whole volume";
@@ -358,6 +367,74 @@ vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::str
   fieldData->ShallowCopy(markers->GetFieldData());
   piece->SetFieldData(fieldData);
   return piece;
+}
+
+vtkSmartPointer<vtkPointSet> Distribution::SpreadBySpace(vtkPointSet* input)
+{
+  // A sample of each rank's particles (evenly by index, each weighted by the particles it
+  // stands for), the same on every rank, cut into one part per rank.
+  constexpr vtkIdType SamplesPerRank = 4096;
+  const vtkIdType n = input->GetNumberOfPoints();
+  const vtkIdType taken = std::min(n, SamplesPerRank);
+  std::vector<double> sample;
+  sample.reserve(static_cast<std::size_t>(4 * taken));
+  for (vtkIdType k = 0; k < taken; ++k)
+  {
+    const double* x = input->GetPoint(k * n / taken);
+    sample.insert(sample.end(), { x[0], x[1], x[2], static_cast<double>(n) / taken });
+  }
+  this->GatherAll(sample);
+  std::vector<double> xyz, weights;
+  for (std::size_t k = 0; k + 3 < sample.size(); k += 4)
+  {
+    xyz.insert(xyz.end(), { sample[k], sample[k + 1], sample[k + 2] });
+    weights.push_back(sample[k + 3]);
+  }
+  const SpatialPartition partition(xyz, weights, this->Size);
+
+  // Each particle to its part's rank, with every point array and the coordinates as they are
+  // (ParaView's vtkDistributedPointCloudFilter stores them as floats and drops the global ids).
+  const std::size_t size = static_cast<std::size_t>(this->Size);
+  std::vector<std::vector<vtkIdType>> to(size);
+  for (vtkIdType j = 0; j < n; ++j)
+  {
+    to[static_cast<std::size_t>(partition.PartOf(input->GetPoint(j)))].push_back(j);
+  }
+  std::vector<double> counts(size), allCounts(size * size);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    counts[r] = static_cast<double>(to[r].size());
+  }
+  this->Controller->AllGather(counts.data(), allCounts.data(), this->Size);
+  std::vector<char> partners(size, 0);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    partners[r] = (counts[r] > 0 || allCounts[r * size + this->Rank] > 0) ? 1 : 0;
+  }
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces(size);
+  pieces[static_cast<std::size_t>(this->Rank)] =
+    PointsOf(input, &to[static_cast<std::size_t>(this->Rank)]);
+  this->WithEachPartner(partners, [&](int other, bool sendFirst) {
+    auto send = [&]() {
+      vtkSmartPointer<vtkPolyData> piece = PointsOf(input, &to[other]);
+      this->Controller->Send(piece, other, SpreadTag);
+    };
+    auto receive = [&]() {
+      pieces[other] = vtkSmartPointer<vtkPolyData>::New();
+      this->Controller->Receive(pieces[other], other, SpreadTag);
+    };
+    sendFirst ? (send(), receive()) : (receive(), send());
+  });
+  // In rank order, from the first piece with points (Concatenated takes its arrays).
+  std::vector<vtkSmartPointer<vtkPolyData>> joined;
+  for (const auto& piece : pieces)
+  {
+    if (piece && piece->GetNumberOfPoints() > 0)
+    {
+      joined.push_back(piece);
+    }
+  }
+  return joined.empty() ? PointsOf(nullptr, nullptr) : Concatenated(joined);
 }
 
 vtkSmartPointer<vtkPointSet> Distribution::GatheredOnFirst(vtkPointSet* input)

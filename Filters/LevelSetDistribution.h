@@ -5,8 +5,9 @@
 // samples before the method runs on them:
 // 1. Balanced: when the partition the pipeline gave is poor (a rank holds far more than its
 //    share, or the ranks' bounding boxes overlap, as in a file read in interleaved pieces or
-//    held by rank 0 alone), the particles are redistributed by space with
-//    vtkDistributedPointCloudFilter.
+//    held by rank 0 alone), the particles are redistributed by space (SpreadBySpace: an
+//    orthogonal recursive bisection of a sample, SpatialPartition.h), keeping their
+//    coordinates' precision, every point array and the global ids.
 // 2. WithGhosts: every rank receives copies of the other ranks' samples within a halo of its
 //    own. Each owned sample asks for a reach (a multiple of its neighbourhood radius, set by the
 //    filter); a sample is sent where its own kernel support or position falls in another
@@ -56,6 +57,10 @@ public:
   /// The input, or its particles redistributed by space when the partition is poor (`report`
   /// says why). Field data (the readers' markers) come from the lowest rank with particles.
   vtkSmartPointer<vtkPointSet> Balanced(vtkPointSet* input, std::string& report);
+
+  /// Every rank's particles spread by space (SpatialPartition of a sample of them), one part
+  /// per rank, with their point arrays, global ids and coordinates unchanged.
+  vtkSmartPointer<vtkPointSet> SpreadBySpace(vtkPointSet* input);
 
   /// Every rank's particles on rank 0 (others: empty), for inputs too small to spread.
   vtkSmartPointer<vtkPointSet> GatheredOnFirst(vtkPointSet* input);

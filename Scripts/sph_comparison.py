@@ -217,6 +217,7 @@ class Scorer:
         at_iso = np.abs(rho_at_particles - iso) < 0.5 * abs(iso)
         H_own = truth.H[:len(x)]
         self.H_iso = np.median(H_own[at_iso]) if at_iso.any() else np.median(H_own)
+        self.H_iso_95 = np.quantile(H_own[at_iso], 0.95) if at_iso.any() else self.H_iso
         lo = x[near].min(axis=0) - truth.H[:len(x)][near].max() - bounds_pad
         hi = x[near].max(axis=0) + truth.H[:len(x)][near].max() + bounds_pad
         if box is not None:  # one periodic cell: the box
@@ -624,6 +625,15 @@ def main():
         rows["ParaView SPH grid route"] = grid_route(particles, kernel, scorer, iso, seed,
                                                      rho_name, marker("MassArray"), scalar)
         rows["ParaView SPH grid route"]["seconds"] = time.time() - t
+        if name == "swift-halo-tracer":
+            # One global kernel size: the median support at the isovalue leaves the sparse side
+            # with kernels shorter than the spacing (holes); the 95th percentile's fills it and
+            # smooths the dense side over 8 of its own supports.
+            t = time.time()
+            label = "grid route, 95% support"
+            rows[label] = grid_route(particles, kernel, scorer, iso, seed, rho_name,
+                                     marker("MassArray"), scalar, scorer.H_iso_95)
+            rows[label]["seconds"] = time.time() - t
         # yt.
         t = time.time()
         try:
@@ -645,7 +655,7 @@ def main():
             json.dump(results, out, indent=1)
 
 
-def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name, scalar):
+def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name, scalar, support=None):
     # VTK's kernels: support = CutoffFactor x SpatialStep (cubic 2, quintic 3), one global step.
     if kernel == "QuinticSpline":
         k, cutoff = vtkSPHQuinticKernel(), 3.0
@@ -653,7 +663,7 @@ def grid_route(particles, kernel, scorer, iso, seed, rho_name, mass_name, scalar
         k, cutoff = vtkWendlandQuinticKernel(), 2.0
     else:
         k, cutoff = vtkSPHCubicKernel(), 2.0
-    step = scorer.H_iso / cutoff
+    step = (scorer.H_iso if support is None else support) / cutoff
     k.SetSpatialStep(step)
     lo, hi = scorer.lo, scorer.hi  # the region the truth covers
     grid_step = step / 2.0

@@ -11,6 +11,7 @@
 #include "NearestNeighbors.h"
 #include "SPHKernels.h"
 #include "SpatialOrder.h"
+#include "SpatialPartition.h"
 #include "Splats.h"
 #include "TangentBasis.h"
 #include "TangentPlaneCompletion.h"
@@ -1343,6 +1344,97 @@ void TestDensityConsistency()
     "density mismatch: no particles, a factor of 1");
 }
 
+// The partition of space over ranks: parts of about equal weight, every sample of a part on its
+// side of each cut (the parts' boxes do not overlap), weights counted (a sample standing for
+// many particles), repeated coordinates, fewer samples than parts, one part.
+void TestSpatialPartition()
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<double> xyz, weights;
+  for (int k = 0; k < 6000; ++k)
+  {
+    // A dense clump and a sparse background: equal counts need unequal volumes.
+    const bool clump = k % 3 != 0;
+    for (int d = 0; d < 3; ++d)
+    {
+      xyz.push_back(clump ? 0.3 + 0.05 * uniform(random) : uniform(random) * (d == 0 ? 4 : 1));
+    }
+    weights.push_back(1.0);
+  }
+  for (int parts : { 1, 2, 3, 5, 8 })
+  {
+    const lsi::SpatialPartition partition(xyz, weights, parts);
+    std::vector<double> count(parts, 0.0);
+    std::vector<double> box(6 * parts);
+    for (int p = 0; p < parts; ++p)
+    {
+      box[6 * p] = box[6 * p + 2] = box[6 * p + 4] = HUGE_VAL;
+      box[6 * p + 1] = box[6 * p + 3] = box[6 * p + 5] = -HUGE_VAL;
+    }
+    bool inRange = true;
+    for (std::size_t k = 0; k < weights.size(); ++k)
+    {
+      const int p = partition.PartOf(&xyz[3 * k]);
+      inRange = inRange && p >= 0 && p < parts;
+      if (!inRange)
+      {
+        break;
+      }
+      count[p] += 1.0;
+      for (int d = 0; d < 3; ++d)
+      {
+        box[6 * p + 2 * d] = std::min(box[6 * p + 2 * d], xyz[3 * k + d]);
+        box[6 * p + 2 * d + 1] = std::max(box[6 * p + 2 * d + 1], xyz[3 * k + d]);
+      }
+    }
+    Check(inRange, "spatial partition: every sample in a part");
+    const double mean = 6000.0 / parts;
+    Check(*std::max_element(count.begin(), count.end()) <= 1.01 * mean + 1 &&
+        *std::min_element(count.begin(), count.end()) >= 0.99 * mean - 1,
+      "spatial partition: parts of equal counts to 1%");
+    bool apart = true;
+    for (int a = 0; a < parts; ++a)
+    {
+      for (int b = a + 1; b < parts; ++b)
+      {
+        bool overlap = true;
+        for (int d = 0; d < 3; ++d)
+        {
+          overlap = overlap && box[6 * a + 2 * d] <= box[6 * b + 2 * d + 1] &&
+            box[6 * b + 2 * d] <= box[6 * a + 2 * d + 1];
+        }
+        apart = apart && !overlap;
+      }
+    }
+    Check(apart, "spatial partition: the parts' boxes do not overlap");
+  }
+  // Weights: the first half of the samples (x < 0.5) stands for three times as many particles,
+  // so the cut into two lies in it, where a quarter of the samples are on its left.
+  std::vector<double> line, heavy;
+  for (int k = 0; k < 1000; ++k)
+  {
+    line.insert(line.end(), { (k + 0.5) / 1000.0, 0.0, 0.0 });
+    heavy.push_back(k < 500 ? 3.0 : 1.0);
+  }
+  const lsi::SpatialPartition weighted(line, heavy, 2);
+  int left = 0;
+  for (int k = 0; k < 1000; ++k)
+  {
+    left += weighted.PartOf(&line[3 * k]) == 0 ? 1 : 0;
+  }
+  Check(left >= 330 && left <= 336, "spatial partition: weighted halves (333 samples left)");
+  // Every sample at one place, and fewer samples than parts: valid parts, none left out.
+  const std::vector<double> same = { 1, 2, 3, 1, 2, 3, 1, 2, 3 }, ones = { 1, 1, 1 };
+  const lsi::SpatialPartition repeated(same, ones, 4);
+  const double elsewhere[3] = { -5, 7, 0 };
+  const int p = repeated.PartOf(same.data()), q = repeated.PartOf(elsewhere);
+  Check(p >= 0 && p < 4 && q >= 0 && q < 4, "spatial partition: repeated samples, 4 parts");
+  const lsi::SpatialPartition none({}, {}, 3);
+  const int r = none.PartOf(elsewhere);
+  Check(r >= 0 && r < 3, "spatial partition: no samples");
+}
+
 int main()
 {
   TestSampleArrays();
@@ -1352,6 +1444,7 @@ int main()
   TestSPHKernels();
   TestSPHKernelGradients();
   TestSpatialOrder();
+  TestSpatialPartition();
   TestMortonTree();
   TestStillNearest();
   TestBoundedSearchKeepsTies();
