@@ -279,6 +279,24 @@ std::string Distribution::FirstProblem(const std::string& local) const
   return std::string();
 }
 
+std::vector<double> Distribution::CountsSent(
+  const std::vector<std::vector<vtkIdType>>& sending, std::vector<char>& partners) const
+{
+  const std::size_t size = static_cast<std::size_t>(this->Size);
+  std::vector<double> counts(size), all(size * size);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    counts[r] = static_cast<double>(sending[r].size());
+  }
+  this->Controller->AllGather(counts.data(), all.data(), this->Size);
+  partners.assign(size, 0);
+  for (std::size_t r = 0; r < size; ++r)
+  {
+    partners[r] = (counts[r] > 0 || all[r * size + this->Rank] > 0) ? 1 : 0;
+  }
+  return all;
+}
+
 template <typename Exchange>
 void Distribution::WithEachPartner(const std::vector<char>& partners, Exchange&& exchange) const
 {
@@ -400,17 +418,8 @@ vtkSmartPointer<vtkPointSet> Distribution::SpreadBySpace(vtkPointSet* input)
   {
     to[static_cast<std::size_t>(partition.PartOf(input->GetPoint(j)))].push_back(j);
   }
-  std::vector<double> counts(size), allCounts(size * size);
-  for (std::size_t r = 0; r < size; ++r)
-  {
-    counts[r] = static_cast<double>(to[r].size());
-  }
-  this->Controller->AllGather(counts.data(), allCounts.data(), this->Size);
-  std::vector<char> partners(size, 0);
-  for (std::size_t r = 0; r < size; ++r)
-  {
-    partners[r] = (counts[r] > 0 || allCounts[r * size + this->Rank] > 0) ? 1 : 0;
-  }
+  std::vector<char> partners;
+  this->CountsSent(to, partners);
   std::vector<vtkSmartPointer<vtkPolyData>> pieces(size);
   pieces[static_cast<std::size_t>(this->Rank)] =
     PointsOf(input, &to[static_cast<std::size_t>(this->Rank)]);
@@ -493,17 +502,7 @@ vtkSmartPointer<vtkPolyData> Distribution::WithGhosts(vtkPointSet* owned, const 
       }
     }
   }
-  std::vector<double> sentCounts(size), allCounts(size * size);
-  for (std::size_t r = 0; r < size; ++r)
-  {
-    sentCounts[r] = static_cast<double>(this->SentIds[r].size());
-  }
-  this->Controller->AllGather(sentCounts.data(), allCounts.data(), this->Size);
-  this->Partners.assign(size, 0);
-  for (std::size_t r = 0; r < size; ++r)
-  {
-    this->Partners[r] = (sentCounts[r] > 0 || allCounts[r * size + this->Rank] > 0) ? 1 : 0;
-  }
+  const std::vector<double> allCounts = this->CountsSent(this->SentIds, this->Partners);
 
   // Room for the ghosts after the owned samples, in rank order; each partner's message is
   // read straight into its place.

@@ -83,6 +83,12 @@ public:
   mutable double CommunicationSeconds = 0.0;
 
 private:
+  // Every rank's counts of what it sends to each rank (rank r's row r), from this rank's
+  // `sending` (ids per rank), on every rank; `partners`: the ranks this one sends to or
+  // receives from.
+  std::vector<double> CountsSent(
+    const std::vector<std::vector<vtkIdType>>& sending, std::vector<char>& partners) const;
+
   // Calls exchange(other) for every other rank with which this rank trades, in an order in
   // which blocking sends cannot deadlock (the lower rank of each pair sends first).
   template <typename Exchange>
