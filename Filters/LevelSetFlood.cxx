@@ -55,22 +55,27 @@ void Flood(const Neighborhoods& geometry, const std::vector<double>& dataOffsets
 }
 
 // Outside pockets next to the inside with fewer than `bubbleSize` samples become inside.
-// Each search stops as soon as its pocket proves large, so the cost stays near the front.
-void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vector<char>& inside,
-  SerialAbortCheck& stop)
+// A pocket is what a search from one of the inside's outside neighbours (a start) reaches
+// through outside samples. Neighbour lists are not symmetric, so that depends on the start:
+// each start is decided on its own, against the flood's reach alone (`flooded`), never against
+// what an earlier search decided about other samples. The result is then the same in any order
+// of the samples, so on any number of MPI ranks. (A search from s that meets a start t known to
+// reach a large pocket stops: s reaches all t reaches. A start inside a filled pocket needs no
+// search: all it reaches is filled already.) Each search stops as soon as its pocket proves
+// large, so the cost stays near the front.
+void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize,
+  const std::vector<char>& flooded, std::vector<char>& inside, SerialAbortCheck& stop)
 {
   const std::size_t n = geometry.NumberOfSamples;
   const int stride = geometry.Stride;
   // (Zeroed in parallel: at 20M samples these are 20 MB each.)
-  UninitializedVector<char> large = FilledInParallel<char>(n, 0); // samples of a large pocket
+  UninitializedVector<char> large = FilledInParallel<char>(n, 0); // starts that reach far
   std::vector<std::uint32_t> pocket;
   UninitializedVector<char> visited = FilledInParallel<char>(n, 0);
   // A ghost whose neighbour list is cut short (MPI, Neighborhoods::Truncated) cannot tell how far
   // its pocket goes: it counts as part of a large pocket.
   // The outside neighbours of the inside samples, in the order of the loop that visits them
-  // (collected in parallel, in fixed chunks joined in order). A pocket filled below never
-  // brings new ones: its search went through all its samples' neighbours, and found only
-  // inside samples and its own.
+  // (collected in parallel, in fixed chunks joined in order).
   constexpr std::size_t Chunk = 1 << 16;
   std::vector<std::vector<std::uint32_t>> found((n + Chunk - 1) / Chunk);
   vtkSMPTools::For(
@@ -80,14 +85,14 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
         for (std::size_t i = static_cast<std::size_t>(c) * Chunk;
              i < std::min(n, (static_cast<std::size_t>(c) + 1) * Chunk); ++i)
         {
-          if (!inside[i] || geometry.IsTruncated(i))
+          if (!flooded[i] || geometry.IsTruncated(i))
           {
             continue;
           }
           const std::uint32_t* around = geometry.NeighborsOf(i);
           for (int a = 1; a < stride; ++a)
           {
-            if (!inside[around[a]] && !geometry.IsTruncated(around[a]))
+            if (!flooded[around[a]] && !geometry.IsTruncated(around[a]))
             {
               found[static_cast<std::size_t>(c)].push_back(around[a]);
             }
@@ -108,14 +113,14 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
       {
         return;
       }
-      if (inside[start] || large[start] || visited[start])
+      if (inside[start] || large[start])
       {
         continue;
       }
       pocket.assign(1, start);
       visited[start] = 1;
       const bool isLarge = !BreadthFirst(geometry, pocket, [&](std::uint32_t j) {
-        if (inside[j] || visited[j])
+        if (flooded[j] || visited[j])
         {
           return Visit::Skip;
         }
@@ -126,13 +131,18 @@ void FillBubbles(const Neighborhoods& geometry, std::size_t bubbleSize, std::vec
         visited[j] = 1;
         return Visit::Enqueue;
       });
-      // A large pocket is remembered, so later searches stop on meeting it; a small one is
-      // filled.
-      char* mark = isLarge ? large.data() : inside.data();
-      for (std::uint32_t j : pocket)
+      for (const std::uint32_t j : pocket)
       {
         visited[j] = 0;
-        mark[j] = 1;
+      }
+      if (isLarge)
+      {
+        large[start] = 1;
+        continue;
+      }
+      for (const std::uint32_t j : pocket)
+      {
+        inside[j] = 1;
       }
     }
   }
@@ -299,7 +309,7 @@ std::vector<char> FilledInside(const Neighborhoods& geometry, const std::vector<
   SerialAbortCheck stop(aborted);
   std::vector<char> inside;
   AssignInParallel(inside, flooded);
-  FillBubbles(geometry, bubbleSize, inside, stop);
+  FillBubbles(geometry, bubbleSize, flooded, inside, stop);
   result.Aborted = stop.WasStopped();
   return inside;
 }
