@@ -66,7 +66,8 @@ vtkSmartPointer<vtkPolyData> PointsOf(vtkPointSet* input, const std::vector<vtkI
   for (int a = 0; a < from->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* array = from->GetAbstractArray(a);
-    if (!array || !array->GetName())
+    // (An array shorter than the points is malformed: it cannot travel, and is left out.)
+    if (!array || !array->GetName() || array->GetNumberOfTuples() < input->GetNumberOfPoints())
     {
       continue;
     }
@@ -127,7 +128,8 @@ vtkSmartPointer<vtkPolyData> Concatenated(const std::vector<vtkSmartPointer<vtkP
     {
       vtkAbstractArray* part = piece->GetPointData()->GetAbstractArray(model->GetName());
       const vtkIdType n = piece->GetNumberOfPoints();
-      if (part && part->GetNumberOfComponents() == model->GetNumberOfComponents() && n > 0)
+      if (part && part->GetNumberOfComponents() == model->GetNumberOfComponents() && n > 0 &&
+        part->GetNumberOfTuples() >= n)
       {
         joined->InsertTuples(at, n, 0, part);
       }
@@ -374,6 +376,11 @@ vtkSmartPointer<vtkPointSet> Distribution::Balanced(vtkPointSet* input, std::str
   if (redistribute)
   {
     source = this->SpreadBySpace(input);
+    if (!source)
+    {
+      report = "a rank's particles did not arrive whole when they were spread by space";
+      return nullptr;
+    }
     std::ostringstream why;
     why << "redistributed by space: the largest piece held " << imbalance
         << " times the mean, the pieces' boxes " << overlap << " times the whole volume";
@@ -419,10 +426,11 @@ vtkSmartPointer<vtkPointSet> Distribution::SpreadBySpace(vtkPointSet* input)
     to[static_cast<std::size_t>(partition.PartOf(input->GetPoint(j)))].push_back(j);
   }
   std::vector<char> partners;
-  this->CountsSent(to, partners);
+  const std::vector<double> counts = this->CountsSent(to, partners);
   std::vector<vtkSmartPointer<vtkPolyData>> pieces(size);
   pieces[static_cast<std::size_t>(this->Rank)] =
     PointsOf(input, &to[static_cast<std::size_t>(this->Rank)]);
+  bool received = true; // every piece arrived, with the particles its sender counted
   this->WithEachPartner(partners, [&](int other, bool sendFirst) {
     auto send = [&]() {
       vtkSmartPointer<vtkPolyData> piece = PointsOf(input, &to[other]);
@@ -430,10 +438,17 @@ vtkSmartPointer<vtkPointSet> Distribution::SpreadBySpace(vtkPointSet* input)
     };
     auto receive = [&]() {
       pieces[other] = vtkSmartPointer<vtkPolyData>::New();
-      this->Controller->Receive(pieces[other], other, SpreadTag);
+      const double expected =
+        counts[static_cast<std::size_t>(other) * size + static_cast<std::size_t>(this->Rank)];
+      received = this->Controller->Receive(pieces[other], other, SpreadTag) != 0 &&
+        static_cast<double>(pieces[other]->GetNumberOfPoints()) == expected && received;
     };
     sendFirst ? (send(), receive()) : (receive(), send());
   });
+  if (!this->All(received))
+  {
+    return nullptr;
+  }
   // In rank order, from the first piece with points (Concatenated takes its arrays).
   std::vector<vtkSmartPointer<vtkPolyData>> joined;
   for (const auto& piece : pieces)

@@ -56,10 +56,12 @@ public:
 
   /// The input, or its particles redistributed by space when the partition is poor (`report`
   /// says why). Field data (the readers' markers) come from the lowest rank with particles.
+  /// Null on every rank, `report` saying why, when a rank's piece did not arrive whole.
   vtkSmartPointer<vtkPointSet> Balanced(vtkPointSet* input, std::string& report);
 
   /// Every rank's particles spread by space (SpatialPartition of a sample of them), one part
-  /// per rank, with their point arrays, global ids and coordinates unchanged.
+  /// per rank, with their point arrays, global ids and coordinates unchanged. Null on every
+  /// rank when a piece did not arrive whole (not what its sender counted).
   vtkSmartPointer<vtkPointSet> SpreadBySpace(vtkPointSet* input);
 
   /// Every rank's particles on rank 0 (others: empty), for inputs too small to spread.

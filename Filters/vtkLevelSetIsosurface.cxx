@@ -476,6 +476,10 @@ bool vtkLevelSetIsosurface::PrepareParticles(vtkPointSet* input, lsi::RunParticl
       {
         return true;
       }
+      if (!original)
+      {
+        return false; // (on every rank: the exchange failed on all)
+      }
     }
     work = this->WithPeriodicImages(original, values);
     geometry = work ? this->FindNeighborhoods(work->GetPoints(), true) : nullptr;

@@ -167,6 +167,14 @@ vtkSmartPointer<vtkPointSet> vtkLevelSetIsosurface::Distribute(
   {
     std::string report;
     piece = ranks.Balanced(input, report);
+    if (!piece)
+    {
+      if (this->ReportsForAll())
+      {
+        vtkErrorMacro(<< "The particles could not be spread over the ranks: " << report << ".");
+      }
+      return nullptr;
+    }
     vtkDebugMacro(<< (report.empty() ? std::string("the partition is kept") : report));
   }
   int association = -1;
