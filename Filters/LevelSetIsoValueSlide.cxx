@@ -146,6 +146,42 @@ double BoundAt(const BandDrift* drift, std::size_t i, const Eigen::Vector3d& p, 
   return drift ? drift->At(i, p, way) : 0.0;
 }
 
+// What a slide records of each point against the last full run's band: how far it went, its
+// bound where it ended, whether it ended near the band's edge. Kept only if every point slid.
+struct BandRecords
+{
+  explicit BandRecords(std::size_t count)
+    : Moves(count)
+    , Bounds(count)
+    , NearEdge(count)
+  {
+  }
+  // Point i ended at p, `way` from where it was (its nearest sample `sample`): false if p left
+  // the band, else recorded.
+  bool Record(const Neighborhoods& geometry, const BandDrift* drift, std::size_t i,
+    const Eigen::Vector3d& p, double way, std::size_t sample)
+  {
+    const double bound = BoundAt(drift, i, p, way);
+    const BandPlace place = PlaceInBand(geometry, bound, sample, drift);
+    if (place == BandPlace::Outside)
+    {
+      return false;
+    }
+    this->Moves[i] = way;
+    this->Bounds[i] = bound;
+    this->NearEdge[i] = place == BandPlace::NearEdge;
+    return true;
+  }
+  void MoveInto(SlideResult& result)
+  {
+    result.Moves.swap(this->Moves);
+    result.NearBandEdge.swap(this->NearEdge);
+    result.Bounds.swap(this->Bounds);
+  }
+  std::vector<double> Moves, Bounds;
+  std::vector<char> NearEdge;
+};
+
 // The `fit` samples nearest to p into `ids`: the same samples as a search without a bound
 // (within one, the tree walk visits the same leaves in the same order), found sooner. Searched
 // first within 1.1 times the radius of the `found` samples `last` about where they were gathered
@@ -193,8 +229,8 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
   // largest, are not copied: the few points that gather anew record theirs.)
   std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
   const UninitializedVector<std::uint32_t>& samples = isopoints.FitSamples;
-  std::vector<double> newCentres(points.size()), moves(count), bounds(count);
-  std::vector<char> nearEdge(count);
+  std::vector<double> newCentres(points.size());
+  BandRecords records(count);
   const bool withModels = isopoints.FitModels.size() == ModelSize * count;
   const std::vector<std::uint32_t> order =
     withModels ? FarthestFirst(isopoints, settings.ValueChange) : std::vector<std::uint32_t>();
@@ -334,16 +370,11 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         refusal = crossed ? TooFar : NoCrossing;
         break;
       }
-      const double bound = BoundAt(settings.Drift, i, p, way);
-      const BandPlace place = PlaceInBand(geometry, bound, nearest[0], settings.Drift);
-      if (place == BandPlace::Outside)
+      if (!records.Record(geometry, settings.Drift, i, p, way, nearest[0]))
       {
         refusal = TooFar;
         break;
       }
-      moves[i] = way;
-      bounds[i] = bound;
-      nearEdge[i] = place == BandPlace::NearEdge;
       bool in = false, out = false;
       for (std::size_t j = 0; j < found; ++j)
       {
@@ -390,9 +421,7 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
     }
     centres.swap(newCentres);
     isopoints.FitModels.swap(models);
-    result.Moves.swap(moves);
-    result.NearBandEdge.swap(nearEdge);
-    result.Bounds.swap(bounds);
+    records.MoveInto(result);
   }
   return result;
 }
@@ -403,9 +432,8 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   const AbortCheck& aborted)
 {
   const std::size_t count = isopoints.Points.size() / 3;
-  std::vector<double> points(isopoints.Points), normals(isopoints.Normals), moves(count),
-    bounds(count);
-  std::vector<char> nearEdge(count);
+  std::vector<double> points(isopoints.Points), normals(isopoints.Normals);
+  BandRecords records(count);
   std::atomic<int> refusal(None);
   const std::size_t stride = static_cast<std::size_t>(geometry.Stride);
   struct Scratch
@@ -467,16 +495,11 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
         break;
       }
       const double way = (p - start).norm(); // (along a straight line)
-      const double bound = BoundAt(drift, i, p, way);
-      const BandPlace place = PlaceInBand(geometry, bound, nearest, drift);
-      if (place == BandPlace::Outside)
+      if (!records.Record(geometry, drift, i, p, way, nearest))
       {
         refusal = TooFar;
         break;
       }
-      moves[i] = way;
-      bounds[i] = bound;
-      nearEdge[i] = place == BandPlace::NearEdge;
       for (int d = 0; d < 3; ++d)
       {
         points[3 * i + d] = p[d];
@@ -489,9 +512,7 @@ SlideResult SlideIsopointsOnSPHField(const Neighborhoods& geometry, const SPHFie
   {
     isopoints.Points.swap(points);
     isopoints.Normals.swap(normals);
-    result.Moves.swap(moves);
-    result.NearBandEdge.swap(nearEdge);
-    result.Bounds.swap(bounds);
+    records.MoveInto(result);
   }
   return result;
 }
