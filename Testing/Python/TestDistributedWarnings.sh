@@ -1,0 +1,83 @@
+#!/bin/bash
+# SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
+# SPDX-License-Identifier: BSD-3-Clause
+# Warnings under MPI are decided over all ranks and given once. The SWIFT Roberts flow with its
+# masses made 3 times larger (densities in other units than the masses, to the density check):
+# on 3 pvbatch ranks, exactly one warning that the stored densities are not the kernel sums,
+# saying 3 times (the check's median over the particles next to the surface, every rank's), and
+# on every rank the fall-back to the MLS fit: the surface gathered from the ranks is, point for
+# point, the one that Field = MLS gives. With the file's own masses: no such warning, and the
+# SPH field's surface (not the MLS one).
+# Usage: TestDistributedWarnings.sh MPIEXEC PVBATCH PLUGIN SWIFT_FILE
+set -u
+mpiexec=$1 pvbatch=$2 plugin=$3 data=$4
+script=$(mktemp --suffix=.py)
+trap 'rm -f "$script"' EXIT
+cat >"$script" <<PY
+import numpy as np
+from paraview import servermanager
+from paraview.simple import Calculator, LoadPlugin, OpenDataFile
+from vtkmodules.util.numpy_support import vtk_to_numpy
+LoadPlugin("$plugin", ns=globals())
+reader = OpenDataFile("$data")
+reader.UpdatePipelineInformation()
+reader.ParticleTypes = ["Gas (PartType0)"]
+vz = Calculator(Input=reader, ResultArrayName="VelocityZ", Function="Velocities_Z")
+particles = servermanager.Fetch(vz)
+values = vtk_to_numpy(particles.GetPointData().GetArray("VelocityZ"))
+seed = [float(c) for c in vtk_to_numpy(particles.GetPoints().GetData())[np.argmax(values)]]
+heavy = Calculator(Input=vz, ResultArrayName="Masses", Function="3*Masses")
+
+
+def surface(source, field):
+    result = LevelSetIsosurface(Input=source, Scalars=["POINTS", "VelocityZ"], IsoValue=0.7,
+                                SeedCenter=seed, Field=field, OutputType="Isopoints")
+    result.UpdatePipeline()
+    points = servermanager.Fetch(result).GetPoints()
+    points = vtk_to_numpy(points.GetData()) if points is not None else np.zeros((0, 3))
+    return points[np.lexsort(points.T)]
+
+
+def difference(a, b):
+    return float(np.max(np.abs(a - b))) if a.shape == b.shape and len(a) else float("inf")
+
+
+for name, source in (("heavy", heavy), ("right", vz)):
+    print("START %s" % name, flush=True)
+    automatic = surface(source, "Automatic")
+    fit = surface(source, "MLS fit of the samples")
+    print("CASE %s: %d and %d points, largest difference %.3g" % (
+        name, len(automatic), len(fit), difference(automatic, fit)), flush=True)
+PY
+status=0
+out=$("$mpiexec" --allow-run-as-root --oversubscribe -n 3 "$pvbatch" "$script" 2>&1)
+echo "$out"
+# The warnings of each case: the lines between its START and its CASE.
+warnings() {
+  sed -n "/^START $1/,/^CASE $1/p" <<<"$out" | grep -c "are not the kernel sums"
+}
+heavy=$(warnings heavy) right=$(warnings right)
+factor=$(sed -n "/^START heavy/,/^CASE heavy/p" <<<"$out" |
+  grep -o "the sums are [0-9.e+-]* times" | head -1 | awk '{print $4}')
+if [ "$heavy" != 1 ]; then
+  echo "FAILED: $heavy density warnings with 3 times the masses on 3 ranks (expected 1)"
+  status=1
+fi
+if ! awk -v f="${factor:-0}" 'BEGIN { exit !(f > 2.97 && f < 3.03) }'; then
+  echo "FAILED: the warning's factor '$factor' (expected 3 within 1%)"
+  status=1
+fi
+if ! grep -qE "^CASE heavy: ([1-9][0-9]*) and \1 points, largest difference 0$" <<<"$out"; then
+  echo "FAILED: with 3 times the masses the surface is not the MLS fit's on every rank"
+  status=1
+fi
+if [ "$right" != 0 ]; then
+  echo "FAILED: $right density warnings with the file's masses (expected 0)"
+  status=1
+fi
+if grep -qE "^CASE right: .*largest difference 0$" <<<"$out"; then
+  echo "FAILED: with the file's masses the surface is not the SPH field's"
+  status=1
+fi
+[ "$status" = 0 ] && echo "PASSED"
+exit "$status"
