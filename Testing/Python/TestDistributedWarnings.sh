@@ -10,47 +10,9 @@
 # SPH field's surface (not the MLS one).
 # Usage: TestDistributedWarnings.sh MPIEXEC PVBATCH PLUGIN SWIFT_FILE
 set -u
-mpiexec=$1 pvbatch=$2 plugin=$3 data=$4
-script=$(mktemp --suffix=.py)
-trap 'rm -f "$script"' EXIT
-cat >"$script" <<PY
-import numpy as np
-from paraview import servermanager
-from paraview.simple import Calculator, LoadPlugin, OpenDataFile
-from vtkmodules.util.numpy_support import vtk_to_numpy
-LoadPlugin("$plugin", ns=globals())
-reader = OpenDataFile("$data")
-reader.UpdatePipelineInformation()
-reader.ParticleTypes = ["Gas (PartType0)"]
-vz = Calculator(Input=reader, ResultArrayName="VelocityZ", Function="Velocities_Z")
-particles = servermanager.Fetch(vz)
-values = vtk_to_numpy(particles.GetPointData().GetArray("VelocityZ"))
-seed = [float(c) for c in vtk_to_numpy(particles.GetPoints().GetData())[np.argmax(values)]]
-heavy = Calculator(Input=vz, ResultArrayName="Masses", Function="3*Masses")
-
-
-def surface(source, field):
-    result = LevelSetIsosurface(Input=source, Scalars=["POINTS", "VelocityZ"], IsoValue=0.7,
-                                SeedCenter=seed, Field=field, OutputType="Isopoints")
-    result.UpdatePipeline()
-    points = servermanager.Fetch(result).GetPoints()
-    points = vtk_to_numpy(points.GetData()) if points is not None else np.zeros((0, 3))
-    return points[np.lexsort(points.T)]
-
-
-def difference(a, b):
-    return float(np.max(np.abs(a - b))) if a.shape == b.shape and len(a) else float("inf")
-
-
-for name, source in (("heavy", heavy), ("right", vz)):
-    print("START %s" % name, flush=True)
-    automatic = surface(source, "Automatic")
-    fit = surface(source, "MLS fit of the samples")
-    print("CASE %s: %d and %d points, largest difference %.3g" % (
-        name, len(automatic), len(fit), difference(automatic, fit)), flush=True)
-PY
+out=$("$1" --allow-run-as-root --oversubscribe -n 3 "$2" \
+  "$(dirname "$0")/TestDistributedWarnings.py" "$3" "$4" 2>&1)
 status=0
-out=$("$mpiexec" --allow-run-as-root --oversubscribe -n 3 "$pvbatch" "$script" 2>&1)
 echo "$out"
 # The warnings of each case: the lines between its START and its CASE.
 warnings() {
