@@ -3,9 +3,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds the libFuzzer targets with clang (ASan, UBSan) in build-fuzz and runs each for a bounded
 # time (FUZZ_SECONDS, default 30: the four targets, one per core at a time, in 1 minute here;
-# FUZZ_TARGETS to run only some) on a copy of its corpus in Fuzz/corpus. A crash, a sanitizer report, a leak or an input that
-# takes longer than 20 s fails (exit status not 0); the input is then left in build-fuzz/ as
-# crash-* / timeout-*.
+# FUZZ_TARGETS to run only some) on a copy of its corpus in Fuzz/corpus. A crash, a sanitizer
+# report, a leak or an input that takes longer than 20 s fails (exit status not 0); the input is
+# then left in build-fuzz/ as crash-* / timeout-*.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${FUZZ_SECONDS:-30}
