@@ -1,8 +1,9 @@
 # SPDX-FileCopyrightText: 2026 LevelSetIsosurface contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""mpiexec -n 3 pvbatch TestDistributedWarnings.py PLUGIN SWIFT_FILE: the cases that
-TestDistributedWarnings.sh checks (the surface with 3 times the masses and with the file's, each
-against Field = MLS)."""
+"""mpiexec -n 3 pvbatch TestDistributedWarnings.py PLUGIN SWIFT_FILE CASE: one of the cases that
+TestDistributedWarnings.sh checks, each in a run of its own (so that every warning of the run is
+the case's): heavy, the surface with 3 times the masses, or right, with the file's; each against
+Field = MLS."""
 import sys
 
 import numpy as np
@@ -34,9 +35,9 @@ def difference(a, b):
     return float(np.max(np.abs(a - b))) if a.shape == b.shape and len(a) else float("inf")
 
 
-for name, source in (("heavy", heavy), ("right", vz)):
-    print("START %s" % name, flush=True)
-    automatic = surface(source, "Automatic")
-    fit = surface(source, "MLS fit of the samples")
-    print("CASE %s: %d and %d points, largest difference %.3g" % (
-        name, len(automatic), len(fit), difference(automatic, fit)), flush=True)
+name = sys.argv[3]
+source = {"heavy": heavy, "right": vz}[name]
+automatic = surface(source, "Automatic")
+fit = surface(source, "MLS fit of the samples")
+print("CASE %s: %d and %d points, largest difference %.3g" % (
+    name, len(automatic), len(fit), difference(automatic, fit)), flush=True)

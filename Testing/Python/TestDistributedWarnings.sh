@@ -10,17 +10,21 @@
 # SPH field's surface (not the MLS one).
 # Usage: TestDistributedWarnings.sh MPIEXEC PVBATCH PLUGIN SWIFT_FILE
 set -u
-out=$("$1" --allow-run-as-root --oversubscribe -n 3 "$2" \
-  "$(dirname "$0")/TestDistributedWarnings.py" "$3" "$4" 2>&1)
+# Each case in a run of its own: every warning in a run's output is its case's (mpiexec merges
+# the ranks' stdout and stderr in no promised order).
+run() {
+  "$1" --allow-run-as-root --oversubscribe -n 3 "$2" \
+    "$(dirname "$0")/TestDistributedWarnings.py" "$3" "$4" "$5" 2>&1
+}
+heavyOut=$(run "$@" heavy)
+rightOut=$(run "$@" right)
+out="$heavyOut
+$rightOut"
 status=0
 echo "$out"
-# The warnings of each case: the lines between its START and its CASE.
-warnings() {
-  sed -n "/^START $1/,/^CASE $1/p" <<<"$out" | grep -c "are not the kernel sums"
-}
-heavy=$(warnings heavy) right=$(warnings right)
-factor=$(sed -n "/^START heavy/,/^CASE heavy/p" <<<"$out" |
-  grep -o "the sums are [0-9.e+-]* times" | head -1 | awk '{print $4}')
+heavy=$(grep -c "are not the kernel sums" <<<"$heavyOut")
+right=$(grep -c "are not the kernel sums" <<<"$rightOut")
+factor=$(grep -o "the sums are [0-9.e+-]* times" <<<"$heavyOut" | head -1 | awk '{print $4}')
 if [ "$heavy" != 1 ]; then
   echo "FAILED: $heavy density warnings with 3 times the masses on 3 ranks (expected 1)"
   status=1
