@@ -15,11 +15,7 @@ import h5py
 import numpy as np
 from scipy.spatial import cKDTree
 
-
-def quintic(q):
-    w = (np.where(q < 1, (1 - q) ** 5, 0) - 6 * np.where(q < 2 / 3, (2 / 3 - q) ** 5, 0) +
-         15 * np.where(q < 1 / 3, (1 / 3 - q) ** 5, 0))
-    return 2187 / (40 * np.pi) * w
+from sph_comparison import kernel_shape  # (beside this script: the comparison's kernels)
 
 
 def main():
@@ -44,7 +40,8 @@ def main():
             d = x[near] - x[i]
             d -= box * np.round(d / box)
             r = np.sqrt((d ** 2).sum(axis=1))
-            logs.append(np.log((m[near] * quintic(r / support)).sum() / support ** 3 / rho[i]))
+            w = kernel_shape("QuinticSpline", r / support)[0]
+            logs.append(np.log((m[near] * w).sum() / support ** 3 / rho[i]))
         logs = np.array(logs)
         print("%14.2f  %21.4f  %22.4f" % (s, np.median(logs), np.percentile(np.abs(logs), 90)))
 
