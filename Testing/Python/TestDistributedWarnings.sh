@@ -18,10 +18,9 @@ run() {
 }
 heavyOut=$(run "$@" heavy)
 rightOut=$(run "$@" right)
-out="$heavyOut
-$rightOut"
 status=0
-echo "$out"
+echo "$heavyOut"
+echo "$rightOut"
 heavy=$(grep -c "are not the kernel sums" <<<"$heavyOut")
 right=$(grep -c "are not the kernel sums" <<<"$rightOut")
 factor=$(grep -o "the sums are [0-9.e+-]* times" <<<"$heavyOut" | head -1 | awk '{print $4}')
@@ -33,7 +32,7 @@ if ! awk -v f="${factor:-0}" 'BEGIN { exit !(f > 2.97 && f < 3.03) }'; then
   echo "FAILED: the warning's factor '$factor' (expected 3 within 1%)"
   status=1
 fi
-if ! grep -qE "^CASE heavy: ([1-9][0-9]*) and \1 points, largest difference 0$" <<<"$out"; then
+if ! grep -qE "^CASE heavy: ([1-9][0-9]*) and \1 points, largest difference 0$" <<<"$heavyOut"; then
   echo "FAILED: with 3 times the masses the surface is not the MLS fit's on every rank"
   status=1
 fi
@@ -41,7 +40,7 @@ if [ "$right" != 0 ]; then
   echo "FAILED: $right density warnings with the file's masses (expected 0)"
   status=1
 fi
-if grep -qE "^CASE right: .*largest difference 0$" <<<"$out"; then
+if grep -qE "^CASE right: .*largest difference 0$" <<<"$rightOut"; then
   echo "FAILED: with the file's masses the surface is not the SPH field's"
   status=1
 fi
