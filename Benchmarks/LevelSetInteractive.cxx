@@ -31,6 +31,7 @@
 //
 //   LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] [--json FILE]
 //   LevelSetInteractive --first-run-only N   (the child: prints its measurements on one line)
+//   LevelSetInteractive --quick-only CHANGES (quick 10% changes back and forth alone: a profile)
 #include "CaseRuns.h"
 #include "ExactEnclosed.h"
 #include "GridRoute.h"
@@ -87,6 +88,7 @@ struct Options
   std::string Json;
   std::size_t FirstRunOnly = 0; // child mode
   int ThreadsOnly = 0;          // only the 1 against 2 threads comparison, this many runs each
+  int QuickOnly = 0;            // only quick 10% changes back and forth, this many
 };
 
 bool Parse(int argc, char* argv[], Options& o)
@@ -107,6 +109,8 @@ bool Parse(int argc, char* argv[], Options& o)
       o.FirstRunOnly = std::strtoull(next(), nullptr, 10);
     else if (a == "--threads-only")
       o.ThreadsOnly = std::atoi(next());
+    else if (a == "--quick-only")
+      o.QuickOnly = std::atoi(next());
     else
       return false;
   }
@@ -323,6 +327,45 @@ int ThreadsOnly(std::size_t samples, int repeats)
   return EXIT_SUCCESS;
 }
 
+// Quick 10% isovalue changes alone (--quick-only CHANGES): a first run with QuickIsoValueChanges
+// on, then CHANGES quick changes in turn to the isovalue that moves 10% of the inside samples out
+// and back (each one slides as far), their seconds per stage: for profiling the slide and for
+// comparing builds side by side.
+int QuickOnly(std::size_t samples, int threads, int changes)
+{
+  OneComponentCase c;
+  vtkSmartPointer<vtkPolyData> particles = MakeParticles(c, c.Samples(samples, 1));
+  const double medium = IsoValuesAbove(particles, c.IsoValue, { 0.1 })[0];
+  vtkNew<vtkLevelSetIsosurface> filter;
+  filter->SetInputData(particles);
+  Configure(filter, c, threads);
+  filter->QuickIsoValueChangesOn();
+  Report report;
+  report.Add("level_set.first_run_s", TimedUpdate(filter));
+  std::array<double, 8> sums{};
+  double total = 0.0, fastest = HUGE_VAL, slid = 0.0;
+  for (int k = 1; k <= changes; ++k)
+  {
+    filter->SetIsoValue(k % 2 ? medium : c.IsoValue);
+    const double seconds = TimedUpdate(filter);
+    const std::array<double, 8> stages = Stages(filter, seconds);
+    for (std::size_t s = 0; s < sums.size(); ++s)
+    {
+      sums[s] += stages[s] / changes;
+    }
+    total += seconds / changes;
+    fastest = std::min(fastest, seconds);
+    slid += filter->GetSlidLastSurface() ? 1.0 : 0.0;
+  }
+  report.Add("level_set.quick_changes", changes);
+  report.Add("level_set.quick_changes_slid", slid);
+  report.Add("level_set.quick_change_mean_s", total);
+  report.Add("level_set.quick_change_fastest_s", fastest);
+  AddStages(report, "level_set.quick_change_mean.", sums);
+  report.Print(std::cout);
+  return slid == changes ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 // Child mode: a first run at `samples` (with QuickIsoValueChanges on, so that it keeps what a
 // slide needs), the particle arrays freed of everything else, its peak memory, then the small
 // isovalue change, slid, and the method's re-run at that isovalue; prints them on one line.
@@ -404,7 +447,7 @@ int main(int argc, char* argv[])
   if (!Parse(argc, argv, o))
   {
     std::cerr << "usage: LevelSetInteractive [--samples N] [--scaling-samples M] [--threads T] "
-                 "[--json FILE] [--threads-only REPEATS]\n";
+                 "[--json FILE] [--threads-only REPEATS] [--quick-only CHANGES]\n";
     return EXIT_FAILURE;
   }
   if (o.FirstRunOnly)
@@ -414,6 +457,10 @@ int main(int argc, char* argv[])
   if (o.ThreadsOnly > 0)
   {
     return ThreadsOnly(o.Samples, o.ThreadsOnly);
+  }
+  if (o.QuickOnly > 0)
+  {
+    return QuickOnly(o.Samples, o.Threads, o.QuickOnly);
   }
   Report report;
   OneComponentCase c;

@@ -55,6 +55,28 @@ enum class BandPlace
   Outside
 };
 
+// A fit's value, gradient and Hessian where it was made: its quadratic model near there.
+struct FitModel
+{
+  bool Made;
+  Eigen::Vector3d Centre;
+  double Value;
+  Eigen::Vector3d Gradient;
+  Eigen::Matrix3d Hessian;
+  bool Serves(const Eigen::Vector3d& x, double reach) const
+  {
+    return this->Made && (x - this->Centre).norm() <= reach;
+  }
+  void At(const Eigen::Vector3d& x, double& value, Eigen::Vector3d& gradient,
+    Eigen::Matrix3d& hessian) const
+  {
+    const Eigen::Vector3d d = x - this->Centre;
+    value = this->Value + this->Gradient.dot(d) + 0.5 * d.dot(this->Hessian * d);
+    gradient = this->Gradient + this->Hessian * d;
+    hessian = this->Hessian;
+  }
+};
+
 // What each thread of a slide keeps: a nearest-sample search's results.
 struct SlideScratch
 {
@@ -332,6 +354,9 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
         Eigen::Matrix3d lastHessian = h;
         Eigen::Vector3d evaluatedAt = p;
         bool made = true;
+        // The last fit made in this slide (not the kept model, fitted where the point was):
+        // near it, its quadratic model answers instead of a fit anew (ModelReach).
+        FitModel fitted{ !fromModel, p, value, g, h };
         auto evaluate = [&](const Eigen::Vector3d& x, double& v, Eigen::Vector3d& gx,
                           Eigen::Matrix3d& hx) {
           evaluatedAt = x;
@@ -343,8 +368,15 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
             hx = h;
             return true;
           }
+          if (fitted.Serves(x, settings.ModelReach))
+          {
+            fitted.At(x, v, gx, hx);
+            lastHessian = hx;
+            return true;
+          }
           const bool ok = s.Evaluator->FitGathered(x, v, gx, hx);
           lastHessian = hx;
+          fitted = FitModel{ ok, x, v, gx, hx };
           return ok;
         };
         const Eigen::Vector3d from = p;

@@ -70,6 +70,11 @@ struct SlideSettings
   const BandDrift* Drift = nullptr;
   int Iterations = 3; // the refinement's iterations and tolerance (IsopointSettings)
   double Tolerance = 0.0;
+  // How near to where a fit was made its quadratic model stands in for a fit anew: the
+  // refinement's last step, which checks that the point sits on the fit's zero, is then taken on
+  // the model (a fit per point fewer; the points as near the level: RESULTS.md). 0: a fit at
+  // every step, as the refinement does.
+  double ModelReach = 0.0;
   bool Quadratic = true;    // the refinement's fit order (IsopointSettings::DataFitOrder == 2)
   double ValueChange = 0.0; // f_iso now less f_iso then: f - f_iso at the old points, negated
 };
