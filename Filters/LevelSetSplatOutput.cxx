@@ -109,9 +109,16 @@ constexpr std::size_t SplatGroup = 32;
 constexpr double SplatGroupWidth = 8.0;
 
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
-  vtkPolyData* splats, const AbortCheck& aborted)
+  vtkPolyData* splats, const AbortCheck& aborted, const std::vector<double>* unroundedNormals,
+  const std::vector<double>* unroundedRadii)
 {
   const vtkIdType count = isopoints->GetNumberOfPoints();
+  const std::size_t pointCount = static_cast<std::size_t>(count);
+  const double* exactNormals = unroundedNormals && unroundedNormals->size() == 3 * pointCount
+    ? unroundedNormals->data()
+    : nullptr;
+  const double* exactRadii =
+    unroundedRadii && unroundedRadii->size() == pointCount ? unroundedRadii->data() : nullptr;
   vtkPointData* pointData = isopoints->GetPointData();
   vtkDataArray* normals = pointData->GetArray("Normals");
   vtkDataArray* radii = pointData->GetArray("SplatRadius");
@@ -138,8 +145,18 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
       {
         double c[3], n[3];
         isopoints->GetPoint(static_cast<vtkIdType>(i), c);
-        normals->GetTuple(static_cast<vtkIdType>(i), n);
-        const double radius = radii->GetComponent(static_cast<vtkIdType>(i), 0);
+        if (exactNormals)
+        {
+          std::copy(exactNormals + 3 * i, exactNormals + 3 * i + 3, n);
+        }
+        else
+        {
+          normals->GetTuple(static_cast<vtkIdType>(i), n);
+        }
+        auto radiusOf = [&](std::size_t k) {
+          return exactRadii ? exactRadii[k] : radii->GetComponent(static_cast<vtkIdType>(k), 0);
+        };
+        const double radius = radiusOf(i);
         const Eigen::Vector3d normal = Eigen::Vector3d(n).normalized();
         DiskCorners(Eigen::Vector3d(c), normal, radius, sides, &xyz[3 * i * sides]);
         if (field && i == gatheredTo)
@@ -151,7 +168,7 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
             GroupEnd(centres.data(), i, end, SplatGroup, SplatGroupWidth * radius, lower, upper);
           for (std::size_t k = i; k < gatheredTo; ++k)
           {
-            widest = std::max(widest, radii->GetComponent(static_cast<vtkIdType>(k), 0));
+            widest = std::max(widest, radiusOf(k));
           }
           field->GatherForBox(lower, upper, 1.5 * widest, group);
         }

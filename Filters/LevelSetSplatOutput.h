@@ -23,8 +23,13 @@ class SPHField;
 /// halfway in; else the corner moves to the centre) and takes the field's normal there: the
 /// polygons bend with the surface, so the corners lie on it and their normals are the field's,
 /// instead of tangent-plane approximations. Returns false only when aborted.
+/// `normals` and `radii`, if given (3 doubles and 1 per point), are the splats' normals and
+/// radii unrounded, which the corners are made from instead of the arrays' floats: a rounding
+/// to float moves a corner by up to 6e-8 of its radius, by where the last bit fell (under MPI,
+/// by the rank that found the point).
 bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field, double isoValue,
-  vtkPolyData* splats, const AbortCheck& aborted);
+  vtkPolyData* splats, const AbortCheck& aborted, const std::vector<double>* normals = nullptr,
+  const std::vector<double>* radii = nullptr);
 
 /// Moves the `sides` corners of each splat of `splats` (made by MakeSplatPolygons) as its centre
 /// moved, from `from` to `to` (3 doubles per point): a periodic box's points moved by whole

@@ -300,7 +300,8 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex, const std::vector<double>* sampledAt,
-  const std::vector<double>* scalarsInStorageOrder, KeptCandidates* keptSplats)
+  const std::vector<double>* scalarsInStorageOrder, KeptCandidates* keptSplats,
+  std::vector<double>* splatRadii)
 {
   const vtkIdType m = static_cast<vtkIdType>(isopoints.Points.size() / 3);
   vtkNew<vtkPoints> coordinates;
@@ -331,6 +332,10 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
     radius->SetValue(i, static_cast<float>(radii[i]));
   }
   surface->GetPointData()->AddArray(radius);
+  if (splatRadii)
+  {
+    *splatRadii = radii;
+  }
 
   if (!interpolateArrays)
   {

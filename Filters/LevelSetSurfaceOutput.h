@@ -39,11 +39,13 @@ class KeptCandidates;
 /// component) per sample in storage order, exactly: read from there instead (the same numbers;
 /// in input order the samples near a point are scattered over memory).
 /// `keptSplats`, if given, keeps or reuses the splat radii's candidates (SplatRadii).
+/// `splatRadii`, if given, receives the radii unrounded (the array holds floats).
 bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   const IsopointSet& isopoints, double splatScale, bool interpolateArrays,
   const char* activeScalars, const SPHField* field, vtkPolyData* surface, const AbortCheck& aborted,
   const PointCloudIndex* pointIndex = nullptr, const std::vector<double>* sampledAt = nullptr,
-  const std::vector<double>* scalarsInStorageOrder = nullptr, KeptCandidates* keptSplats = nullptr);
+  const std::vector<double>* scalarsInStorageOrder = nullptr, KeptCandidates* keptSplats = nullptr,
+  std::vector<double>* splatRadii = nullptr);
 
 /// For each point of `points`, fits every component of each array of `sources` (input point
 /// order) linearly over the `fitCount` samples nearest to it, with the paper's MLS weights, and

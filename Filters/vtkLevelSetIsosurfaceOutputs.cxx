@@ -253,10 +253,12 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
     movedIndex = lsi::IndexOfPoints(movedNearby);
   }
   vtkNew<vtkPolyData> surface;
+  std::vector<double> radii; // (unrounded: the splats' corners are made from them)
   if (!lsi::MakeSurfacePoints(input->GetPointData(), geometry, aroundSeed ? moved : isopoints,
         this->SplatScale, this->InterpolateArrays, scalars ? scalars->GetName() : nullptr, field,
         surface, this->Stage(SurfaceStage), aroundSeed ? movedIndex.get() : surfaceIndex,
-        aroundSeed ? &isopoints.Points : nullptr, scalarsInStorageOrder, keptSplats))
+        aroundSeed ? &isopoints.Points : nullptr, scalarsInStorageOrder, keptSplats,
+        this->OutputType == SPLATS ? &radii : nullptr))
   {
     return false;
   }
@@ -277,8 +279,8 @@ bool vtkLevelSetIsosurface::MakeSurfaceOutput(vtkPointSet* input,
       }
       found->SetPoints(at);
     }
-    if (!lsi::MakeSplatPolygons(
-          found, this->SplatSides, field, this->IsoValue, output, this->Stage(SplatStage)))
+    if (!lsi::MakeSplatPolygons(found, this->SplatSides, field, this->IsoValue, output,
+          this->Stage(SplatStage), &isopoints.Normals, &radii))
     {
       return false;
     }

@@ -236,9 +236,13 @@ bool SolveOnLine(Eigen::Vector3d& p, const Eigen::Vector3d& normal, EvaluateFn e
   {
     return false;
   }
-  // Illinois: regula falsi that halves the value at an end kept twice in a row.
+  // Illinois: regula falsi that halves the value at an end kept twice in a row. Narrowed far
+  // below `tolerance`: Newton's last step leaves an error of about its square, and a bracket
+  // left `tolerance` wide would put the result anywhere in it, by where the search started
+  // (under MPI, by the rank that found the point: 1e-6 splat radii apart).
+  const double narrow = 1e-6 * tolerance;
   int side = 0;
-  for (int k = 0; k < 60 && std::abs(b - a) > tolerance; ++k)
+  for (int k = 0; k < 60 && std::abs(b - a) > narrow; ++k)
   {
     const double c = (a * gb - b * ga) / (gb - ga);
     double gc;

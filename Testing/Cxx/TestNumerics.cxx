@@ -992,6 +992,16 @@ void TestSolveOnLine()
     ok = ok && lsi::SolveOnLine(p, out, bump, 3.0, 1e-12, g) && std::abs(p.x() - 1.0) < 1e-9;
   }
   Check(ok, "SolveOnLine reaches the level from inside and from the flat outside");
+  // From the flat outside the level is bracketed, and narrowed far below a coarse tolerance (a
+  // result anywhere in a bracket 1e-3 wide would depend on where the search started): two
+  // starts 1e-13 apart land within 1e-12 of the level and of each other.
+  {
+    Eigen::Vector3d a(2.9, 0, 0), b(2.9 + 1e-13, 0, 0);
+    const bool solved =
+      lsi::SolveOnLine(a, out, bump, 3.0, 1e-3, g) && lsi::SolveOnLine(b, out, bump, 3.0, 1e-3, g);
+    Check(solved && std::abs(a.x() - 1.0) < 1e-12 && std::abs(a.x() - b.x()) < 1e-12,
+      "SolveOnLine: a bracketed level found far within the tolerance");
+  }
   Eigen::Vector3d p(0.2, 0, 0);
   Check(!lsi::SolveOnLine(p, out, bump, 0.3, 1e-12, g) && p.x() == 0.2,
     "SolveOnLine: false (p unchanged) when the level is out of reach");
