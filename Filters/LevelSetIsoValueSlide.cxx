@@ -368,15 +368,17 @@ SlideResult SlideIsopoints(const Neighborhoods& geometry, const std::vector<doub
             hx = h;
             return true;
           }
+          bool ok = true;
           if (fitted.Serves(x, settings.ModelReach))
           {
             fitted.At(x, v, gx, hx);
-            lastHessian = hx;
-            return true;
           }
-          const bool ok = s.Evaluator->FitGathered(x, v, gx, hx);
+          else
+          {
+            ok = s.Evaluator->FitGathered(x, v, gx, hx);
+            fitted = FitModel{ ok, x, v, gx, hx };
+          }
           lastHessian = hx;
-          fitted = FitModel{ ok, x, v, gx, hx };
           return ok;
         };
         const Eigen::Vector3d from = p;

@@ -122,6 +122,9 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
   vtkPointData* pointData = isopoints->GetPointData();
   vtkDataArray* normals = pointData->GetArray("Normals");
   vtkDataArray* radii = pointData->GetArray("SplatRadius");
+  auto radiusOf = [&](std::size_t k) {
+    return exactRadii ? exactRadii[k] : radii->GetComponent(static_cast<vtkIdType>(k), 0);
+  };
   const vtkIdType corners = count * sides;
 
   vtkNew<vtkPoints> cornerPoints;
@@ -153,9 +156,6 @@ bool MakeSplatPolygons(vtkPolyData* isopoints, int sides, const SPHField* field,
         {
           normals->GetTuple(static_cast<vtkIdType>(i), n);
         }
-        auto radiusOf = [&](std::size_t k) {
-          return exactRadii ? exactRadii[k] : radii->GetComponent(static_cast<vtkIdType>(k), 0);
-        };
         const double radius = radiusOf(i);
         const Eigen::Vector3d normal = Eigen::Vector3d(n).normalized();
         DiskCorners(Eigen::Vector3d(c), normal, radius, sides, &xyz[3 * i * sides]);

@@ -27,6 +27,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace lsi
 {
@@ -334,7 +335,7 @@ bool MakeSurfacePoints(vtkPointData* inputData, const Neighborhoods& geometry,
   surface->GetPointData()->AddArray(radius);
   if (splatRadii)
   {
-    *splatRadii = radii;
+    *splatRadii = std::move(radii); // (not read below)
   }
 
   if (!interpolateArrays)
